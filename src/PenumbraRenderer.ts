@@ -1,0 +1,408 @@
+import { mat4, type ReadonlyMat4 } from 'gl-matrix';
+import { FramePlan } from './geometry/FramePlan';
+import { ShadowGeometry } from './geometry/ShadowGeometry';
+import { isWebGL2, supportsFloatTargets } from './gl/capabilities';
+import { HostState } from './gl/HostState';
+import { RenderTarget, type TargetFormat } from './gl/RenderTarget';
+import { UnitQuad } from './gl/UnitQuad';
+import { CompositePass } from './passes/CompositePass';
+import { DebugPass } from './passes/DebugPass';
+import { GeometryBuffers } from './passes/GeometryBuffers';
+import { HullPass } from './passes/HullPass';
+import { LightPass } from './passes/LightPass';
+import { ShadowMaskPass } from './passes/ShadowMaskPass';
+import { Hull } from './scene/Hull';
+import { Light } from './scene/lights';
+import { assertFinite, copyColor, type ColorLike } from './scene/validate';
+
+/** Options of a {@link PenumbraRenderer}; every field has the default shown. */
+export interface PenumbraRendererOptions {
+  /** Colour of unlit areas, 0..1 per channel. Default `[0.2, 0.2, 0.2]`. */
+  ambientColor?: ColorLike;
+  /** Draw light quads and shadow geometry as wireframe over the result. Default `false`. */
+  debug?: boolean;
+  /** World → clip transform. Default: pixel space of the drawing buffer, origin top-left, y down. */
+  viewProjection?: ReadonlyMat4 | null;
+  /** Size of the internal targets. Default: the context's drawing buffer size. */
+  width?: number;
+  height?: number;
+}
+
+/** Figures about the last frame, for overlays and benchmarks. */
+export interface FrameStats {
+  /** Lights added to the renderer. */
+  lights: number;
+  /** Lights drawn (enabled, on screen, centre not inside a hull). */
+  lightsDrawn: number;
+  /** Hulls added to the renderer. */
+  hulls: number;
+  /** Edges of all valid hulls. */
+  edges: number;
+  /** Renderer JavaScript time for the last lightmap, in milliseconds. */
+  cpuTime: number;
+}
+
+/** GL objects of the renderer, rebuilt together after a context loss. */
+interface Resources {
+  quad: UnitQuad;
+  buffers: GeometryBuffers;
+  scene: RenderTarget;
+  shadowMask: ShadowMaskPass;
+  hull: HullPass;
+  light: LightPass;
+  composite: CompositePass;
+  debug: DebugPass;
+}
+
+/** Texture units the passes bind (0..2), saved and restored around every draw. */
+const TEXTURE_UNITS = 3;
+
+/**
+ * Real-time 2D lights with soft shadows for an existing WebGL2 context.
+ *
+ * Each frame: call {@link PenumbraRenderer.beginDraw}, draw the scene to be lit, then call
+ * {@link PenumbraRenderer.draw}, which builds the lightmap (ambient + every light, each masked by
+ * the exact fraction of its disk the hulls leave visible) and writes scene × lightmap into the
+ * framebuffer that was bound at `beginDraw`. What you draw afterwards (UI) is unlit.
+ *
+ * State contract: after `draw()` and `renderLightmap()` the context state listed in
+ * {@link HostState} is as it was; after `beginDraw()` only the framebuffer and viewport differ
+ * (they point at the internal scene target).
+ */
+export class PenumbraRenderer {
+  /** Draw wireframes of light quads and shadow geometry over the result. */
+  debug: boolean;
+  /** Figures about the last frame. */
+  readonly stats: FrameStats = { lights: 0, lightsDrawn: 0, hulls: 0, edges: 0, cpuTime: 0 };
+
+  private readonly gl: WebGL2RenderingContext;
+  private readonly _lights: Light[] = [];
+  private readonly _hulls: Hull[] = [];
+  private readonly _ambient: [number, number, number] = [0.2, 0.2, 0.2];
+  private readonly _viewProjection = mat4.create();
+  private readonly clipToWorld = mat4.create();
+  private customViewProjection = false;
+  private readonly geometry = new ShadowGeometry();
+  private readonly plan = new FramePlan();
+  private readonly hostState: HostState;
+  private readonly lightmapFormat: TargetFormat;
+  private resources: Resources | null = null;
+  private width: number;
+  private height: number;
+  private drawing = false;
+  private contextLost = false;
+  private disposed = false;
+  private readonly compositeViewport = new Int32Array(4);
+  private compositeDrawFramebuffer: WebGLFramebuffer | null = null;
+  private compositeReadFramebuffer: WebGLFramebuffer | null = null;
+  private readonly canvas: EventTarget | null;
+
+  constructor(gl: WebGL2RenderingContext, options: PenumbraRendererOptions = {}) {
+    if (!isWebGL2(gl)) throw new TypeError('penumbra: PenumbraRenderer needs a WebGL2 rendering context');
+    this.gl = gl;
+    this.debug = options.debug ?? false;
+    if (options.ambientColor) this.ambientColor = options.ambientColor;
+    this.width = checkSize('width', options.width ?? gl.drawingBufferWidth);
+    this.height = checkSize('height', options.height ?? gl.drawingBufferHeight);
+    if (options.viewProjection) this.viewProjection = options.viewProjection;
+    else this.updateDefaultViewProjection();
+    this.hostState = new HostState(gl, TEXTURE_UNITS);
+    this.lightmapFormat = supportsFloatTargets(gl) ? 'rgba16f' : 'rgba8';
+    if (this.lightmapFormat === 'rgba8') {
+      console.warn('penumbra: EXT_color_buffer_float is missing; the lightmap falls back to RGBA8, so light sums clamp at 1.');
+    }
+    this.createResources();
+    const canvas = (gl as { canvas?: unknown }).canvas as EventTarget | undefined;
+    this.canvas = canvas && typeof canvas.addEventListener === 'function' ? canvas : null;
+    this.canvas?.addEventListener('webglcontextlost', this.onContextLost);
+    this.canvas?.addEventListener('webglcontextrestored', this.onContextRestored);
+  }
+
+  /** Colour of unlit areas `[r, g, b]`, 0..1 per channel. */
+  get ambientColor(): readonly [number, number, number] {
+    return this._ambient;
+  }
+  set ambientColor(value: ColorLike) {
+    copyColor('PenumbraRenderer.ambientColor', value, this._ambient);
+  }
+
+  /**
+   * World → clip transform (gl-matrix `mat4`, column-major). Assign `null` to go back to the
+   * default: pixel space of the targets, origin top-left, y down (as Canvas2D, PixiJS and Phaser).
+   */
+  get viewProjection(): ReadonlyMat4 {
+    return this._viewProjection;
+  }
+  set viewProjection(value: ReadonlyMat4 | null) {
+    if (value == null) {
+      this.customViewProjection = false;
+      this.updateDefaultViewProjection();
+      return;
+    }
+    if (value.length !== 16) throw new RangeError(`PenumbraRenderer.viewProjection must have 16 elements, got ${value.length}`);
+    for (let i = 0; i < 16; i++) assertFinite(`PenumbraRenderer.viewProjection[${i}]`, value[i]);
+    mat4.copy(this._viewProjection, value);
+    this.customViewProjection = true;
+  }
+
+  /** The lights, in drawing order. */
+  get lights(): readonly Light[] {
+    return this._lights;
+  }
+  /** The hulls. */
+  get hulls(): readonly Hull[] {
+    return this._hulls;
+  }
+
+  /** The lightmap texture (RGBA16F, or RGBA8 without EXT_color_buffer_float), for hosts that composite themselves. */
+  get lightmapTexture(): WebGLTexture {
+    return this.requireResources().light.lightmap.texture;
+  }
+  /** The texture `beginDraw()` redirects drawing into. */
+  get sceneTexture(): WebGLTexture {
+    return this.requireResources().scene.texture;
+  }
+  /** Whether the lightmap is a half-float target (overlapping lights can exceed 1). */
+  get hasFloatLightmap(): boolean {
+    return this.lightmapFormat === 'rgba16f';
+  }
+
+  /** Adds a light (no-op if already added). */
+  addLight<T extends Light>(light: T): T {
+    if (!(light instanceof Light)) throw new TypeError(`penumbra: addLight expects a Light, got ${String(light)}`);
+    if (!this._lights.includes(light)) this._lights.push(light);
+    return light;
+  }
+  /** Removes a light; returns whether it was there. */
+  removeLight(light: Light): boolean {
+    return removeFrom(this._lights, light);
+  }
+  /** Adds a hull (no-op if already added). */
+  addHull(hull: Hull): Hull {
+    if (!(hull instanceof Hull)) throw new TypeError(`penumbra: addHull expects a Hull, got ${String(hull)}`);
+    if (!this._hulls.includes(hull)) this._hulls.push(hull);
+    return hull;
+  }
+  /** Removes a hull; its shadow is gone from the next frame. Returns whether it was there. */
+  removeHull(hull: Hull): boolean {
+    return removeFrom(this._hulls, hull);
+  }
+
+  /** Resizes the internal targets (call when the canvas is resized). */
+  resize(width: number, height: number): void {
+    this.width = checkSize('width', width);
+    this.height = checkSize('height', height);
+    if (!this.customViewProjection) this.updateDefaultViewProjection();
+    const resources = this.resources;
+    if (!resources || this.contextLost) return;
+    this.withHostState(() => {
+      resources.scene.resize(this.width, this.height);
+      resources.shadowMask.resize(this.width, this.height);
+      resources.light.resize(this.width, this.height);
+    });
+  }
+
+  /**
+   * Starts a frame: remembers the bound framebuffer and viewport, then binds and clears the
+   * internal scene target (colour to transparent black, depth to 1, stencil to 0). Draw the lit
+   * scene after this call.
+   */
+  beginDraw(): void {
+    if (this.disposed || this.contextLost) return;
+    const gl = this.gl;
+    const resources = this.requireResources();
+    this.compositeDrawFramebuffer = gl.getParameter(gl.DRAW_FRAMEBUFFER_BINDING);
+    this.compositeReadFramebuffer = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING);
+    this.compositeViewport.set(gl.getParameter(gl.VIEWPORT) as Int32Array);
+    this.withHostState(() => {
+      resources.scene.bind();
+      gl.clearColor(0, 0, 0, 0);
+      gl.clearDepth(1);
+      gl.clearStencil(0);
+      gl.depthMask(true);
+      gl.stencilMask(0xff);
+      gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT | gl.STENCIL_BUFFER_BIT);
+    });
+    resources.scene.bind();
+    this.drawing = true;
+  }
+
+  /**
+   * Ends a frame: builds the lightmap and writes scene × lightmap into the framebuffer that was
+   * bound at `beginDraw()`, with the viewport of that moment. Then rebinds that framebuffer and
+   * viewport and restores the rest of the state.
+   */
+  draw(): void {
+    if (this.disposed || this.contextLost) return;
+    if (!this.drawing) throw new Error('penumbra: draw() called without beginDraw()');
+    this.drawing = false;
+    const gl = this.gl;
+    const resources = this.requireResources();
+    this.withHostState(() => {
+      this.renderLightmapInto(resources);
+      this.bindCompositeTarget();
+      resources.composite.render(resources.scene.texture, resources.light.lightmap.texture);
+      if (this.debug) {
+        const v = this.compositeViewport;
+        resources.debug.render(this.plan.draws, this.plan.drawCount, resources.buffers, this._viewProjection,
+          v[2] / this.width, v[3] / this.height, v[0], v[1]);
+      }
+    });
+    this.bindCompositeTarget();
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.compositeReadFramebuffer);
+  }
+
+  /** Builds the lightmap only (see {@link PenumbraRenderer.lightmapTexture}); the context state is left as it was. */
+  renderLightmap(): void {
+    if (this.disposed || this.contextLost) return;
+    const resources = this.requireResources();
+    this.withHostState(() => this.renderLightmapInto(resources));
+  }
+
+  /** Frees every GL resource and forgets lights and hulls. Safe to call twice. */
+  dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
+    this.canvas?.removeEventListener('webglcontextlost', this.onContextLost);
+    this.canvas?.removeEventListener('webglcontextrestored', this.onContextRestored);
+    if (!this.contextLost) this.destroyResources();
+    this.resources = null;
+    this._lights.length = 0;
+    this._hulls.length = 0;
+  }
+
+  private renderLightmapInto(resources: Resources): void {
+    const start = performance.now();
+    const gl = this.gl;
+    const plan = this.plan;
+    const viewProjection = this._viewProjection;
+    this.geometry.update(this._hulls);
+    plan.build(this._lights, this._hulls, this.geometry, viewProjection, this.width, this.height);
+    resources.buffers.upload(this.geometry, plan);
+    const mirrored = this.updateClipToWorld();
+    resources.light.begin(this._ambient);
+    gl.enable(gl.SCISSOR_TEST);
+    for (let i = 0; i < plan.drawCount; i++) {
+      const draw = plan.draws[i];
+      const s = draw.scissor;
+      gl.scissor(s[0], s[1], s[2], s[3]);
+      const shadowed = draw.hullCount > 0;
+      if (shadowed) {
+        resources.shadowMask.render(draw, resources.buffers, viewProjection, this.clipToWorld, mirrored);
+        resources.hull.render(draw, resources.buffers, viewProjection);
+      }
+      resources.light.render(draw, viewProjection, shadowed ? resources.shadowMask.target.texture : null);
+    }
+    this.updateStats(performance.now() - start);
+  }
+
+  private updateStats(cpuTime: number): void {
+    const stats = this.stats;
+    stats.lights = this._lights.length;
+    stats.lightsDrawn = this.plan.drawCount;
+    stats.hulls = this._hulls.length;
+    let edges = 0;
+    for (const hull of this._hulls) if (hull.valid) edges += hull.edgeCount;
+    stats.edges = edges;
+    stats.cpuTime = cpuTime;
+  }
+
+  /**
+   * Inverts the view-projection's 2D affine part into `clipToWorld` (the shadow pass turns
+   * fragment positions back into world points); returns whether it mirrors orientation.
+   */
+  private updateClipToWorld(): boolean {
+    const m = this._viewProjection;
+    const det = m[0] * m[5] - m[1] * m[4];
+    const out = this.clipToWorld;
+    mat4.identity(out);
+    if (det !== 0) {
+      out[0] = m[5] / det;
+      out[1] = -m[1] / det;
+      out[4] = -m[4] / det;
+      out[5] = m[0] / det;
+      out[12] = -(out[0] * m[12] + out[4] * m[13]);
+      out[13] = -(out[1] * m[12] + out[5] * m[13]);
+    }
+    return det < 0;
+  }
+
+  private bindCompositeTarget(): void {
+    const gl = this.gl;
+    const v = this.compositeViewport;
+    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, this.compositeDrawFramebuffer);
+    gl.viewport(v[0], v[1], v[2], v[3]);
+  }
+
+  private withHostState(run: () => void): void {
+    this.hostState.save();
+    try {
+      this.hostState.prepareForRenderer();
+      run();
+    } finally {
+      this.hostState.restore();
+    }
+  }
+
+  private updateDefaultViewProjection(): void {
+    mat4.ortho(this._viewProjection, 0, this.width, this.height, 0, -1, 1);
+  }
+
+  private requireResources(): Resources {
+    if (this.disposed) throw new Error('penumbra: the renderer was disposed');
+    if (!this.resources) throw new Error('penumbra: the WebGL context is lost; the renderer resumes when it is restored');
+    return this.resources;
+  }
+
+  private createResources(): void {
+    const gl = this.gl;
+    this.withHostState(() => {
+      const quad = new UnitQuad(gl);
+      this.resources = {
+        quad,
+        buffers: new GeometryBuffers(gl),
+        scene: new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, this.width, this.height),
+        shadowMask: new ShadowMaskPass(gl, this.width, this.height),
+        hull: new HullPass(gl),
+        light: new LightPass(gl, quad, this.lightmapFormat, this.width, this.height),
+        composite: new CompositePass(gl),
+        debug: new DebugPass(gl, quad),
+      };
+    });
+    this.geometry.invalidate();
+  }
+
+  private destroyResources(): void {
+    const resources = this.resources;
+    if (!resources) return;
+    this.withHostState(() => {
+      for (const resource of Object.values(resources)) resource.dispose();
+    });
+    this.resources = null;
+  }
+
+  private readonly onContextLost = (event: Event): void => {
+    // Without preventDefault the browser never restores the context.
+    event.preventDefault();
+    this.contextLost = true;
+    this.drawing = false;
+    this.resources = null;
+  };
+
+  private readonly onContextRestored = (): void => {
+    this.contextLost = false;
+    if (!this.disposed) this.createResources();
+  };
+}
+
+function checkSize(name: string, value: number): number {
+  if (!Number.isInteger(value) || value <= 0) throw new RangeError(`PenumbraRenderer.${name} must be a positive integer, got ${value}`);
+  return value;
+}
+
+function removeFrom<T>(list: T[], item: T): boolean {
+  const index = list.indexOf(item);
+  if (index < 0) return false;
+  list.splice(index, 1);
+  return true;
+}

@@ -1,0 +1,140 @@
+import type { Hull } from '../scene/Hull';
+
+/** Floats per shadow-quad vertex: edge start (2), edge end (2), corner (2), hull first point and point count (2). */
+export const SHADOW_VERTEX_FLOATS = 8;
+/** Vertices per edge quad. */
+export const VERTICES_PER_EDGE = 4;
+/** Indices per edge quad (two triangles). */
+export const INDICES_PER_EDGE = 6;
+
+/** Point capacity grows in whole rows of this many points, so the points fill a texture's rows exactly. */
+export const POINT_ROW = 1024;
+
+/** Where one hull's data sits in the shared arrays. */
+export interface HullSlot {
+  /** First point (= first edge) of the hull in `points` and `edgeVertices`. */
+  firstPoint: number;
+  pointCount: number;
+  /** First index of the hull's triangles in `triangleIndices`. */
+  firstTriangleIndex: number;
+  triangleIndexCount: number;
+  /** `hull.version` when the slot was last written. */
+  version: number;
+}
+
+/**
+ * The world-space data of every hull, packed for the GPU and independent of any light:
+ * - `points`: each hull's world points, contiguous per hull (`x, y` per point), read by the
+ *   shadow-mask pass (as a texture) and the hull pass (as vertices);
+ * - `edgeVertices`: four vertices per edge, each carrying both end points, its corner flags and
+ *   its hull's point range: the light is a uniform, so this changes only when a hull does;
+ * - `triangleIndices`: each hull's triangulation as global point indices.
+ *
+ * `update` rewrites only hulls whose version changed and reports the dirty point range; adding,
+ * removing or reshaping a hull re-lays out everything.
+ */
+export class ShadowGeometry {
+  points = new Float32Array(0);
+  edgeVertices = new Float32Array(0);
+  triangleIndices = new Uint32Array(0);
+  pointCount = 0;
+  triangleIndexCount = 0;
+  /** Point range `[dirtyFirst, dirtyEnd)` changed by the last update (empty when equal). */
+  dirtyFirst = 0;
+  dirtyEnd = 0;
+  /** True when the last update re-laid out the arrays (so everything must be uploaded). */
+  relaidOut = false;
+  private readonly slots = new Map<Hull, HullSlot>();
+  private layoutHulls: Hull[] = [];
+
+  /** Forgets the layout so the next update rewrites and re-uploads everything (e.g. after a context loss). */
+  invalidate(): void {
+    this.layoutHulls = [];
+    this.slots.clear();
+  }
+
+  /** The slot of a hull, or undefined for a hull not in the last update. */
+  slotOf(hull: Hull): HullSlot | undefined {
+    return this.slots.get(hull);
+  }
+
+  /** Brings the arrays up to date with `hulls`, touching only what changed. */
+  update(hulls: readonly Hull[]): void {
+    this.dirtyFirst = Infinity;
+    this.dirtyEnd = 0;
+    this.relaidOut = this.needsLayout(hulls);
+    if (this.relaidOut) this.layOut(hulls);
+    for (const hull of hulls) {
+      const slot = this.slots.get(hull)!;
+      const moved = hull.updateWorld();
+      if (!moved && slot.version === hull.version && !this.relaidOut) continue;
+      slot.version = hull.version;
+      this.writeHull(hull, slot);
+      if (slot.firstPoint < this.dirtyFirst) this.dirtyFirst = slot.firstPoint;
+      if (slot.firstPoint + slot.pointCount > this.dirtyEnd) this.dirtyEnd = slot.firstPoint + slot.pointCount;
+    }
+    if (this.dirtyEnd === 0) this.dirtyFirst = 0;
+  }
+
+  private needsLayout(hulls: readonly Hull[]): boolean {
+    if (hulls.length !== this.layoutHulls.length) return true;
+    for (let i = 0; i < hulls.length; i++) {
+      const hull = hulls[i];
+      const slot = this.slots.get(hull);
+      if (this.layoutHulls[i] !== hull || !slot || slot.pointCount !== hull.edgeCount
+        || slot.triangleIndexCount !== hull.worldTriangles.length) return true;
+    }
+    return false;
+  }
+
+  private layOut(hulls: readonly Hull[]): void {
+    this.slots.clear();
+    this.layoutHulls = hulls.slice();
+    let points = 0, triangleIndices = 0;
+    for (const hull of hulls) {
+      hull.updateWorld();
+      const slot: HullSlot = {
+        firstPoint: points, pointCount: hull.edgeCount,
+        firstTriangleIndex: triangleIndices, triangleIndexCount: hull.worldTriangles.length, version: -1,
+      };
+      this.slots.set(hull, slot);
+      points += slot.pointCount;
+      triangleIndices += slot.triangleIndexCount;
+    }
+    this.pointCount = points;
+    this.triangleIndexCount = triangleIndices;
+    if (this.points.length < points * 2) {
+      const wanted = Math.max(points, Math.ceil(this.points.length / 2 * 1.5));
+      const capacity = Math.ceil(wanted / POINT_ROW) * POINT_ROW;
+      this.points = new Float32Array(capacity * 2);
+      this.edgeVertices = new Float32Array(capacity * VERTICES_PER_EDGE * SHADOW_VERTEX_FLOATS);
+    }
+    if (this.triangleIndices.length < triangleIndices) {
+      this.triangleIndices = new Uint32Array(Math.max(triangleIndices, Math.ceil(this.triangleIndices.length * 1.5)));
+    }
+  }
+
+  private writeHull(hull: Hull, slot: HullSlot): void {
+    const world = hull.worldPoints;
+    const n = slot.pointCount;
+    this.points.set(world.subarray(0, n * 2), slot.firstPoint * 2);
+    const vertices = this.edgeVertices;
+    for (let i = 0; i < n; i++) {
+      const j = i + 1 === n ? 0 : i + 1;
+      let offset = (slot.firstPoint + i) * VERTICES_PER_EDGE * SHADOW_VERTEX_FLOATS;
+      for (let corner = 0; corner < VERTICES_PER_EDGE; corner++) {
+        vertices[offset] = world[2 * i];
+        vertices[offset + 1] = world[2 * i + 1];
+        vertices[offset + 2] = world[2 * j];
+        vertices[offset + 3] = world[2 * j + 1];
+        vertices[offset + 4] = corner === 1 || corner === 2 ? 1 : 0;
+        vertices[offset + 5] = corner >= 2 ? 1 : 0;
+        vertices[offset + 6] = slot.firstPoint;
+        vertices[offset + 7] = n;
+        offset += SHADOW_VERTEX_FLOATS;
+      }
+    }
+    const triangles = hull.worldTriangles;
+    for (let k = 0; k < triangles.length; k++) this.triangleIndices[slot.firstTriangleIndex + k] = slot.firstPoint + triangles[k];
+  }
+}

@@ -1,0 +1,145 @@
+const CAPABILITIES = [
+  'BLEND', 'CULL_FACE', 'DEPTH_TEST', 'STENCIL_TEST', 'SCISSOR_TEST', 'POLYGON_OFFSET_FILL',
+  'SAMPLE_ALPHA_TO_COVERAGE', 'SAMPLE_COVERAGE', 'RASTERIZER_DISCARD', 'DITHER',
+] as const;
+
+/**
+ * A snapshot of the context state the renderer touches, taken before it draws and put back
+ * afterwards, so that it can share a context with a host engine. Saved: framebuffers (draw and
+ * read), viewport, scissor, the enables above, blend equations/factors/colour, colour/depth/stencil
+ * write masks, clear values, program, VAO, array/pixel-unpack buffers, unpack flags, active texture
+ * and the 2D texture and sampler bound on each texture unit the renderer uses.
+ */
+export class HostState {
+  private readonly enabled = new Uint8Array(CAPABILITIES.length);
+  private drawFramebuffer: WebGLFramebuffer | null = null;
+  private readFramebuffer: WebGLFramebuffer | null = null;
+  private viewport: Int32Array = new Int32Array(4);
+  private scissorBox: Int32Array = new Int32Array(4);
+  private blendEquations = [0, 0];
+  private blendFactors = [0, 0, 0, 0];
+  private blendColor: Float32Array = new Float32Array(4);
+  private colorMask: boolean[] = [true, true, true, true];
+  private depthMask = true;
+  private stencilMask = 0;
+  private stencilBackMask = 0;
+  private clearColor: Float32Array = new Float32Array(4);
+  private clearDepth = 1;
+  private clearStencil = 0;
+  private cullFaceMode = 0;
+  private frontFace = 0;
+  private program: WebGLProgram | null = null;
+  private vertexArray: WebGLVertexArrayObject | null = null;
+  private arrayBuffer: WebGLBuffer | null = null;
+  private pixelUnpackBuffer: WebGLBuffer | null = null;
+  private unpackAlignment = 4;
+  private unpackFlipY = false;
+  private unpackPremultiply = false;
+  private unpackRowLength = 0;
+  private activeTexture = 0;
+  private readonly textures: (WebGLTexture | null)[];
+  private readonly samplers: (WebGLSampler | null)[];
+
+  /** @param textureUnits how many texture units (from 0) the renderer binds. */
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly textureUnits: number) {
+    this.textures = new Array<WebGLTexture | null>(textureUnits).fill(null);
+    this.samplers = new Array<WebGLSampler | null>(textureUnits).fill(null);
+  }
+
+  save(): void {
+    const gl = this.gl;
+    for (let i = 0; i < CAPABILITIES.length; i++) this.enabled[i] = gl.isEnabled(gl[CAPABILITIES[i]]) ? 1 : 0;
+    this.drawFramebuffer = gl.getParameter(gl.DRAW_FRAMEBUFFER_BINDING);
+    this.readFramebuffer = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING);
+    this.viewport = gl.getParameter(gl.VIEWPORT);
+    this.scissorBox = gl.getParameter(gl.SCISSOR_BOX);
+    this.blendEquations[0] = gl.getParameter(gl.BLEND_EQUATION_RGB);
+    this.blendEquations[1] = gl.getParameter(gl.BLEND_EQUATION_ALPHA);
+    this.blendFactors[0] = gl.getParameter(gl.BLEND_SRC_RGB);
+    this.blendFactors[1] = gl.getParameter(gl.BLEND_DST_RGB);
+    this.blendFactors[2] = gl.getParameter(gl.BLEND_SRC_ALPHA);
+    this.blendFactors[3] = gl.getParameter(gl.BLEND_DST_ALPHA);
+    this.blendColor = gl.getParameter(gl.BLEND_COLOR);
+    this.colorMask = gl.getParameter(gl.COLOR_WRITEMASK);
+    this.depthMask = gl.getParameter(gl.DEPTH_WRITEMASK);
+    this.stencilMask = gl.getParameter(gl.STENCIL_WRITEMASK);
+    this.stencilBackMask = gl.getParameter(gl.STENCIL_BACK_WRITEMASK);
+    this.clearColor = gl.getParameter(gl.COLOR_CLEAR_VALUE);
+    this.clearDepth = gl.getParameter(gl.DEPTH_CLEAR_VALUE);
+    this.clearStencil = gl.getParameter(gl.STENCIL_CLEAR_VALUE);
+    this.cullFaceMode = gl.getParameter(gl.CULL_FACE_MODE);
+    this.frontFace = gl.getParameter(gl.FRONT_FACE);
+    this.program = gl.getParameter(gl.CURRENT_PROGRAM);
+    this.vertexArray = gl.getParameter(gl.VERTEX_ARRAY_BINDING);
+    this.arrayBuffer = gl.getParameter(gl.ARRAY_BUFFER_BINDING);
+    // Touched only when the host has one bound (headless-gl rejects the target altogether).
+    this.pixelUnpackBuffer = gl.getParameter(gl.PIXEL_UNPACK_BUFFER_BINDING) || null;
+    this.unpackAlignment = gl.getParameter(gl.UNPACK_ALIGNMENT);
+    this.unpackFlipY = gl.getParameter(gl.UNPACK_FLIP_Y_WEBGL);
+    this.unpackPremultiply = gl.getParameter(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL);
+    this.unpackRowLength = gl.getParameter(gl.UNPACK_ROW_LENGTH);
+    this.activeTexture = gl.getParameter(gl.ACTIVE_TEXTURE);
+    for (let unit = 0; unit < this.textureUnits; unit++) {
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      this.textures[unit] = gl.getParameter(gl.TEXTURE_BINDING_2D);
+      this.samplers[unit] = gl.getParameter(gl.SAMPLER_BINDING);
+    }
+    gl.activeTexture(this.activeTexture);
+  }
+
+  /** Puts the neutral state the renderer's passes assume: no sampler objects, plain unpacking. */
+  prepareForRenderer(): void {
+    const gl = this.gl;
+    for (let unit = 0; unit < this.textureUnits; unit++) gl.bindSampler(unit, null);
+    if (this.pixelUnpackBuffer) gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, null);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
+    gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
+    gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, false);
+    gl.pixelStorei(gl.UNPACK_ROW_LENGTH, 0);
+    for (const capability of CAPABILITIES) gl.disable(gl[capability]);
+    gl.colorMask(true, true, true, true);
+  }
+
+  restore(): void {
+    const gl = this.gl;
+    for (let i = 0; i < CAPABILITIES.length; i++) {
+      if (this.enabled[i]) gl.enable(gl[CAPABILITIES[i]]);
+      else gl.disable(gl[CAPABILITIES[i]]);
+    }
+    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, this.drawFramebuffer);
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.readFramebuffer);
+    gl.viewport(this.viewport[0], this.viewport[1], this.viewport[2], this.viewport[3]);
+    gl.scissor(this.scissorBox[0], this.scissorBox[1], this.scissorBox[2], this.scissorBox[3]);
+    gl.blendEquationSeparate(this.blendEquations[0], this.blendEquations[1]);
+    gl.blendFuncSeparate(this.blendFactors[0], this.blendFactors[1], this.blendFactors[2], this.blendFactors[3]);
+    gl.blendColor(this.blendColor[0], this.blendColor[1], this.blendColor[2], this.blendColor[3]);
+    gl.colorMask(this.colorMask[0], this.colorMask[1], this.colorMask[2], this.colorMask[3]);
+    gl.depthMask(this.depthMask);
+    gl.stencilMaskSeparate(gl.FRONT, this.stencilMask);
+    gl.stencilMaskSeparate(gl.BACK, this.stencilBackMask);
+    gl.clearColor(this.clearColor[0], this.clearColor[1], this.clearColor[2], this.clearColor[3]);
+    gl.clearDepth(this.clearDepth);
+    gl.clearStencil(this.clearStencil);
+    gl.cullFace(this.cullFaceMode);
+    gl.frontFace(this.frontFace);
+    gl.useProgram(this.program);
+    gl.bindVertexArray(this.vertexArray);
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.arrayBuffer);
+    if (this.pixelUnpackBuffer) gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, this.pixelUnpackBuffer);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, this.unpackAlignment);
+    gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, this.unpackFlipY);
+    gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, this.unpackPremultiply);
+    gl.pixelStorei(gl.UNPACK_ROW_LENGTH, this.unpackRowLength);
+    for (let unit = 0; unit < this.textureUnits; unit++) {
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      gl.bindTexture(gl.TEXTURE_2D, this.textures[unit]);
+      gl.bindSampler(unit, this.samplers[unit]);
+    }
+    gl.activeTexture(this.activeTexture);
+  }
+
+  /** The framebuffer and viewport saved by the last {@link HostState.save}. */
+  get savedTarget(): { framebuffer: WebGLFramebuffer | null; viewport: Int32Array } {
+    return { framebuffer: this.drawFramebuffer, viewport: this.viewport };
+  }
+}

@@ -1,0 +1,57 @@
+import type { ReadonlyMat4 } from 'gl-matrix';
+import type { LightDraw } from '../geometry/FramePlan';
+import { createProgram, type Program } from '../gl/program';
+import type { UnitQuad } from '../gl/UnitQuad';
+import type { GeometryBuffers } from './GeometryBuffers';
+import { shaderSources } from './shaders';
+
+/**
+ * Debug pass: over the composited image, outlines each drawn light's quad (yellow) and draws its
+ * shadow geometry as wireframe (magenta: hull edges and the rays projected from their corners),
+ * cut at the light's scissor rectangle.
+ */
+export class DebugPass {
+  private readonly quadProgram: Program;
+  private readonly shadowProgram: Program;
+
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly quad: UnitQuad) {
+    this.quadProgram = createProgram(gl, 'debug light quads', shaderSources.lightVertex, shaderSources.debugFragment);
+    this.shadowProgram = createProgram(gl, 'debug shadow geometry', shaderSources.shadowMaskVertex, shaderSources.debugFragment);
+  }
+
+  /**
+   * @param toTarget scale from lightmap pixels to the bound target's pixels, for the scissor.
+   */
+  render(draws: readonly LightDraw[], drawCount: number, buffers: GeometryBuffers, viewProjection: ReadonlyMat4, toTargetX: number, toTargetY: number, offsetX: number, offsetY: number): void {
+    const gl = this.gl;
+    gl.disable(gl.BLEND);
+    gl.enable(gl.SCISSOR_TEST);
+    for (let i = 0; i < drawCount; i++) {
+      const draw = draws[i];
+      const s = draw.scissor;
+      gl.scissor(offsetX + Math.floor(s[0] * toTargetX), offsetY + Math.floor(s[1] * toTargetY), Math.ceil(s[2] * toTargetX), Math.ceil(s[3] * toTargetY));
+      gl.useProgram(this.shadowProgram.handle);
+      const shadowUniforms = this.shadowProgram.uniforms;
+      gl.uniformMatrix4fv(shadowUniforms.u_viewProjection, false, viewProjection);
+      gl.uniform2f(shadowUniforms.u_lightPosition, draw.light.position[0], draw.light.position[1]);
+      gl.uniform1f(shadowUniforms.u_lightRadius, draw.light.radius);
+      gl.uniform4f(shadowUniforms.u_color, 1, 0, 1, 1);
+      gl.bindVertexArray(buffers.edgeVertexArray);
+      // Index order per edge quad is (0 1 2)(2 3 0): as lines that gives the edge and the ray from its start.
+      gl.drawElements(gl.LINES, draw.edgeIndexCount, gl.UNSIGNED_INT, draw.edgeIndexOffset * 4);
+      gl.useProgram(this.quadProgram.handle);
+      const quadUniforms = this.quadProgram.uniforms;
+      gl.uniformMatrix4fv(quadUniforms.u_viewProjection, false, viewProjection);
+      gl.uniform2f(quadUniforms.u_quadCorner, draw.quad[0], draw.quad[1]);
+      gl.uniform2f(quadUniforms.u_quadAxisX, draw.quad[2], draw.quad[3]);
+      gl.uniform2f(quadUniforms.u_quadAxisY, draw.quad[4], draw.quad[5]);
+      gl.uniform4f(quadUniforms.u_color, 1, 1, 0, 1);
+      this.quad.draw(gl.LINE_LOOP);
+    }
+  }
+
+  dispose(): void {
+    this.gl.deleteProgram(this.quadProgram.handle);
+    this.gl.deleteProgram(this.shadowProgram.handle);
+  }
+}

@@ -1,0 +1,63 @@
+import type { ReadonlyMat4 } from 'gl-matrix';
+import type { LightDraw } from '../geometry/FramePlan';
+import { createProgram, type Program } from '../gl/program';
+import { RenderTarget } from '../gl/RenderTarget';
+import type { GeometryBuffers } from './GeometryBuffers';
+import { shaderSources } from './shaders';
+
+/** Texture unit the shadow-mask pass reads hull points from. */
+const POINTS_UNIT = 0;
+
+/**
+ * Shadow mask pass: per light, writes into its own RGBA8 target how much of the light disk the
+ * hulls in range hide from each pixel (see shadow-mask.frag.glsl), then lets the hull pass mark
+ * the hulls' insides. Light-facing edges are culled by the rasterizer.
+ */
+export class ShadowMaskPass {
+  readonly target: RenderTarget;
+  private readonly program: Program;
+
+  constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number) {
+    this.program = createProgram(gl, 'shadow mask', shaderSources.shadowMaskVertex, shaderSources.shadowMaskFragment);
+    this.target = new RenderTarget(gl, { format: 'rgba8' }, width, height);
+  }
+
+  resize(width: number, height: number): void {
+    this.target.resize(width, height);
+  }
+
+  /**
+   * Clears the mask inside the current scissor and draws the shadows of `draw`'s hulls.
+   * @param mirrored whether `viewProjection` flips orientation (decides which faces are light-facing).
+   */
+  render(draw: LightDraw, buffers: GeometryBuffers, viewProjection: ReadonlyMat4, clipToWorld: ReadonlyMat4, mirrored: boolean): void {
+    const gl = this.gl;
+    const uniforms = this.program.uniforms;
+    this.target.bind();
+    gl.clearColor(0, 0, 0, 0);
+    gl.clear(gl.COLOR_BUFFER_BIT);
+    gl.useProgram(this.program.handle);
+    gl.uniformMatrix4fv(uniforms.u_viewProjection, false, viewProjection);
+    gl.uniformMatrix4fv(uniforms.u_clipToWorld, false, clipToWorld);
+    gl.uniform2f(uniforms.u_targetSize, this.target.width, this.target.height);
+    gl.uniform2f(uniforms.u_lightPosition, draw.light.position[0], draw.light.position[1]);
+    gl.uniform1f(uniforms.u_lightRadius, draw.light.radius);
+    gl.uniform1i(uniforms.u_hullPoints, POINTS_UNIT);
+    gl.activeTexture(gl.TEXTURE0 + POINTS_UNIT);
+    gl.bindTexture(gl.TEXTURE_2D, buffers.pointsTexture);
+    gl.enable(gl.BLEND);
+    gl.blendEquation(gl.MAX);
+    gl.enable(gl.CULL_FACE);
+    gl.cullFace(gl.BACK);
+    // Edges facing away from the light give clockwise quads in world space (y up).
+    gl.frontFace(mirrored ? gl.CCW : gl.CW);
+    gl.bindVertexArray(buffers.edgeVertexArray);
+    gl.drawElements(gl.TRIANGLES, draw.edgeIndexCount, gl.UNSIGNED_INT, draw.edgeIndexOffset * 4);
+    gl.disable(gl.CULL_FACE);
+  }
+
+  dispose(): void {
+    this.gl.deleteProgram(this.program.handle);
+    this.target.dispose();
+  }
+}

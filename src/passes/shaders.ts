@@ -1,0 +1,30 @@
+import compositeFragment from '../../shaders/composite.frag.glsl?raw';
+import debugFragment from '../../shaders/debug.frag.glsl?raw';
+import fullscreenVertex from '../../shaders/fullscreen.vert.glsl?raw';
+import hullFragment from '../../shaders/hull.frag.glsl?raw';
+import hullVertex from '../../shaders/hull.vert.glsl?raw';
+import lightCommon from '../../shaders/chunks/light-common.glsl?raw';
+import lightPointFragment from '../../shaders/light-point.frag.glsl?raw';
+import lightSpotFragment from '../../shaders/light-spot.frag.glsl?raw';
+import lightTexturedFragment from '../../shaders/light-textured.frag.glsl?raw';
+import lightVertex from '../../shaders/light.vert.glsl?raw';
+import shadowMaskFragment from '../../shaders/shadow-mask.frag.glsl?raw';
+import shadowMaskVertex from '../../shaders/shadow-mask.vert.glsl?raw';
+import { resolveIncludes } from '../gl/program';
+
+const chunks = { 'light-common': lightCommon };
+
+/** The GLSL sources, inlined at build time, with their chunks resolved. */
+export const shaderSources = {
+  compositeFragment,
+  debugFragment,
+  fullscreenVertex,
+  hullFragment,
+  hullVertex,
+  lightVertex,
+  lightPointFragment: resolveIncludes(lightPointFragment, chunks),
+  lightSpotFragment: resolveIncludes(lightSpotFragment, chunks),
+  lightTexturedFragment: resolveIncludes(lightTexturedFragment, chunks),
+  shadowMaskFragment,
+  shadowMaskVertex,
+};

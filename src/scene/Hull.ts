@@ -1,0 +1,200 @@
+import { isSimplePolygon, signedArea2, simplifyPolygon, triangulate } from '../geometry/polygon';
+import { assertFinite, copyVec2, type Vec2Like } from './validate';
+
+/** Options of a {@link Hull}; every field has the default shown. */
+export interface HullOptions {
+  /** World position of the hull's `origin`. Default `[0, 0]`. */
+  position?: Vec2Like;
+  /** Pivot in the points' local space: rotation and scale happen around it. Default `[0, 0]`. */
+  origin?: Vec2Like;
+  /** Rotation in radians around `origin` (positive turns +x towards +y). Default `0`. */
+  rotation?: number;
+  /** Scale around `origin`, one factor or `[sx, sy]`; a negative factor mirrors. Default `1`. */
+  scale?: number | Vec2Like;
+  /** A disabled hull casts no shadow. Default `true`. */
+  enabled?: boolean;
+}
+
+/**
+ * A polygon that blocks light. Points are in the hull's local space, in either winding;
+ * `position`, `origin`, `rotation` and `scale` place them in the world.
+ *
+ * A hull with fewer than 3 distinct points, crossing edges or zero area is kept but flagged
+ * `valid === false` and ignored by the renderer; giving it correct points makes it valid again.
+ */
+export class Hull {
+  private _points: ReadonlyArray<readonly [number, number]> = [];
+  private readonly _position: [number, number] = [0, 0];
+  private readonly _origin: [number, number] = [0, 0];
+  private readonly _scale: [number, number] = [1, 1];
+  private _rotation = 0;
+  private _enabled = true;
+  private _shapeValid = false;
+  /** Cleaned local points, counter-clockwise. */
+  private localPoints = new Float64Array(0);
+  private localTriangles: readonly number[] = [];
+  private mirroredTriangles: readonly number[] = [];
+  private worldVersion = -1;
+  private worldIsMirrored = false;
+
+  /**
+   * Bumped by every change; the renderer compares it to decide what to rebuild.
+   * @internal
+   */
+  version = 0;
+  /** World-space points, counter-clockwise, `[x0, y0, x1, y1, …]`; see {@link Hull.updateWorld}. @internal */
+  worldPoints = new Float32Array(0);
+  /** World-space bounds `[minX, minY, maxX, maxY]`. @internal */
+  readonly worldBounds = new Float64Array(4);
+
+  constructor(points: ReadonlyArray<Vec2Like>, options: HullOptions = {}) {
+    this.points = points;
+    if (options.position) this.position = options.position;
+    if (options.origin) this.origin = options.origin;
+    if (options.rotation !== undefined) this.rotation = options.rotation;
+    if (options.scale !== undefined) this.scale = options.scale;
+    if (options.enabled !== undefined) this.enabled = options.enabled;
+  }
+
+  /** The points as given (local space). Assign a new array to reshape the hull. */
+  get points(): ReadonlyArray<readonly [number, number]> {
+    return this._points;
+  }
+  set points(points: ReadonlyArray<Vec2Like>) {
+    if (!Array.isArray(points)) throw new TypeError(`Hull.points must be an array of [x, y] pairs, got ${String(points)}`);
+    const copy = points.map((p, i) => {
+      const v: [number, number] = [0, 0];
+      copyVec2(`Hull.points[${i}]`, p, v);
+      return v as readonly [number, number];
+    });
+    this._points = Object.freeze(copy);
+    const cleaned = simplifyPolygon(copy.flat());
+    this._shapeValid = isSimplePolygon(cleaned);
+    if (this._shapeValid && signedArea2(cleaned) < 0) reversePoints(cleaned);
+    this.localPoints = Float64Array.from(cleaned);
+    this.localTriangles = this._shapeValid ? triangulate(cleaned) : [];
+    const last = (cleaned.length >> 1) - 1;
+    this.mirroredTriangles = this.localTriangles.map((index) => last - index);
+    this.worldPoints = new Float32Array(cleaned.length);
+    this.touch();
+  }
+
+  /** World position of `origin`. */
+  get position(): readonly [number, number] {
+    return this._position;
+  }
+  set position(value: Vec2Like) {
+    copyVec2('Hull.position', value, this._position);
+    this.touch();
+  }
+  /** Moves the hull without allocating. */
+  setPosition(x: number, y: number): this {
+    this.position = [x, y];
+    return this;
+  }
+
+  /** Pivot in local space. */
+  get origin(): readonly [number, number] {
+    return this._origin;
+  }
+  set origin(value: Vec2Like) {
+    copyVec2('Hull.origin', value, this._origin);
+    this.touch();
+  }
+
+  /** Rotation in radians around `origin`. */
+  get rotation(): number {
+    return this._rotation;
+  }
+  set rotation(value: number) {
+    this._rotation = assertFinite('Hull.rotation', value);
+    this.touch();
+  }
+
+  /** Scale `[sx, sy]` around `origin`; assign a number for uniform scale. Negative mirrors. */
+  get scale(): readonly [number, number] {
+    return this._scale;
+  }
+  set scale(value: number | Vec2Like) {
+    if (typeof value === 'number') {
+      this._scale[0] = this._scale[1] = assertFinite('Hull.scale', value);
+    } else {
+      copyVec2('Hull.scale', value, this._scale);
+    }
+    this.touch();
+  }
+
+  /** A disabled hull casts no shadow and is not drawn by the hull pass. */
+  get enabled(): boolean {
+    return this._enabled;
+  }
+  set enabled(value: boolean) {
+    this._enabled = Boolean(value);
+    this.touch();
+  }
+
+  /** Whether the points form a simple polygon (≥ 3 points, no crossing edges, non-zero area) and the scale is non-zero. */
+  get valid(): boolean {
+    return this._shapeValid && this._scale[0] !== 0 && this._scale[1] !== 0;
+  }
+
+  /** Number of points (= edges) the renderer uses: the given points without duplicates and collinear points. */
+  get edgeCount(): number {
+    return this.localPoints.length >> 1;
+  }
+
+  /**
+   * Triangles of the hull as point indices into `worldPoints`, three per triangle.
+   * @internal
+   */
+  get worldTriangles(): readonly number[] {
+    return this.worldIsMirrored ? this.mirroredTriangles : this.localTriangles;
+  }
+
+  /**
+   * Recomputes `worldPoints` and `worldBounds` if the hull changed since the last call.
+   * Keeps counter-clockwise order also when a negative scale mirrors the hull.
+   * @returns true when the world points changed.
+   * @internal
+   */
+  updateWorld(): boolean {
+    if (this.worldVersion === this.version) return false;
+    this.worldVersion = this.version;
+    const n = this.edgeCount;
+    const cos = Math.cos(this._rotation), sin = Math.sin(this._rotation);
+    const [sx, sy] = this._scale;
+    const [ox, oy] = this._origin;
+    const [px, py] = this._position;
+    this.worldIsMirrored = sx * sy < 0;
+    const bounds = this.worldBounds;
+    bounds[0] = bounds[1] = Infinity;
+    bounds[2] = bounds[3] = -Infinity;
+    for (let i = 0; i < n; i++) {
+      const source = this.worldIsMirrored ? n - 1 - i : i;
+      const lx = (this.localPoints[2 * source] - ox) * sx;
+      const ly = (this.localPoints[2 * source + 1] - oy) * sy;
+      const x = px + lx * cos - ly * sin;
+      const y = py + lx * sin + ly * cos;
+      this.worldPoints[2 * i] = x;
+      this.worldPoints[2 * i + 1] = y;
+      if (x < bounds[0]) bounds[0] = x;
+      if (y < bounds[1]) bounds[1] = y;
+      if (x > bounds[2]) bounds[2] = x;
+      if (y > bounds[3]) bounds[3] = y;
+    }
+    return true;
+  }
+
+  private touch(): void {
+    this.version++;
+  }
+}
+
+function reversePoints(coords: number[]): void {
+  const n = coords.length >> 1;
+  for (let i = 0; i < n >> 1; i++) {
+    const j = n - 1 - i;
+    [coords[2 * i], coords[2 * j]] = [coords[2 * j], coords[2 * i]];
+    [coords[2 * i + 1], coords[2 * j + 1]] = [coords[2 * j + 1], coords[2 * i + 1]];
+  }
+}

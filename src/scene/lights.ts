@@ -1,0 +1,276 @@
+import type { Hull } from './Hull';
+import { assertFinite, assertNonNegative, copyColor, copyVec2, type ColorLike, type Vec2Like } from './validate';
+
+/** How a light treats the inside of the hulls it shines on. */
+export const ShadowType = {
+  /** The light does not reach the inside of hulls: they stay dark. */
+  Solid: 'solid',
+  /** The light lights the hulls themselves (their outline is lit, only what lies behind them is shadowed). */
+  Illuminated: 'illuminated',
+} as const;
+/** One of the {@link ShadowType} values. */
+export type ShadowType = (typeof ShadowType)[keyof typeof ShadowType];
+
+/** Options shared by every light; every field has the default shown. */
+export interface LightOptions {
+  /** World position of the light's centre (where shadows are cast from). Default `[0, 0]`. */
+  position?: Vec2Like;
+  /** Distance, in world units, at which the light reaches zero. Not negative. Default `100`. */
+  range?: number;
+  /** Radius of the emitting disk; 0 gives hard shadows, larger gives wider penumbrae. Not negative. Default `0`. */
+  radius?: number;
+  /** Linear RGB colour, 0..1 per channel. Default `[1, 1, 1]`. */
+  color?: ColorLike;
+  /** Multiplier on the colour; above 1 over-brightens. Not negative. Default `1`. */
+  intensity?: number;
+  /** Rotation in radians (positive turns +x towards +y). Default `0`. */
+  rotation?: number;
+  /** Normalised pivot (0..1) of the light's quad that sits at `position`. Default `[0.5, 0.5]`. */
+  origin?: Vec2Like;
+  /** {@link ShadowType.Solid} or {@link ShadowType.Illuminated}. Default `Illuminated`. */
+  shadowType?: ShadowType;
+  /** A disabled light is not drawn. Default `true`. */
+  enabled?: boolean;
+  /** When false, the light ignores every hull. Default `true`. */
+  castsShadows?: boolean;
+  /** Hulls this light passes through (e.g. its own lamp housing). Default none. */
+  ignoredHulls?: Iterable<Hull>;
+}
+
+/** The kind of a light, used by the renderer to pick its light pass. */
+export type LightKind = 'point' | 'spot' | 'textured';
+
+/**
+ * Common state of every light. Lights are plain data: add them to a renderer with
+ * `renderer.addLight(light)`; every change shows in the next frame.
+ */
+export abstract class Light {
+  /** Which light pass draws this light. */
+  abstract readonly kind: LightKind;
+  private readonly _position: [number, number] = [0, 0];
+  private readonly _origin: [number, number] = [0.5, 0.5];
+  private readonly _color: [number, number, number] = [1, 1, 1];
+  private _range = 100;
+  private _radius = 0;
+  private _intensity = 1;
+  private _rotation = 0;
+  /** A disabled light is not drawn. */
+  enabled = true;
+  /** When false the light passes through every hull. */
+  castsShadows = true;
+  /** Whether the light lights the inside of hulls; see {@link ShadowType}. */
+  shadowType: ShadowType = ShadowType.Illuminated;
+  /** Hulls this light passes through: they neither shadow it nor make it skip when its centre is inside them. */
+  readonly ignoredHulls = new Set<Hull>();
+
+  constructor(options: LightOptions = {}) {
+    if (options.position) this.position = options.position;
+    if (options.range !== undefined) this.range = options.range;
+    if (options.radius !== undefined) this.radius = options.radius;
+    if (options.color) this.color = options.color;
+    if (options.intensity !== undefined) this.intensity = options.intensity;
+    if (options.rotation !== undefined) this.rotation = options.rotation;
+    if (options.origin) this.origin = options.origin;
+    if (options.shadowType !== undefined) this.shadowType = options.shadowType;
+    if (options.enabled !== undefined) this.enabled = options.enabled;
+    if (options.castsShadows !== undefined) this.castsShadows = options.castsShadows;
+    for (const hull of options.ignoredHulls ?? []) this.ignoredHulls.add(hull);
+  }
+
+  /** World position of the light's centre. */
+  get position(): readonly [number, number] {
+    return this._position;
+  }
+  set position(value: Vec2Like) {
+    copyVec2(`${this.constructor.name}.position`, value, this._position);
+  }
+  /** Moves the light without allocating. */
+  setPosition(x: number, y: number): this {
+    this._position[0] = assertFinite(`${this.constructor.name}.position[0]`, x);
+    this._position[1] = assertFinite(`${this.constructor.name}.position[1]`, y);
+    return this;
+  }
+
+  /** Normalised pivot of the light's quad placed at `position` (matters for textured lights). */
+  get origin(): readonly [number, number] {
+    return this._origin;
+  }
+  set origin(value: Vec2Like) {
+    copyVec2(`${this.constructor.name}.origin`, value, this._origin);
+  }
+
+  /** Linear RGB colour. */
+  get color(): readonly [number, number, number] {
+    return this._color;
+  }
+  set color(value: ColorLike) {
+    copyColor(`${this.constructor.name}.color`, value, this._color);
+  }
+
+  /** Distance at which the light reaches zero. */
+  get range(): number {
+    return this._range;
+  }
+  set range(value: number) {
+    this._range = assertNonNegative(`${this.constructor.name}.range`, value);
+  }
+
+  /** Radius of the emitting disk. */
+  get radius(): number {
+    return this._radius;
+  }
+  set radius(value: number) {
+    this._radius = assertNonNegative(`${this.constructor.name}.radius`, value);
+  }
+
+  /** Multiplier on the colour. */
+  get intensity(): number {
+    return this._intensity;
+  }
+  set intensity(value: number) {
+    this._intensity = assertNonNegative(`${this.constructor.name}.intensity`, value);
+  }
+
+  /** Rotation in radians. */
+  get rotation(): number {
+    return this._rotation;
+  }
+  set rotation(value: number) {
+    this._rotation = assertFinite(`${this.constructor.name}.rotation`, value);
+  }
+
+  /**
+   * The light's quad in world space: a corner and the two edge vectors, written into `out`
+   * as `[cornerX, cornerY, axisXx, axisXy, axisYx, axisYy]`. Procedural lights use a square
+   * of side `2 × range` centred on `position`.
+   * @internal
+   */
+  writeQuad(out: Float32Array): void {
+    const width = this.quadWidth(), height = this.quadHeight();
+    const cos = Math.cos(this._rotation), sin = Math.sin(this._rotation);
+    const [ox, oy] = this.quadPivot();
+    out[2] = cos * width;
+    out[3] = sin * width;
+    out[4] = -sin * height;
+    out[5] = cos * height;
+    out[0] = this._position[0] - ox * out[2] - oy * out[4];
+    out[1] = this._position[1] - ox * out[3] - oy * out[5];
+  }
+
+  /** Normalised point of the quad placed at `position`. */
+  protected quadPivot(): readonly [number, number] {
+    return CENTRE;
+  }
+  /** Quad width in world units. */
+  protected quadWidth(): number {
+    return 2 * this._range;
+  }
+  /** Quad height in world units. */
+  protected quadHeight(): number {
+    return 2 * this._range;
+  }
+}
+
+const CENTRE = [0.5, 0.5] as const;
+
+/** An isotropic light: full at its centre, falling linearly to zero at `range`. */
+export class PointLight extends Light {
+  readonly kind = 'point';
+}
+
+/** Options of a {@link Spotlight}. */
+export interface SpotlightOptions extends LightOptions {
+  /** Full angle of the cone in radians, 0..π. Default `π / 2`. */
+  coneAngle?: number;
+  /**
+   * Falloff across the cone, not negative: the intensity at angle θ off the axis is
+   * `(1 − θ / (coneAngle / 2)) ^ coneDecay`. 0 gives a hard-edged cone of even intensity;
+   * larger values concentrate the light towards the axis. Default `1`.
+   */
+  coneDecay?: number;
+}
+
+/**
+ * A cone of light from `position` along `rotation` (0 points along +x), with the point light's
+ * distance falloff times a cone falloff set by `coneAngle` and `coneDecay`.
+ */
+export class Spotlight extends Light {
+  readonly kind = 'spot';
+  private _coneAngle = Math.PI / 2;
+  private _coneDecay = 1;
+
+  constructor(options: SpotlightOptions = {}) {
+    super(options);
+    if (options.coneAngle !== undefined) this.coneAngle = options.coneAngle;
+    if (options.coneDecay !== undefined) this.coneDecay = options.coneDecay;
+  }
+
+  /** Full angle of the cone in radians (0..π). */
+  get coneAngle(): number {
+    return this._coneAngle;
+  }
+  set coneAngle(value: number) {
+    assertNonNegative('Spotlight.coneAngle', value);
+    if (value > Math.PI) throw new RangeError(`Spotlight.coneAngle must be at most π, got ${value}`);
+    this._coneAngle = value;
+  }
+
+  /** Falloff exponent across the cone; see {@link SpotlightOptions.coneDecay}. */
+  get coneDecay(): number {
+    return this._coneDecay;
+  }
+  set coneDecay(value: number) {
+    this._coneDecay = assertNonNegative('Spotlight.coneDecay', value);
+  }
+}
+
+/** Options of a {@link TexturedLight}. */
+export interface TexturedLightOptions extends LightOptions {
+  /** The light cookie: intensity is read from its red channel. Must belong to the renderer's context. */
+  texture: WebGLTexture;
+  /** Size of the textured quad in world units `[width, height]`. Default `[2 × range, 2 × range]`. */
+  size?: Vec2Like;
+}
+
+/**
+ * A light whose intensity at each pixel comes from a texture (a "light cookie", red channel)
+ * stretched over a quad of `size`, with `origin` as its pivot at `position` and turned by
+ * `rotation`. No procedural falloff: animate the texture for flicker. Shadows are cast
+ * from `position`; `range` bounds the shadows and the culling.
+ */
+export class TexturedLight extends Light {
+  readonly kind = 'textured';
+  /** The light cookie texture. */
+  texture: WebGLTexture;
+  private _size: [number, number] | null = null;
+
+  constructor(options: TexturedLightOptions) {
+    super(options);
+    if (!options || options.texture == null) throw new TypeError('TexturedLight.texture is required');
+    this.texture = options.texture;
+    if (options.size) this.size = options.size;
+  }
+
+  /** Size of the quad in world units; defaults to `2 × range` on each side. */
+  get size(): readonly [number, number] {
+    return this._size ?? [2 * this.range, 2 * this.range];
+  }
+  set size(value: Vec2Like) {
+    const size: [number, number] = [0, 0];
+    copyVec2('TexturedLight.size', value, size);
+    assertNonNegative('TexturedLight.size[0]', size[0]);
+    assertNonNegative('TexturedLight.size[1]', size[1]);
+    this._size = size;
+  }
+
+  protected override quadWidth(): number {
+    return this._size ? this._size[0] : super.quadWidth();
+  }
+  protected override quadHeight(): number {
+    return this._size ? this._size[1] : super.quadHeight();
+  }
+
+  protected override quadPivot(): readonly [number, number] {
+    return this.origin;
+  }
+}
