@@ -6,3 +6,11 @@ export {
 } from './scene/lights';
 export type { Vec2Like, ColorLike } from './scene/validate';
 export { isSimplePolygon, signedArea2 } from './geometry/polygon';
+export { readScene } from './format/readScene';
+export { writeScene } from './format/writeScene';
+export { SceneFormatError } from './format/SceneFormatError';
+export { createSceneObjects, describeScene, type SceneObjects, type CookieResolver, type SceneDescriptionInput } from './format/sceneObjects';
+export {
+  SCENE_FORMAT, SCENE_FORMAT_VERSION, type SceneDocument, type SceneCamera, type SceneHull, type SceneLight,
+  type SceneLightBase, type ScenePointLight, type SceneSpotlight, type SceneTexturedLight,
+} from './format/SceneDocument';

@@ -1,0 +1,103 @@
+/**
+ * The penumbra scene file: plain, versioned JSON describing ambient colour, camera, hulls and
+ * lights. See `docs/scene-format.md` for a worked example. Every field below is written by
+ * {@link writeScene}; {@link readScene} also accepts files that leave out the fields marked
+ * optional, and fills in the defaults shown.
+ */
+
+/** The value of a scene file's `format` field. */
+export const SCENE_FORMAT = 'penumbra-scene';
+/** The format version this package writes; {@link readScene} rejects any other. */
+export const SCENE_FORMAT_VERSION = 1;
+
+/** A whole scene file, version 1. */
+export interface SceneDocument {
+  /** Always `"penumbra-scene"`. */
+  format: typeof SCENE_FORMAT;
+  /** Always `1`. */
+  version: typeof SCENE_FORMAT_VERSION;
+  /** Colour of unlit areas `[r, g, b]`, channels ≥ 0. Optional, default `[0.2, 0.2, 0.2]`. */
+  ambient: [number, number, number];
+  /** Where the view looks. Optional, default centre `[0, 0]`, zoom `1`. */
+  camera: SceneCamera;
+  /** Occluders, in order; lights refer to them by index in `ignoredHulls`. Optional, default `[]`. */
+  hulls: SceneHull[];
+  /** Lights, in drawing order. Optional, default `[]`. */
+  lights: SceneLight[];
+}
+
+/** The view: the world point at the centre of the screen and how many screen pixels a world unit covers. */
+export interface SceneCamera {
+  /** World point at the centre of the view. */
+  center: [number, number];
+  /** Screen pixels (CSS pixels) per world unit, > 0. */
+  zoom: number;
+}
+
+/** A hull, with the fields of `Hull` and `HullOptions`. */
+export interface SceneHull {
+  /** Local points `[x, y]`, either winding. Any count: an invalid polygon is kept and flagged by the renderer. */
+  points: [number, number][];
+  /** Optional, default `[0, 0]`. */
+  position: [number, number];
+  /** Optional, default `[0, 0]`. */
+  origin: [number, number];
+  /** Radians. Optional, default `0`. */
+  rotation: number;
+  /** `[sx, sy]`, any finite values (negative mirrors). Optional, default `[1, 1]`. */
+  scale: [number, number];
+  /** Optional, default `true`. */
+  enabled: boolean;
+}
+
+/** Fields every light kind has, as in `LightOptions`. */
+export interface SceneLightBase {
+  /** Required. */
+  position: [number, number];
+  /** ≥ 0. Optional, default `100`. */
+  range: number;
+  /** ≥ 0. Optional, default `0`. */
+  radius: number;
+  /** `[r, g, b]`, channels ≥ 0. Optional, default `[1, 1, 1]`. */
+  color: [number, number, number];
+  /** ≥ 0. Optional, default `1`. */
+  intensity: number;
+  /** Radians. Optional, default `0`. */
+  rotation: number;
+  /** Optional, default `[0.5, 0.5]`. */
+  origin: [number, number];
+  /** `"solid"` or `"illuminated"`. Optional, default `"illuminated"`. */
+  shadowType: 'solid' | 'illuminated';
+  /** Optional, default `true`. */
+  enabled: boolean;
+  /** Optional, default `true`. */
+  castsShadows: boolean;
+  /** Indices into the file's `hulls` that this light passes through. Optional, default `[]`. */
+  ignoredHulls: number[];
+}
+
+/** A `PointLight`. */
+export interface ScenePointLight extends SceneLightBase {
+  kind: 'point';
+}
+
+/** A `Spotlight`. */
+export interface SceneSpotlight extends SceneLightBase {
+  kind: 'spot';
+  /** Full cone angle in radians, 0..π. Optional, default `π / 2`. */
+  coneAngle: number;
+  /** ≥ 0. Optional, default `1`. */
+  coneDecay: number;
+}
+
+/** A `TexturedLight`. Textures are not stored in the file: `cookie` names one the application provides. */
+export interface SceneTexturedLight extends SceneLightBase {
+  kind: 'textured';
+  /** Name of the light cookie texture, resolved by the application. Required, non-empty. */
+  cookie: string;
+  /** Quad size `[width, height]` in world units, ≥ 0, or `null` for `2 × range`. Optional, default `null`. */
+  size: [number, number] | null;
+}
+
+/** Any light of a scene file, told apart by `kind`. */
+export type SceneLight = ScenePointLight | SceneSpotlight | SceneTexturedLight;

@@ -1,0 +1,133 @@
+import {
+  booleanField, childPath, choiceField, colorField, nameField, numberField, positiveField, readArray, readObject,
+  readVec2, vec2Field, type Fields,
+} from './fields';
+import {
+  SCENE_FORMAT, SCENE_FORMAT_VERSION,
+  type SceneCamera, type SceneDocument, type SceneHull, type SceneLight, type SceneLightBase,
+} from './SceneDocument';
+import { SceneFormatError } from './SceneFormatError';
+
+const DOCUMENT_FIELDS = ['format', 'version', 'ambient', 'camera', 'hulls', 'lights'] as const;
+const CAMERA_FIELDS = ['center', 'zoom'] as const;
+const HULL_FIELDS = ['points', 'position', 'origin', 'rotation', 'scale', 'enabled'] as const;
+const LIGHT_FIELDS = [
+  'kind', 'position', 'range', 'radius', 'color', 'intensity', 'rotation', 'origin', 'shadowType', 'enabled',
+  'castsShadows', 'ignoredHulls',
+] as const;
+const KIND_FIELDS = { point: [], spot: ['coneAngle', 'coneDecay'], textured: ['cookie', 'size'] } as const;
+const LIGHT_KINDS = ['point', 'spot', 'textured'] as const;
+
+/**
+ * Reads a scene file (its JSON text, or the already parsed value) and checks every field.
+ *
+ * @returns a complete {@link SceneDocument} with defaults filled in; it shares nothing with the input.
+ * @throws {SceneFormatError} naming the path of the first bad field, e.g.
+ *   `hulls[3].points[1]: expected two finite numbers, got [1,null]`; also for text that is not JSON,
+ *   another `format`, or a `version` other than {@link SCENE_FORMAT_VERSION}.
+ */
+export function readScene(input: string | unknown): SceneDocument {
+  const root = readObject(typeof input === 'string' ? parseJson(input) : input, '', DOCUMENT_FIELDS);
+  if (root.value.format !== SCENE_FORMAT) {
+    throw new SceneFormatError('format', `expected "${SCENE_FORMAT}", got ${JSON.stringify(root.value.format) ?? 'nothing'}`);
+  }
+  const version = numberField(root, 'version');
+  if (version !== SCENE_FORMAT_VERSION) {
+    throw new SceneFormatError('version', `unsupported version ${version} (this reader knows version ${SCENE_FORMAT_VERSION})`);
+  }
+  const hulls = readList(root.value.hulls, 'hulls', readHull);
+  const lights = readList(root.value.lights, 'lights', (value, path) => readLight(value, path, hulls.length));
+  return {
+    format: SCENE_FORMAT,
+    version: SCENE_FORMAT_VERSION,
+    ambient: colorField(root, 'ambient', [0.2, 0.2, 0.2]),
+    camera: root.value.camera === undefined ? { center: [0, 0], zoom: 1 } : readCamera(root.value.camera, 'camera'),
+    hulls,
+    lights,
+  };
+}
+
+function parseJson(text: string): unknown {
+  try {
+    return JSON.parse(text);
+  } catch (error) {
+    throw new SceneFormatError('(root)', `not valid JSON (${(error as Error).message})`);
+  }
+}
+
+function readList<T>(value: unknown, path: string, read: (item: unknown, path: string) => T): T[] {
+  if (value === undefined) return [];
+  return readArray(value, path).map((item, i) => read(item, `${path}[${i}]`));
+}
+
+function readCamera(value: unknown, path: string): SceneCamera {
+  const camera = readObject(value, path, CAMERA_FIELDS);
+  return { center: vec2Field(camera, 'center', [0, 0]), zoom: positiveField(camera, 'zoom', 1) };
+}
+
+function readHull(value: unknown, path: string): SceneHull {
+  const hull = readObject(value, path, HULL_FIELDS);
+  const pointsPath = childPath(path, 'points');
+  if (hull.value.points === undefined) throw new SceneFormatError(pointsPath, 'required field is missing');
+  return {
+    points: readArray(hull.value.points, pointsPath).map((point, i) => readVec2(point, `${pointsPath}[${i}]`)),
+    position: vec2Field(hull, 'position', [0, 0]),
+    origin: vec2Field(hull, 'origin', [0, 0]),
+    rotation: numberField(hull, 'rotation', 0),
+    scale: vec2Field(hull, 'scale', [1, 1]),
+    enabled: booleanField(hull, 'enabled', true),
+  };
+}
+
+function readLight(value: unknown, path: string, hullCount: number): SceneLight {
+  // The kind decides which extra fields are allowed, so it is read before the field check.
+  const kindFields = readObject(value, path);
+  const kind = choiceField(kindFields, 'kind', LIGHT_KINDS);
+  const light = readObject(value, path, [...LIGHT_FIELDS, ...KIND_FIELDS[kind]]);
+  const base = readLightBase(light, hullCount);
+  switch (kind) {
+    case 'point':
+      return { kind, ...base };
+    case 'spot':
+      return {
+        kind, ...base,
+        coneAngle: numberField(light, 'coneAngle', Math.PI / 2, 0, Math.PI),
+        coneDecay: numberField(light, 'coneDecay', 1, 0),
+      };
+    case 'textured':
+      return {
+        kind, ...base,
+        cookie: nameField(light, 'cookie'),
+        size: light.value.size === undefined || light.value.size === null ? null : vec2Field(light, 'size', undefined, 0),
+      };
+  }
+}
+
+function readLightBase(light: Fields, hullCount: number): SceneLightBase {
+  return {
+    position: vec2Field(light, 'position'),
+    range: numberField(light, 'range', 100, 0),
+    radius: numberField(light, 'radius', 0, 0),
+    color: colorField(light, 'color', [1, 1, 1]),
+    intensity: numberField(light, 'intensity', 1, 0),
+    rotation: numberField(light, 'rotation', 0),
+    origin: vec2Field(light, 'origin', [0.5, 0.5]),
+    shadowType: choiceField(light, 'shadowType', ['solid', 'illuminated'] as const, 'illuminated'),
+    enabled: booleanField(light, 'enabled', true),
+    castsShadows: booleanField(light, 'castsShadows', true),
+    ignoredHulls: readIgnoredHulls(light, hullCount),
+  };
+}
+
+function readIgnoredHulls(light: Fields, hullCount: number): number[] {
+  const path = childPath(light.path, 'ignoredHulls');
+  const value = light.value.ignoredHulls;
+  if (value === undefined) return [];
+  return readArray(value, path).map((index, i) => {
+    if (typeof index !== 'number' || !Number.isInteger(index) || index < 0 || index >= hullCount) {
+      const expected = hullCount === 0 ? 'no hull index (the file has no hulls)' : `a hull index from 0 to ${hullCount - 1}`;
+      throw new SceneFormatError(`${path}[${i}]`, `expected ${expected}, got ${JSON.stringify(index)}`);
+    }
+    return index;
+  });
+}

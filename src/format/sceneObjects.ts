@@ -1,0 +1,92 @@
+import { Hull } from '../scene/Hull';
+import { Light, PointLight, Spotlight, TexturedLight } from '../scene/lights';
+import { SCENE_FORMAT, SCENE_FORMAT_VERSION, type SceneCamera, type SceneDocument, type SceneLight } from './SceneDocument';
+import { SceneFormatError } from './SceneFormatError';
+
+/** Lights and hulls built from a {@link SceneDocument}, ready for `renderer.addLight` / `addHull`. */
+export interface SceneObjects {
+  hulls: Hull[];
+  lights: Light[];
+}
+
+/** Finds the light cookie texture of a name, or returns null when the name is unknown. */
+export type CookieResolver = (name: string) => WebGLTexture | null;
+
+/**
+ * Builds the lights and hulls a scene document describes. Textured lights get their texture from
+ * `resolveCookie`. Nothing is added to a renderer: on an error nothing has changed anywhere.
+ *
+ * @throws {SceneFormatError} `lights[i].cookie` when `resolveCookie` does not know a cookie name.
+ */
+export function createSceneObjects(scene: SceneDocument, resolveCookie: CookieResolver): SceneObjects {
+  const hulls = scene.hulls.map((hull) => new Hull(hull.points, hull));
+  const lights = scene.lights.map((light, i) => createLight(light, i, hulls, resolveCookie));
+  return { hulls, lights };
+}
+
+function createLight(light: SceneLight, index: number, hulls: readonly Hull[], resolveCookie: CookieResolver): Light {
+  const options = { ...light, ignoredHulls: light.ignoredHulls.map((i) => hulls[i]) };
+  switch (light.kind) {
+    case 'point':
+      return new PointLight(options);
+    case 'spot':
+      return new Spotlight({ ...options, coneAngle: light.coneAngle, coneDecay: light.coneDecay });
+    case 'textured': {
+      const texture = resolveCookie(light.cookie);
+      if (!texture) throw new SceneFormatError(`lights[${index}].cookie`, `unknown cookie ${JSON.stringify(light.cookie)}`);
+      return new TexturedLight({ ...options, texture, size: light.size ?? undefined });
+    }
+  }
+}
+
+/** What {@link describeScene} needs besides the lights and hulls. */
+export interface SceneDescriptionInput extends SceneObjects {
+  ambient: readonly [number, number, number];
+  camera: SceneCamera;
+  /** The cookie name of a textured light's texture. */
+  cookieName: (texture: WebGLTexture) => string;
+}
+
+/**
+ * Describes lights and hulls (e.g. `renderer.lights` and `renderer.hulls`) as a scene document,
+ * ready for {@link writeScene}. Ignored hulls that are not in `hulls` are left out.
+ */
+export function describeScene(input: SceneDescriptionInput): SceneDocument {
+  const hullIndex = new Map(input.hulls.map((hull, i) => [hull, i]));
+  return {
+    format: SCENE_FORMAT,
+    version: SCENE_FORMAT_VERSION,
+    ambient: [...input.ambient],
+    camera: { center: [...input.camera.center], zoom: input.camera.zoom },
+    hulls: input.hulls.map((hull) => ({
+      points: hull.points.map(([x, y]) => [x, y]),
+      position: [...hull.position],
+      origin: [...hull.origin],
+      rotation: hull.rotation,
+      scale: [...hull.scale],
+      enabled: hull.enabled,
+    })),
+    lights: input.lights.map((light) => describeLight(light, hullIndex, input.cookieName)),
+  };
+}
+
+function describeLight(light: Light, hullIndex: ReadonlyMap<Hull, number>, cookieName: (texture: WebGLTexture) => string): SceneLight {
+  const base = {
+    position: [...light.position] as [number, number],
+    range: light.range,
+    radius: light.radius,
+    color: [...light.color] as [number, number, number],
+    intensity: light.intensity,
+    rotation: light.rotation,
+    origin: [...light.origin] as [number, number],
+    shadowType: light.shadowType,
+    enabled: light.enabled,
+    castsShadows: light.castsShadows,
+    ignoredHulls: [...light.ignoredHulls].flatMap((hull) => hullIndex.get(hull) ?? []),
+  };
+  if (light instanceof Spotlight) return { kind: 'spot', ...base, coneAngle: light.coneAngle, coneDecay: light.coneDecay };
+  if (light instanceof TexturedLight) {
+    return { kind: 'textured', ...base, cookie: cookieName(light.texture), size: [...light.size] };
+  }
+  return { kind: 'point', ...base };
+}

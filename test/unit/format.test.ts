@@ -1,0 +1,200 @@
+import { describe, expect, it } from 'vitest';
+import {
+  createSceneObjects, describeScene, readScene, SceneFormatError, Spotlight, TexturedLight, writeScene,
+  type SceneDocument,
+} from '../../src/index';
+
+/** A complete scene with every kind of light and every field set away from its default. */
+function fullScene(): SceneDocument {
+  return {
+    format: 'penumbra-scene',
+    version: 1,
+    ambient: [0.1, 0.2, 0.3],
+    camera: { center: [120, -40], zoom: 1.5 },
+    hulls: [
+      { points: [[0, 0], [40, 0], [40, 30], [0, 30]], position: [200, 100], origin: [20, 15], rotation: 0.3, scale: [1, -2], enabled: true },
+      { points: [[0, 0], [60, 0], [60, 20], [20, 20], [20, 60], [0, 60]], position: [400, 300], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: false },
+    ],
+    lights: [
+      {
+        kind: 'point', position: [10, 20], range: 300, radius: 12, color: [1, 0.8, 0.6], intensity: 1.5, rotation: 0,
+        origin: [0.5, 0.5], shadowType: 'solid', enabled: true, castsShadows: false, ignoredHulls: [1],
+      },
+      {
+        kind: 'spot', position: [50, 60], range: 250, radius: 4, color: [0.5, 0.5, 1], intensity: 1, rotation: 1.2,
+        origin: [0.5, 0.5], shadowType: 'illuminated', enabled: false, castsShadows: true, ignoredHulls: [],
+        coneAngle: 0.9, coneDecay: 2,
+      },
+      {
+        kind: 'textured', position: [70, 80], range: 200, radius: 8, color: [1, 0.6, 0.2], intensity: 2, rotation: -0.4,
+        origin: [0.25, 0.75], shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [0, 1],
+        cookie: 'flame', size: [160, 120],
+      },
+    ],
+  };
+}
+
+function errorOf(input: unknown): SceneFormatError {
+  try {
+    readScene(input);
+  } catch (error) {
+    expect(error).toBeInstanceOf(SceneFormatError);
+    return error as SceneFormatError;
+  }
+  throw new Error('readScene accepted a bad scene');
+}
+
+/** A full scene with one field replaced (or deleted, with `undefined`) at a path of keys. */
+function withField(path: (string | number)[], value: unknown): unknown {
+  const scene = JSON.parse(JSON.stringify(fullScene()));
+  let parent = scene;
+  for (const key of path.slice(0, -1)) parent = parent[key];
+  const last = path[path.length - 1];
+  if (value === undefined) delete parent[last];
+  else parent[last] = value;
+  return scene;
+}
+
+describe('scene format', () => {
+  it('round-trips a scene through writeScene and readScene', () => {
+    const scene = fullScene();
+    const text = writeScene(scene);
+    expect(readScene(text)).toEqual(scene);
+    expect(writeScene(readScene(text))).toBe(text);
+  });
+
+  it('fills in the documented defaults of a minimal file', () => {
+    const scene = readScene({
+      format: 'penumbra-scene', version: 1,
+      hulls: [{ points: [[0, 0], [1, 0], [0, 1]] }],
+      lights: [{ kind: 'point', position: [1, 2] }, { kind: 'spot', position: [0, 0] }, { kind: 'textured', position: [0, 0], cookie: 'c' }],
+    });
+    expect(scene.ambient).toEqual([0.2, 0.2, 0.2]);
+    expect(scene.camera).toEqual({ center: [0, 0], zoom: 1 });
+    expect(scene.hulls[0]).toEqual({ points: [[0, 0], [1, 0], [0, 1]], position: [0, 0], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: true });
+    expect(scene.lights[0]).toEqual({
+      kind: 'point', position: [1, 2], range: 100, radius: 0, color: [1, 1, 1], intensity: 1, rotation: 0,
+      origin: [0.5, 0.5], shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [],
+    });
+    expect(scene.lights[1]).toMatchObject({ coneAngle: Math.PI / 2, coneDecay: 1 });
+    expect(scene.lights[2]).toMatchObject({ cookie: 'c', size: null });
+  });
+
+  it('keeps invalid polygons: the renderer flags them, the file format does not', () => {
+    const scene = readScene(withField(['hulls', 0, 'points'], [[0, 0], [1, 1]]));
+    expect(scene.hulls[0].points).toEqual([[0, 0], [1, 1]]);
+  });
+
+  it('rejects an unknown version and another format', () => {
+    expect(errorOf(withField(['version'], 2)).message).toBe('version: unsupported version 2 (this reader knows version 1)');
+    expect(errorOf(withField(['version'], undefined)).message).toBe('version: required field is missing');
+    expect(errorOf(withField(['format'], 'tiled-map')).message).toBe('format: expected "penumbra-scene", got "tiled-map"');
+  });
+
+  it('rejects text that is not JSON and a root that is not an object', () => {
+    expect(errorOf('{ "format": ').path).toBe('(root)');
+    expect(errorOf('{ "format": ').message).toMatch(/^\(root\): not valid JSON/);
+    expect(errorOf('[1, 2]').message).toBe('(root): expected an object, got [1,2]');
+  });
+
+  // Every check of the reader, with the path it must name.
+  const cases: [string, (string | number)[], unknown, string][] = [
+    ['unknown top-level field', ['light'], [], 'light: unknown field (allowed: format, version, ambient, camera, hulls, lights)'],
+    ['ambient not a triple', ['ambient'], [1, 1], 'ambient: expected three finite numbers ≥ 0, got [1,1]'],
+    ['ambient negative', ['ambient'], [1, -1, 1], 'ambient: expected three finite numbers ≥ 0, got [1,-1,1]'],
+    ['camera not an object', ['camera'], 3, 'camera: expected an object, got 3'],
+    ['camera zoom zero', ['camera', 'zoom'], 0, 'camera.zoom: expected a number > 0, got 0'],
+    ['camera center', ['camera', 'center'], [0], 'camera.center: expected two finite numbers, got [0]'],
+    ['camera unknown field', ['camera', 'angle'], 0, 'camera.angle: unknown field (allowed: center, zoom)'],
+    ['hulls not an array', ['hulls'], {}, 'hulls: expected an array, got {}'],
+    ['hull not an object', ['hulls', 1], 'box', 'hulls[1]: expected an object, got "box"'],
+    ['hull points missing', ['hulls', 1, 'points'], undefined, 'hulls[1].points: required field is missing'],
+    ['hull points not an array', ['hulls', 1, 'points'], 5, 'hulls[1].points: expected an array, got 5'],
+    ['hull point not a pair', ['hulls', 1, 'points', 1], [1, null], 'hulls[1].points[1]: expected two finite numbers, got [1,null]'],
+    ['hull point as a string', ['hulls', 0, 'points', 3], '0,30', 'hulls[0].points[3]: expected two finite numbers, got "0,30"'],
+    ['hull position', ['hulls', 0, 'position'], [1, 2, 3], 'hulls[0].position: expected two finite numbers, got [1,2,3]'],
+    ['hull origin', ['hulls', 0, 'origin'], null, 'hulls[0].origin: expected two finite numbers, got null'],
+    ['hull rotation', ['hulls', 0, 'rotation'], '90deg', 'hulls[0].rotation: expected a finite number, got "90deg"'],
+    ['hull scale', ['hulls', 0, 'scale'], 2, 'hulls[0].scale: expected two finite numbers, got 2'],
+    ['hull enabled', ['hulls', 0, 'enabled'], 1, 'hulls[0].enabled: expected true or false, got 1'],
+    ['hull unknown field', ['hulls', 0, 'colour'], 'red', 'hulls[0].colour: unknown field (allowed: points, position, origin, rotation, scale, enabled)'],
+    ['lights not an array', ['lights'], 'none', 'lights: expected an array, got "none"'],
+    ['light not an object', ['lights', 0], null, 'lights[0]: expected an object, got null'],
+    ['light kind missing', ['lights', 0, 'kind'], undefined, 'lights[0].kind: required field is missing'],
+    ['light kind unknown', ['lights', 0, 'kind'], 'area', 'lights[0].kind: expected one of "point", "spot", "textured", got "area"'],
+    ['light position missing', ['lights', 0, 'position'], undefined, 'lights[0].position: required field is missing'],
+    ['light position', ['lights', 0, 'position'], [1, 'a'], 'lights[0].position: expected two finite numbers, got [1,"a"]'],
+    ['light range negative', ['lights', 0, 'range'], -1, 'lights[0].range: expected a number ≥ 0, got -1'],
+    ['light radius not a number', ['lights', 1, 'radius'], '4', 'lights[1].radius: expected a finite number, got "4"'],
+    ['light color', ['lights', 1, 'color'], [1, 1], 'lights[1].color: expected three finite numbers ≥ 0, got [1,1]'],
+    ['light intensity negative', ['lights', 2, 'intensity'], -0.5, 'lights[2].intensity: expected a number ≥ 0, got -0.5'],
+    ['light rotation', ['lights', 2, 'rotation'], null, 'lights[2].rotation: expected a finite number, got null'],
+    ['light origin', ['lights', 2, 'origin'], [0.5], 'lights[2].origin: expected two finite numbers, got [0.5]'],
+    ['light shadowType', ['lights', 0, 'shadowType'], 'occluded', 'lights[0].shadowType: expected one of "solid", "illuminated", got "occluded"'],
+    ['light enabled', ['lights', 0, 'enabled'], 'yes', 'lights[0].enabled: expected true or false, got "yes"'],
+    ['light castsShadows', ['lights', 0, 'castsShadows'], 0, 'lights[0].castsShadows: expected true or false, got 0'],
+    ['ignoredHulls not an array', ['lights', 0, 'ignoredHulls'], 1, 'lights[0].ignoredHulls: expected an array, got 1'],
+    ['ignoredHulls out of range', ['lights', 2, 'ignoredHulls', 1], 2, 'lights[2].ignoredHulls[1]: expected a hull index from 0 to 1, got 2'],
+    ['ignoredHulls not an integer', ['lights', 2, 'ignoredHulls', 0], 0.5, 'lights[2].ignoredHulls[0]: expected a hull index from 0 to 1, got 0.5'],
+    ['light unknown field', ['lights', 0, 'coneAngle'], 1, 'lights[0].coneAngle: unknown field (allowed: kind, position, range, radius, color, intensity, rotation, origin, shadowType, enabled, castsShadows, ignoredHulls)'],
+    ['spot coneAngle above π', ['lights', 1, 'coneAngle'], 4, 'lights[1].coneAngle: expected a number ≤ 3.141592653589793, got 4'],
+    ['spot coneAngle negative', ['lights', 1, 'coneAngle'], -1, 'lights[1].coneAngle: expected a number ≥ 0, got -1'],
+    ['spot coneDecay negative', ['lights', 1, 'coneDecay'], -2, 'lights[1].coneDecay: expected a number ≥ 0, got -2'],
+    ['textured cookie missing', ['lights', 2, 'cookie'], undefined, 'lights[2].cookie: required field is missing'],
+    ['textured cookie empty', ['lights', 2, 'cookie'], '', 'lights[2].cookie: expected a non-empty string, got ""'],
+    ['textured size negative', ['lights', 2, 'size'], [10, -1], 'lights[2].size: expected numbers ≥ 0, got [10,-1]'],
+    ['textured size not a pair', ['lights', 2, 'size'], 'big', 'lights[2].size: expected two finite numbers, got "big"'],
+  ];
+  it.each(cases)('names the path of a bad field: %s', (_name, path, value, message) => {
+    const error = errorOf(withField(path, value));
+    expect(error.message).toBe(message);
+    expect(error.path).toBe(message.slice(0, message.indexOf(': ')));
+  });
+
+  it('rejects NaN and Infinity in a scene given as a value', () => {
+    const scene = fullScene();
+    scene.lights[0].range = Number.NaN;
+    expect(errorOf(scene).message).toBe('lights[0].range: expected a finite number, got null');
+    scene.lights[0].range = 1;
+    scene.hulls[1].points[2] = [Infinity, 0];
+    expect(errorOf(scene).message).toBe('hulls[1].points[2]: expected two finite numbers, got [null,0]');
+  });
+
+  it('refers to no hull when there are none', () => {
+    expect(errorOf(withField(['hulls'], [])).message)
+      .toBe('lights[0].ignoredHulls[0]: expected no hull index (the file has no hulls), got 1');
+  });
+
+  it('writeScene refuses a bad document instead of writing a file that would not load', () => {
+    const scene = fullScene();
+    scene.camera.zoom = -1;
+    expect(() => writeScene(scene)).toThrow('camera.zoom: expected a number > 0, got -1');
+  });
+});
+
+describe('scene objects', () => {
+  const flame = { name: 'flame texture' } as unknown as WebGLTexture;
+  const resolve = (name: string) => (name === 'flame' ? flame : null);
+
+  it('builds lights and hulls and describes them back to the same document', () => {
+    const scene = fullScene();
+    const objects = createSceneObjects(scene, resolve);
+    expect(objects.hulls).toHaveLength(2);
+    expect(objects.hulls[1].enabled).toBe(false);
+    const spot = objects.lights[1] as Spotlight;
+    expect(spot).toBeInstanceOf(Spotlight);
+    expect(spot.coneAngle).toBe(0.9);
+    const textured = objects.lights[2] as TexturedLight;
+    expect(textured).toBeInstanceOf(TexturedLight);
+    expect(textured.texture).toBe(flame);
+    expect([...textured.ignoredHulls]).toEqual(objects.hulls);
+    const described = describeScene({ ...objects, ambient: scene.ambient, camera: scene.camera, cookieName: () => 'flame' });
+    expect(described).toEqual(scene);
+  });
+
+  it('names the light whose cookie is unknown and builds nothing', () => {
+    const scene = fullScene();
+    if (scene.lights[2].kind === 'textured') scene.lights[2].cookie = 'torch';
+    expect(() => createSceneObjects(scene, resolve)).toThrow(new SceneFormatError('lights[2].cookie', 'unknown cookie "torch"'));
+  });
+});
