@@ -1,0 +1,31 @@
+import { Hull, PenumbraRenderer, PointLight, ShadowType } from '../../src/index';
+import type { ReferenceScene } from './scenes';
+
+/**
+ * A renderer set up for a reference scene: ambient black and Solid shadows, so the lightmap is
+ * exactly falloff × visible fraction × colour × intensity everywhere, hull interiors included
+ * (the reference counts them as hidden: every segment out of a hull crosses its outline).
+ * Shared by the headless-gl test and the Chromium page.
+ */
+export function createSceneRenderer(gl: WebGL2RenderingContext, scene: ReferenceScene): PenumbraRenderer {
+  const renderer = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0], width: scene.width, height: scene.height });
+  const { position, range, radius, color, intensity } = scene.light;
+  renderer.addLight(new PointLight({ position, range, radius, color, intensity, shadowType: ShadowType.Solid }));
+  for (const points of scene.hulls) renderer.addHull(new Hull(points));
+  return renderer;
+}
+
+/** Lightmap texels (RGBA, rows bottom-up as GL reads them) → RGB rows top-down as the world is laid out. */
+export function lightmapToWorldRows(texels: ArrayLike<number>, width: number, height: number): Float32Array {
+  const rgb = new Float32Array(width * height * 3);
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) {
+      const texel = ((height - 1 - y) * width + x) * 4;
+      const pixel = (y * width + x) * 3;
+      rgb[pixel] = texels[texel];
+      rgb[pixel + 1] = texels[texel + 1];
+      rgb[pixel + 2] = texels[texel + 2];
+    }
+  }
+  return rgb;
+}

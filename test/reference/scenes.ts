@@ -1,0 +1,55 @@
+/**
+ * The reference scenes: one light (white unless stated, Solid shadows) and world-space hulls,
+ * as plain JSON-able data so the headless-gl test and the Chromium page render the very same
+ * scenes. Sizes are small (the CPU reference samples the disk for every shadowed pixel).
+ */
+export type Point = [number, number];
+
+export interface ReferenceLight {
+  position: Point;
+  range: number;
+  radius: number;
+  color?: [number, number, number];
+  intensity?: number;
+}
+
+export interface ReferenceScene {
+  name: string;
+  width: number;
+  height: number;
+  light: ReferenceLight;
+  /** World-space outlines, in either winding. */
+  hulls: Point[][];
+}
+
+const WIDTH = 160;
+const HEIGHT = 120;
+
+const box = (x: number, y: number, w: number, h: number): Point[] => [[x, y], [x + w, y], [x + w, y + h], [x, y + h]];
+
+/** A U opening towards +x (away from a light on its left): its arms cast a concave shadow. */
+const uShape: Point[] = [[70, 35], [100, 35], [100, 45], [80, 45], [80, 75], [100, 75], [100, 85], [70, 85]];
+/** An L: its inner corner faces the light, so a part of the hull hides another part. */
+const lShape: Point[] = [[75, 30], [85, 30], [85, 70], [110, 70], [110, 80], [75, 80]];
+
+export const REFERENCE_SCENES: readonly ReferenceScene[] = [
+  { name: 'convex, hard (r=0)', width: WIDTH, height: HEIGHT,
+    light: { position: [40, 60], range: 140, radius: 0 }, hulls: [box(70, 45, 16, 30)] },
+  { name: 'convex rotated, soft (r=8)', width: WIDTH, height: HEIGHT,
+    light: { position: [40, 60], range: 140, radius: 8 }, hulls: [[[72, 50], [90, 42], [98, 62], [80, 74]]] },
+  { name: 'concave U, hard (r=0)', width: WIDTH, height: HEIGHT,
+    light: { position: [30, 60], range: 150, radius: 0 }, hulls: [uShape] },
+  { name: 'concave U, soft (r=6)', width: WIDTH, height: HEIGHT,
+    light: { position: [30, 60], range: 150, radius: 6 }, hulls: [uShape] },
+  { name: 'concave L, soft (r=6)', width: WIDTH, height: HEIGHT,
+    light: { position: [35, 100], range: 150, radius: 6, color: [1, 0.6, 0.3], intensity: 0.8 }, hulls: [lShape] },
+  { name: 'two hulls, same-side penumbrae (r=10)', width: WIDTH, height: HEIGHT,
+    light: { position: [30, 60], range: 150, radius: 10 }, hulls: [box(60, 30, 10, 22), box(95, 22, 10, 22)] },
+  { name: 'light between pillars (r=6)', width: WIDTH, height: HEIGHT,
+    light: { position: [80, 60], range: 90, radius: 6 }, hulls: [box(50, 52, 10, 16), box(100, 52, 10, 16)] },
+  { name: 'three hulls, hard (r=0)', width: WIDTH, height: HEIGHT,
+    // Off the pixel grid: from a light on it, rows of pixel centres line up exactly with a hull corner,
+    // where a grazing segment is neither clearly lit nor clearly hidden.
+    light: { position: [80.3, 60.2], range: 100, radius: 0 },
+    hulls: [box(95, 30, 12, 12), [[55, 75], [70, 85], [50, 95]], box(60, 40, 8, 8)] },
+];
