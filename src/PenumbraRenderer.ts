@@ -252,6 +252,28 @@ export class PenumbraRenderer {
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.compositeReadFramebuffer);
   }
 
+  /**
+   * Lights, in place, what is already drawn in the bound framebuffer: copies its colour inside
+   * the current viewport into the scene texture, then does what {@link PenumbraRenderer.draw}
+   * does (lightmap, scene × lightmap written back to that framebuffer and viewport). For engines
+   * such as PixiJS and Phaser that draw into their own targets, so that `beginDraw()` cannot
+   * redirect their drawing. The copy is a `blitFramebuffer`: a multisampled framebuffer must have
+   * the same size as the renderer and an RGBA8 colour buffer. The context state is left as it was.
+   */
+  drawInPlace(): void {
+    this.beginDraw();
+    if (!this.drawing) return;
+    const gl = this.gl;
+    const resources = this.requireResources();
+    const v = this.compositeViewport;
+    this.withHostState(() => {
+      resources.scene.bind();
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.compositeDrawFramebuffer);
+      gl.blitFramebuffer(v[0], v[1], v[0] + v[2], v[1] + v[3], 0, 0, this.width, this.height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+    });
+    this.draw();
+  }
+
   /** Builds the lightmap only (see {@link PenumbraRenderer.lightmapTexture}); the context state is left as it was. */
   renderLightmap(): void {
     if (this.disposed || this.contextLost) return;

@@ -1,0 +1,113 @@
+// The level shared by the engine examples: walls (which are also the hulls), lamps, the player's
+// movement with wall collisions, and the test hook the browser tests drive.
+
+/** An axis-aligned wall in world units: x, y, width, height. */
+export type Rect = readonly [number, number, number, number];
+
+export const WORLD_WIDTH = 960;
+export const WORLD_HEIGHT = 640;
+export const VIEW_WIDTH = 480;
+export const VIEW_HEIGHT = 320;
+/** Camera zoom: world units are drawn this many pixels wide. */
+export const ZOOM = 1.25;
+export const PLAYER_RADIUS = 10;
+export const PLAYER_SPEED = 160;
+export const PLAYER_START: readonly [number, number] = [330, 300];
+
+export const WALLS: readonly Rect[] = [
+  [0, 0, WORLD_WIDTH, 20], [0, WORLD_HEIGHT - 20, WORLD_WIDTH, 20],
+  [0, 0, 20, WORLD_HEIGHT], [WORLD_WIDTH - 20, 0, 20, WORLD_HEIGHT],
+  [400, 150, 40, 300], [600, 20, 30, 200], [620, 420, 200, 30], [120, 440, 140, 40], [160, 150, 60, 60],
+];
+
+/** Lamps: position and colour. */
+export const LAMPS: readonly { position: [number, number]; color: [number, number, number] }[] = [
+  { position: [120, 90], color: [1, 0.75, 0.45] },
+  { position: [820, 110], color: [0.5, 0.7, 1] },
+  { position: [760, 560], color: [0.6, 1, 0.6] },
+];
+
+/** Colour of the HUD badge, drawn after the lighting: the tests expect exactly these bytes. */
+export const HUD_COLOR = 0x33cc66;
+
+/** Which movement keys are held. */
+export class Keys {
+  private readonly held = new Set<string>();
+
+  constructor(target: Window) {
+    target.addEventListener('keydown', (event) => this.held.add(event.key.toLowerCase()));
+    target.addEventListener('keyup', (event) => this.held.delete(event.key.toLowerCase()));
+  }
+
+  /** Unit-less direction from WASD / arrows, each axis −1..1. */
+  direction(out: [number, number]): [number, number] {
+    const h = this.held;
+    out[0] = (h.has('d') || h.has('arrowright') ? 1 : 0) - (h.has('a') || h.has('arrowleft') ? 1 : 0);
+    out[1] = (h.has('s') || h.has('arrowdown') ? 1 : 0) - (h.has('w') || h.has('arrowup') ? 1 : 0);
+    return out;
+  }
+}
+
+/** Moves `position` by `dx`, `dy`, one axis at a time so that the player slides along walls. */
+export function moveWithCollisions(position: [number, number], dx: number, dy: number): void {
+  position[0] += dx;
+  if (hitsWall(position)) position[0] -= dx;
+  position[1] += dy;
+  if (hitsWall(position)) position[1] -= dy;
+}
+
+function hitsWall([x, y]: readonly [number, number]): boolean {
+  for (const [wx, wy, ww, wh] of WALLS) {
+    const nearestX = Math.max(wx, Math.min(x, wx + ww));
+    const nearestY = Math.max(wy, Math.min(y, wy + wh));
+    if ((x - nearestX) ** 2 + (y - nearestY) ** 2 < PLAYER_RADIUS ** 2) return true;
+  }
+  return false;
+}
+
+/** Camera scroll (top-left of the view in world units) that centres the view on the player. */
+export function cameraScroll(player: readonly [number, number], out: [number, number]): [number, number] {
+  out[0] = player[0] - VIEW_WIDTH / 2 / ZOOM;
+  out[1] = player[1] - VIEW_HEIGHT / 2 / ZOOM;
+  return out;
+}
+
+/** What the browser tests drive, as `window.penumbraExample`. */
+export interface ExampleHook {
+  /** Puts the player at a world position (the camera follows). */
+  setPlayer(x: number, y: number): void;
+  /** Renders one frame now and reads back canvas pixels at CSS coordinates (top-left origin). */
+  renderAndRead(points: readonly (readonly [number, number])[]): [number, number, number, number][];
+  /** Resolves after `count` animation frames. */
+  frames(count: number): Promise<void>;
+  /** Removes the lighting plugin; returns whether it left no GL error behind. */
+  removeLighting(): boolean;
+}
+
+declare global {
+  interface Window {
+    penumbraExample?: ExampleHook;
+  }
+}
+
+/** Reads RGBA bytes of the drawing buffer at CSS pixel coordinates (top-left origin). */
+export function readPixels(gl: WebGL2RenderingContext, points: readonly (readonly [number, number])[]): [number, number, number, number][] {
+  const canvas = gl.canvas as HTMLCanvasElement;
+  const scale = gl.drawingBufferWidth / canvas.clientWidth;
+  const pixel = new Uint8Array(4);
+  return points.map(([x, y]) => {
+    gl.readPixels(Math.floor(x * scale), gl.drawingBufferHeight - 1 - Math.floor(y * scale), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    return [pixel[0], pixel[1], pixel[2], pixel[3]];
+  });
+}
+
+/** Resolves after `count` animation frames. */
+export function waitFrames(count: number): Promise<void> {
+  return new Promise((done) => {
+    const step = (left: number): void => {
+      if (left <= 0) done();
+      else requestAnimationFrame(() => step(left - 1));
+    };
+    step(count);
+  });
+}
