@@ -1,0 +1,83 @@
+import { mat4 } from 'gl-matrix';
+import { describe, expect, it } from 'vitest';
+import { FramePlan } from '../../src/geometry/FramePlan';
+import { ShadowGeometry } from '../../src/geometry/ShadowGeometry';
+import { Hull, PointLight, type Light } from '../../src/index';
+
+const WIDTH = 200, HEIGHT = 100;
+const pixelSpace = mat4.ortho(mat4.create(), 0, WIDTH, HEIGHT, 0, -1, 1);
+
+function plan(lights: Light[], hulls: Hull[]): FramePlan {
+  const geometry = new ShadowGeometry();
+  geometry.update(hulls);
+  const framePlan = new FramePlan();
+  framePlan.build(lights, hulls, geometry, pixelSpace, WIDTH, HEIGHT);
+  return framePlan;
+}
+
+/** The scissor `[x, y, w, h]` covers `[x0, y0, x1, y1]` and exceeds it by at most one pixel per side. */
+function expectScissorAround(scissor: Int32Array, [x0, y0, x1, y1]: number[]): void {
+  const [x, y, w, h] = scissor;
+  expect(x).toBeLessThanOrEqual(x0);
+  expect(x).toBeGreaterThanOrEqual(x0 - 1);
+  expect(y).toBeLessThanOrEqual(y0);
+  expect(y).toBeGreaterThanOrEqual(y0 - 1);
+  expect(x + w).toBeGreaterThanOrEqual(x1);
+  expect(x + w).toBeLessThanOrEqual(x1 + 1);
+  expect(y + h).toBeGreaterThanOrEqual(y1);
+  expect(y + h).toBeLessThanOrEqual(y1 + 1);
+}
+
+const drawnLights = (framePlan: FramePlan) => framePlan.draws.slice(0, framePlan.drawCount).map((d) => d.light);
+
+describe('FramePlan culling', () => {
+  it('draws an on-screen light with a scissor around its range, clamped to the target', () => {
+    const light = new PointLight({ position: [50, 50], range: 20 });
+    const framePlan = plan([light], []);
+    expect(drawnLights(framePlan)).toEqual([light]);
+    // World y down → GL window y up: rows 30..70 from the top are 30..70 from the bottom of 100.
+    // Rounding is outward, so float noise in the projection may widen the box by one pixel.
+    expectScissorAround(framePlan.draws[0].scissor, [30, 30, 70, 70]);
+    const edge = plan([new PointLight({ position: [5, 5], range: 20 })], []);
+    expectScissorAround(edge.draws[0].scissor, [0, 75, 25, 100]);
+  });
+
+  it('skips lights that are off screen, disabled, of zero intensity or range', () => {
+    const lights = [
+      new PointLight({ position: [-50, 50], range: 20 }),
+      new PointLight({ position: [100, 200], range: 50 }),
+      new PointLight({ position: [50, 50], enabled: false }),
+      new PointLight({ position: [50, 50], intensity: 0 }),
+      new PointLight({ position: [50, 50], range: 0 }),
+    ];
+    expect(plan(lights, []).drawCount).toBe(0);
+  });
+
+  it('skips a light whose centre is inside a hull, unless it ignores that hull', () => {
+    const housing = new Hull([[40, 40], [60, 40], [60, 60], [40, 60]]);
+    const inside = new PointLight({ position: [50, 50], range: 30 });
+    expect(plan([inside], [housing]).drawCount).toBe(0);
+    inside.ignoredHulls.add(housing);
+    const framePlan = plan([inside], [housing]);
+    expect(drawnLights(framePlan)).toEqual([inside]);
+    expect(framePlan.draws[0].hullCount).toBe(0);
+  });
+
+  it('does not skip a light in a concave hull’s notch or inside a disabled or invalid hull', () => {
+    const u = new Hull([[0, 0], [30, 0], [30, 30], [20, 30], [20, 10], [10, 10], [10, 30], [0, 30]]);
+    const notchLight = new PointLight({ position: [15, 20], range: 30 });
+    expect(plan([notchLight], [u]).drawCount).toBe(1);
+    const disabled = new Hull([[40, 40], [60, 40], [60, 60], [40, 60]], { enabled: false });
+    const invalid = new Hull([[40, 40], [60, 60], [60, 40], [40, 60]]);
+    expect(plan([new PointLight({ position: [50, 50], range: 30 })], [disabled, invalid]).drawCount).toBe(1);
+  });
+
+  it('lists only hulls within the light’s range, and none for a light that casts no shadows', () => {
+    const near = new Hull([[60, 45], [70, 45], [70, 55], [60, 55]]);
+    const far = new Hull([[180, 45], [190, 45], [190, 55], [180, 55]]);
+    const light = new PointLight({ position: [50, 50], range: 30 });
+    expect(plan([light], [near, far]).draws[0].hullCount).toBe(1);
+    light.castsShadows = false;
+    expect(plan([light], [near, far]).draws[0].hullCount).toBe(0);
+  });
+});

@@ -1,0 +1,50 @@
+import { describe, expect, it } from 'vitest';
+import { PointLight, Spotlight } from '../../src/index';
+
+/** Expects a RangeError whose message names the property and shows the value. */
+function expectRangeError(assign: () => void, property: string, value: string): void {
+  expect(assign).toThrow(RangeError);
+  try {
+    assign();
+  } catch (error) {
+    expect((error as Error).message).toContain(property);
+    expect((error as Error).message).toContain(value);
+  }
+}
+
+describe('light validation', () => {
+  const nonNegative = ['range', 'radius', 'intensity'] as const;
+  for (const property of nonNegative) {
+    it(`rejects NaN, Infinity and negative ${property}`, () => {
+      const light = new PointLight();
+      expectRangeError(() => { light[property] = NaN; }, `PointLight.${property}`, 'NaN');
+      expectRangeError(() => { light[property] = Infinity; }, `PointLight.${property}`, 'Infinity');
+      expectRangeError(() => { light[property] = -2; }, `PointLight.${property}`, '-2');
+      expectRangeError(() => new PointLight({ [property]: -3 }), `PointLight.${property}`, '-3');
+      light[property] = 0;
+      expect(light[property]).toBe(0);
+    });
+  }
+
+  it('rejects a bad coneDecay and a cone wider than π', () => {
+    const spot = new Spotlight();
+    expectRangeError(() => { spot.coneDecay = -1; }, 'Spotlight.coneDecay', '-1');
+    expectRangeError(() => { spot.coneDecay = NaN; }, 'Spotlight.coneDecay', 'NaN');
+    expectRangeError(() => { spot.coneAngle = 4; }, 'Spotlight.coneAngle', '4');
+    expectRangeError(() => { spot.coneAngle = -0.5; }, 'Spotlight.coneAngle', '-0.5');
+    spot.coneAngle = Math.PI;
+    expect(spot.coneAngle).toBe(Math.PI);
+  });
+
+  it('rejects non-finite positions and colours, naming the component', () => {
+    const light = new PointLight();
+    expectRangeError(() => { light.position = [1, NaN]; }, 'PointLight.position[1]', 'NaN');
+    expectRangeError(() => { light.color = [1, -1, 0]; }, 'PointLight.color[1]', '-1');
+  });
+
+  it('keeps the previous value after a rejected assignment', () => {
+    const light = new PointLight({ range: 50 });
+    expect(() => { light.range = -1; }).toThrow(RangeError);
+    expect(light.range).toBe(50);
+  });
+});
