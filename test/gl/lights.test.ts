@@ -1,0 +1,145 @@
+import { afterEach, describe, expect, it } from 'vitest';
+import { Hull, PenumbraRenderer, PointLight, ShadowType, Spotlight, TexturedLight } from '../../src/index';
+import { createContext, destroyContext } from './context';
+import { renderLightmap } from './lightmap';
+
+const W = 96, H = 64;
+// Lightmap values are half floats (relative rounding 2^-11) computed from float32 math: 0.005
+// absolute is far above that noise and far below any difference these tests look for.
+const CLOSE = 0.005;
+
+let gl: WebGL2RenderingContext;
+let renderer: PenumbraRenderer;
+
+function setUp(ambient: [number, number, number] = [0, 0, 0]): void {
+  gl = createContext(W, H);
+  renderer = new PenumbraRenderer(gl, { ambientColor: ambient });
+}
+
+afterEach(() => {
+  expect(gl.getError()).toBe(0);
+  renderer.dispose();
+  destroyContext(gl);
+});
+
+/** Linear falloff of a light at `[lx, ly]` with `range`, at the centre of pixel (x, y). */
+const falloff = (lx: number, ly: number, range: number, x: number, y: number) =>
+  Math.max(0, 1 - Math.hypot(x + 0.5 - lx, y + 0.5 - ly) / range);
+
+describe('point light', () => {
+  it('adds colour × intensity × linear falloff; intensity is a plain multiplier', () => {
+    setUp();
+    const light = renderer.addLight(new PointLight({ position: [48, 32], range: 40, color: [1, 0.5, 0.25] }));
+    const once = renderLightmap(gl, renderer, W, H).at(60, 40);
+    const expected = falloff(48, 32, 40, 60, 40);
+    expect(once[0]).toBeCloseTo(expected, 2);
+    expect(once[1]).toBeCloseTo(expected * 0.5, 2);
+    expect(once[2]).toBeCloseTo(expected * 0.25, 2);
+    light.intensity = 2.5;
+    const scaled = renderLightmap(gl, renderer, W, H).at(60, 40);
+    for (let c = 0; c < 3; c++) expect(Math.abs(scaled[c] - 2.5 * once[c])).toBeLessThan(CLOSE);
+    expect(renderLightmap(gl, renderer, W, H).at(48 + 41, 32)[0]).toBe(0); // beyond range
+  });
+
+  it('sums overlapping lights above 1.0 in the half-float lightmap', () => {
+    setUp();
+    expect(renderer.hasFloatLightmap).toBe(true);
+    renderer.addLight(new PointLight({ position: [44, 32], range: 60 }));
+    renderer.addLight(new PointLight({ position: [52, 32], range: 60 }));
+    const [r] = renderLightmap(gl, renderer, W, H).at(48, 32);
+    expect(r).toBeCloseTo(falloff(44, 32, 60, 48, 32) + falloff(52, 32, 60, 48, 32), 2);
+    expect(r).toBeGreaterThan(1.8);
+  });
+
+  it('leaves the ambient colour where no light reaches and adds light on top of it', () => {
+    setUp([0.1, 0.2, 0.3]);
+    renderer.addLight(new PointLight({ position: [16, 16], range: 10 }));
+    const lightmap = renderLightmap(gl, renderer, W, H);
+    for (const [x, y] of [[80, 50], [0, 63], [95, 0]]) {
+      const rgb = lightmap.at(x, y);
+      expect(rgb[0]).toBeCloseTo(0.1, 3);
+      expect(rgb[1]).toBeCloseTo(0.2, 3);
+      expect(rgb[2]).toBeCloseTo(0.3, 3);
+    }
+    expect(lightmap.at(16, 16)[0]).toBeCloseTo(0.1 + falloff(16, 16, 10, 16, 16), 2);
+  });
+});
+
+describe('spotlight', () => {
+  // Along +x from (10, 32.5), so row 32's pixel centres lie on the axis; a 90° cone reaches 45°
+  // either side of the axis.
+  const position: [number, number] = [10, 32.5];
+  const coneValue = (decay: number, x: number, y: number) => {
+    const angle = Math.atan2(Math.abs(y + 0.5 - position[1]), x + 0.5 - position[0]);
+    return falloff(position[0], position[1], 80, x, y) * Math.max(0, 1 - angle / (Math.PI / 4)) ** decay;
+  };
+
+  it('lights inside its cone, with the documented cone falloff, and nothing outside', () => {
+    setUp();
+    renderer.addLight(new Spotlight({ position, range: 80, coneAngle: Math.PI / 2, coneDecay: 1 }));
+    const lightmap = renderLightmap(gl, renderer, W, H);
+    expect(lightmap.at(50, 32)[0]).toBeCloseTo(coneValue(1, 50, 32), 2);
+    expect(lightmap.at(50, 45)[0]).toBeCloseTo(coneValue(1, 50, 45), 2);
+    expect(lightmap.at(20, 60)[0]).toBe(0); // 70° off the axis
+    expect(lightmap.at(5, 32)[0]).toBe(0); // behind
+  });
+
+  it('gets darker off the axis as coneDecay grows, and stays equal on the axis', () => {
+    setUp();
+    const spot = renderer.addLight(new Spotlight({ position, range: 80, coneAngle: Math.PI / 2, coneDecay: 0.5 }));
+    const values = [0.5, 1, 3].map((decay) => {
+      spot.coneDecay = decay;
+      const lightmap = renderLightmap(gl, renderer, W, H);
+      return { axis: lightmap.at(50, 32)[0], off: lightmap.at(50, 50)[0] };
+    });
+    expect(values[0].off).toBeGreaterThan(values[1].off + 0.05);
+    expect(values[1].off).toBeGreaterThan(values[2].off + 0.05);
+    expect(values[2].off).toBeCloseTo(coneValue(3, 50, 50), 2);
+    expect(Math.abs(values[0].axis - values[2].axis)).toBeLessThan(CLOSE);
+  });
+
+  it('follows its rotation', () => {
+    setUp();
+    renderer.addLight(new Spotlight({ position: [48, 10], range: 60, rotation: Math.PI / 2, coneAngle: Math.PI / 3 }));
+    const lightmap = renderLightmap(gl, renderer, W, H);
+    expect(lightmap.at(48, 40)[0]).toBeGreaterThan(0.3); // +y is down the screen
+    expect(lightmap.at(80, 10)[0]).toBe(0);
+  });
+});
+
+describe('textured light', () => {
+  it('shows the red channel of its cookie, upright, stretched over its size', () => {
+    setUp();
+    // 2×2 cookie: top-left texel red, every texel green; green must not show.
+    const texture = gl.createTexture()!;
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 2, 2, 0, gl.RGBA, gl.UNSIGNED_BYTE,
+      Uint8Array.of(255, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255));
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    renderer.addLight(new TexturedLight({ texture, position: [48, 32], size: [40, 40], range: 40, color: [1, 0.5, 1] }));
+    const lightmap = renderLightmap(gl, renderer, W, H);
+    expect(lightmap.at(38, 22)).toEqual([1, 0.5, 1]); // top-left quarter: cookie 1, no falloff
+    expect(lightmap.at(58, 22)).toEqual([0, 0, 0]);
+    expect(lightmap.at(38, 42)).toEqual([0, 0, 0]);
+    expect(lightmap.at(20, 22)).toEqual([0, 0, 0]); // outside the quad
+    gl.deleteTexture(texture);
+  });
+});
+
+describe('shadow types', () => {
+  it('keeps the inside of hulls dark for Solid lights and lights it for Illuminated ones', () => {
+    setUp();
+    const light = renderer.addLight(new PointLight({ position: [20, 32], range: 80, radius: 3, shadowType: ShadowType.Solid }));
+    renderer.addHull(new Hull([[40, 24], [50, 24], [50, 40], [40, 40]]));
+    const solid = renderLightmap(gl, renderer, W, H);
+    expect(solid.at(45, 32)[0]).toBe(0);
+    expect(solid.at(70, 32)[0]).toBe(0);
+    light.shadowType = ShadowType.Illuminated;
+    const illuminated = renderLightmap(gl, renderer, W, H);
+    expect(illuminated.at(45, 32)[0]).toBeCloseTo(falloff(20, 32, 80, 45, 32), 2);
+    expect(illuminated.at(70, 32)[0]).toBe(0); // behind the hull: shadowed either way
+    expect(illuminated.at(30, 32)[0]).toBeCloseTo(solid.at(30, 32)[0], 3);
+  });
+});
