@@ -1,0 +1,172 @@
+import { mat4 } from 'gl-matrix';
+import { afterEach, beforeEach, describe, expect, it } from 'vitest';
+import { Hull, PenumbraRenderer, PointLight } from '../../src/index';
+import { createContext, destroyContext } from './context';
+import { renderLightmap, type Lightmap } from './lightmap';
+
+const W = 96, H = 64;
+
+let gl: WebGL2RenderingContext;
+let renderer: PenumbraRenderer;
+
+beforeEach(() => {
+  gl = createContext(W, H);
+  renderer = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0] });
+});
+
+afterEach(() => {
+  expect(gl.getError()).toBe(0);
+  renderer.dispose();
+  destroyContext(gl);
+});
+
+const frame = (): Lightmap => renderLightmap(gl, renderer, W, H);
+/** A box left of centre, shadowing the pixel (70, 32) from a light at (20, 32). */
+const box = (): [number, number][] => [[40, 26], [48, 26], [48, 38], [40, 38]];
+const SHADOWED: [number, number] = [70, 32];
+const lit = (lightmap: Lightmap) => lightmap.at(...SHADOWED)[0] > 0.3;
+const dark = (lightmap: Lightmap) => lightmap.at(...SHADOWED)[0] === 0;
+
+/** Largest difference of red between pixel (x, y) of `a` and (x + offsetX, y + offsetY) of `b`, where both exist. */
+function maxDifference(a: Lightmap, b: Lightmap, offsetX = 0, offsetY = 0): number {
+  let max = 0;
+  for (let y = 0; y < H; y++) {
+    for (let x = 0; x < W; x++) {
+      const bx = x + offsetX, by = y + offsetY;
+      if (bx < 0 || by < 0 || bx >= W || by >= H) continue;
+      max = Math.max(max, Math.abs(a.at(x, y)[0] - b.at(bx, by)[0]));
+    }
+  }
+  return max;
+}
+
+describe('every change shows in the very next frame', () => {
+  it('moving, disabling, re-enabling and removing a hull', () => {
+    renderer.addLight(new PointLight({ position: [20, 32], range: 90, radius: 2 }));
+    const hull = renderer.addHull(new Hull(box()));
+    expect(dark(frame())).toBe(true);
+    hull.position = [0, 30];
+    expect(lit(frame())).toBe(true);
+    hull.position = [0, 0];
+    expect(dark(frame())).toBe(true);
+    hull.enabled = false;
+    expect(lit(frame())).toBe(true);
+    hull.enabled = true;
+    expect(dark(frame())).toBe(true);
+    renderer.removeHull(hull);
+    expect(lit(frame())).toBe(true);
+  });
+
+  it('reshaping a hull', () => {
+    renderer.addLight(new PointLight({ position: [20, 32], range: 90 }));
+    const hull = renderer.addHull(new Hull(box()));
+    expect(dark(frame())).toBe(true);
+    hull.points = [[40, 10], [48, 10], [48, 20], [40, 20]];
+    expect(lit(frame())).toBe(true);
+  });
+
+  it('for a light that was disabled, or off screen, while the hull changed', () => {
+    const light = renderer.addLight(new PointLight({ position: [20, 32], range: 90, radius: 2 }));
+    const hull = renderer.addHull(new Hull(box()));
+    expect(dark(frame())).toBe(true);
+    light.enabled = false;
+    frame();
+    hull.position = [0, 30];
+    frame();
+    light.enabled = true;
+    expect(lit(frame())).toBe(true);
+
+    light.position = [-500, 32];
+    frame();
+    hull.position = [0, 0];
+    frame();
+    light.position = [20, 32];
+    expect(dark(frame())).toBe(true);
+  });
+
+  it('an invalid hull is ignored until its points are fixed', () => {
+    renderer.addLight(new PointLight({ position: [20, 32], range: 90 }));
+    const hull = renderer.addHull(new Hull([[40, 26], [48, 38], [48, 26], [40, 38]])); // bow tie
+    expect(hull.valid).toBe(false);
+    expect(lit(frame())).toBe(true);
+    hull.points = box();
+    expect(hull.valid).toBe(true);
+    expect(dark(frame())).toBe(true);
+  });
+});
+
+describe('lights inside hulls', () => {
+  it('skips a light whose centre is inside a hull, and lets a lamp shine through its ignored housing', () => {
+    const housing = new Hull([[44, 28], [52, 28], [52, 36], [44, 36]]);
+    const lamp = renderer.addLight(new PointLight({ position: [48, 32], range: 30 }));
+    renderer.addHull(housing);
+    expect(frame().at(60, 32)[0]).toBe(0);
+    expect(renderer.stats.lightsDrawn).toBe(0);
+    lamp.ignoredHulls.add(housing);
+    const lightmap = frame();
+    expect(renderer.stats.lightsDrawn).toBe(1);
+    expect(lightmap.at(60, 32)[0]).toBeCloseTo(1 - 12 / 30, 1);
+    expect(lightmap.at(48, 32)[0]).toBeGreaterThan(0.95);
+  });
+
+  it('still shadows a lamp by the hulls it does not ignore', () => {
+    const housing = new Hull([[44, 28], [52, 28], [52, 36], [44, 36]]);
+    renderer.addLight(new PointLight({ position: [48, 32], range: 40, ignoredHulls: [housing] }));
+    renderer.addHull(housing);
+    renderer.addHull(new Hull([[60, 28], [64, 28], [64, 36], [60, 36]]));
+    const lightmap = frame();
+    expect(lightmap.at(75, 32)[0]).toBe(0);
+    expect(lightmap.at(30, 32)[0]).toBeGreaterThan(0.4);
+  });
+});
+
+describe('transforms', () => {
+  // An asymmetric right triangle; its shadow tells a mirror image apart.
+  const triangle: [number, number][] = [[0, 0], [10, 0], [0, 16]];
+
+  it('a negative-scale hull shadows exactly like its mirror image given as points', () => {
+    renderer.addLight(new PointLight({ position: [20, 32], range: 90, radius: 3 }));
+    const mirrored = renderer.addHull(new Hull(triangle, { position: [50, 24], scale: [-1, 1] }));
+    const viaScale = frame();
+    renderer.removeHull(mirrored);
+    renderer.addHull(new Hull([[50, 24], [40, 24], [50, 40]]));
+    const viaPoints = frame();
+    // Same world polygon, same light: identical up to float rounding of the transform.
+    expect(maxDifference(viaScale, viaPoints)).toBeLessThan(0.002);
+    expect(viaScale.at(80, 24)[0]).toBe(0); // shadow behind it exists
+  });
+
+  it('a custom viewProjection moves light and shadows with the camera', () => {
+    renderer.addLight(new PointLight({ position: [30, 32], range: 50, radius: 3 }));
+    renderer.addHull(new Hull(box()));
+    const still = frame();
+    // Camera moved by (12, 5) world units: world (x, y) shows at pixel (x − 12, y − 5).
+    const projection = mat4.ortho(mat4.create(), 0, W, H, 0, -1, 1);
+    renderer.viewProjection = mat4.translate(mat4.create(), projection, [-12, -5, 0]);
+    const moved = frame();
+    expect(maxDifference(moved, still, 12, 5)).toBeLessThan(0.002);
+    expect(maxDifference(moved, still)).toBeGreaterThan(0.1);
+    renderer.viewProjection = null;
+    expect(maxDifference(frame(), still)).toBe(0);
+  });
+
+  it('a zooming viewProjection scales the lit area', () => {
+    renderer.addLight(new PointLight({ position: [24, 16], range: 10 }));
+    renderer.viewProjection = mat4.scale(mat4.create(), mat4.ortho(mat4.create(), 0, W, H, 0, -1, 1), [2, 2, 1]);
+    const lightmap = frame();
+    // World (24, 16) shows at pixel (48, 32); range 10 world units = 20 pixels.
+    expect(lightmap.at(48, 32)[0]).toBeGreaterThan(0.95);
+    expect(lightmap.at(48 + 15, 32)[0]).toBeCloseTo(1 - 15.5 / 20, 1);
+    expect(lightmap.at(48 + 21, 32)[0]).toBe(0);
+  });
+
+  it('resize reallocates the targets and the default view follows', () => {
+    const small = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0], width: 32, height: 32 });
+    small.addLight(new PointLight({ position: [80, 50], range: 10 }));
+    small.resize(W, H);
+    const lightmap = renderLightmap(gl, small, W, H);
+    expect(lightmap.at(80, 50)[0]).toBeGreaterThan(0.9);
+    expect(lightmap.at(10, 10)[0]).toBe(0);
+    small.dispose();
+  });
+});
