@@ -1,0 +1,195 @@
+import { afterEach, beforeEach, describe, expect, it } from 'vitest';
+import { Hull, PenumbraRenderer, PointLight } from '../../src/index';
+import { createContext, destroyContext, readTexture } from './context';
+
+const W = 64, H = 48;
+
+let gl: WebGL2RenderingContext;
+let renderer: PenumbraRenderer;
+
+beforeEach(() => {
+  gl = createContext(W, H);
+  renderer = new PenumbraRenderer(gl, { ambientColor: [0.1, 0.1, 0.1] });
+  renderer.addLight(new PointLight({ position: [20, 24], range: 50, radius: 3, color: [1.5, 1, 0.5] }));
+  renderer.addHull(new Hull([[36, 18], [42, 18], [42, 30], [36, 30]]));
+});
+
+afterEach(() => {
+  renderer.dispose();
+  expect(gl.getError()).toBe(0);
+  destroyContext(gl);
+});
+
+function colorTarget(): { framebuffer: WebGLFramebuffer; texture: WebGLTexture } {
+  const texture = gl.createTexture()!;
+  gl.bindTexture(gl.TEXTURE_2D, texture);
+  gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, W, H);
+  const framebuffer = gl.createFramebuffer()!;
+  gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
+  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
+  gl.bindTexture(gl.TEXTURE_2D, null);
+  return { framebuffer, texture };
+}
+
+function hostProgram(): WebGLProgram {
+  const shader = (type: number, source: string) => {
+    const s = gl.createShader(type)!;
+    gl.shaderSource(s, source);
+    gl.compileShader(s);
+    return s;
+  };
+  const program = gl.createProgram()!;
+  gl.attachShader(program, shader(gl.VERTEX_SHADER, '#version 300 es\nin vec2 p;\nvoid main() { gl_Position = vec4(p, 0.0, 1.0); }'));
+  gl.attachShader(program, shader(gl.FRAGMENT_SHADER, '#version 300 es\nprecision mediump float;\nout vec4 c;\nvoid main() { c = vec4(1.0); }'));
+  gl.linkProgram(program);
+  return program;
+}
+
+/**
+ * Every piece of state the renderer promises to restore, with the host's GL objects replaced by
+ * their names (so that a renderer object left bound shows as 'renderer object').
+ */
+function snapshot(names: Map<unknown, string>): Record<string, unknown> {
+  const name = (object: unknown) => (object === null ? null : names.get(object) ?? 'renderer object');
+  const active = gl.getParameter(gl.ACTIVE_TEXTURE) as number;
+  const textures: unknown[] = [];
+  for (let unit = 0; unit < 3; unit++) {
+    gl.activeTexture(gl.TEXTURE0 + unit);
+    textures.push(name(gl.getParameter(gl.TEXTURE_BINDING_2D)));
+  }
+  gl.activeTexture(active);
+  const parameter = (p: number) => {
+    const value = gl.getParameter(p);
+    return ArrayBuffer.isView(value) || Array.isArray(value) ? Array.from(value as ArrayLike<unknown>) : value;
+  };
+  return {
+    drawFramebuffer: name(gl.getParameter(gl.DRAW_FRAMEBUFFER_BINDING)),
+    readFramebuffer: name(gl.getParameter(gl.READ_FRAMEBUFFER_BINDING)),
+    viewport: parameter(gl.VIEWPORT),
+    scissorTest: gl.isEnabled(gl.SCISSOR_TEST),
+    scissorBox: parameter(gl.SCISSOR_BOX),
+    blend: gl.isEnabled(gl.BLEND),
+    blendEquations: [parameter(gl.BLEND_EQUATION_RGB), parameter(gl.BLEND_EQUATION_ALPHA)],
+    blendFactors: [gl.BLEND_SRC_RGB, gl.BLEND_DST_RGB, gl.BLEND_SRC_ALPHA, gl.BLEND_DST_ALPHA].map(parameter),
+    blendColor: parameter(gl.BLEND_COLOR),
+    colorMask: parameter(gl.COLOR_WRITEMASK),
+    clearColor: parameter(gl.COLOR_CLEAR_VALUE),
+    depthTest: gl.isEnabled(gl.DEPTH_TEST),
+    stencilTest: gl.isEnabled(gl.STENCIL_TEST),
+    cullFace: gl.isEnabled(gl.CULL_FACE),
+    cullFaceMode: parameter(gl.CULL_FACE_MODE),
+    frontFace: parameter(gl.FRONT_FACE),
+    program: name(gl.getParameter(gl.CURRENT_PROGRAM)),
+    vertexArray: name(gl.getParameter(gl.VERTEX_ARRAY_BINDING)),
+    arrayBuffer: name(gl.getParameter(gl.ARRAY_BUFFER_BINDING)),
+    elementArrayBuffer: name(gl.getParameter(gl.ELEMENT_ARRAY_BUFFER_BINDING)),
+    activeTexture: active,
+    textures,
+  };
+}
+
+/** Sets a host state unlike the renderer's own; returns the names of the host's objects. */
+function setDistinctiveState(withVertexArray: boolean): Map<unknown, string> {
+  const names = new Map<unknown, string>();
+  const target = colorTarget();
+  names.set(target.framebuffer, 'host framebuffer').set(target.texture, 'host target texture');
+  gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
+  gl.viewport(3, 4, 50, 40);
+  gl.enable(gl.SCISSOR_TEST);
+  gl.scissor(1, 2, 30, 20);
+  gl.enable(gl.BLEND);
+  gl.blendEquationSeparate(gl.FUNC_SUBTRACT, gl.FUNC_REVERSE_SUBTRACT);
+  gl.blendFuncSeparate(gl.SRC_COLOR, gl.ONE_MINUS_DST_ALPHA, gl.CONSTANT_ALPHA, gl.ZERO);
+  gl.blendColor(0.25, 0.5, 0.75, 1);
+  gl.colorMask(true, false, true, false);
+  gl.clearColor(0.3, 0.6, 0.9, 0.5);
+  gl.enable(gl.DEPTH_TEST);
+  gl.enable(gl.STENCIL_TEST);
+  gl.enable(gl.CULL_FACE);
+  gl.cullFace(gl.FRONT);
+  gl.frontFace(gl.CW);
+  const program = hostProgram();
+  names.set(program, 'host program');
+  gl.useProgram(program);
+  if (withVertexArray) {
+    const vertexArray = gl.createVertexArray();
+    names.set(vertexArray, 'host vertex array');
+    gl.bindVertexArray(vertexArray);
+  }
+  const arrayBuffer = gl.createBuffer();
+  const elementBuffer = gl.createBuffer();
+  names.set(arrayBuffer, 'host array buffer').set(elementBuffer, 'host element buffer');
+  gl.bindBuffer(gl.ARRAY_BUFFER, arrayBuffer);
+  gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, elementBuffer);
+  for (let unit = 0; unit < 3; unit++) {
+    const texture = gl.createTexture();
+    names.set(texture, `host texture ${unit}`);
+    gl.activeTexture(gl.TEXTURE0 + unit);
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+  }
+  gl.activeTexture(gl.TEXTURE1);
+  return names;
+}
+
+describe('host GL state', () => {
+  for (const withVertexArray of [true, false]) {
+    const variant = withVertexArray ? 'with a host vertex array' : 'on the default vertex array';
+    it(`is restored by beginDraw/draw and renderLightmap, ${variant}`, () => {
+      const names = setDistinctiveState(withVertexArray);
+      const before = snapshot(names);
+      renderer.beginDraw();
+      // Between the two calls the scene target is bound: the snapshot sees renderer objects.
+      expect(snapshot(names).drawFramebuffer).toBe('renderer object');
+      renderer.draw();
+      expect(snapshot(names)).toEqual(before);
+      renderer.renderLightmap();
+      expect(snapshot(names)).toEqual(before);
+      expect(gl.getError()).toBe(0);
+    });
+  }
+});
+
+describe('composite', () => {
+  /** Draws a scene cleared to `scene` through the renderer into a host target; returns its bytes and the lightmap. */
+  function composite(scene: [number, number, number]): { result: Uint8Array; lightmap: Float32Array } {
+    const target = colorTarget();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
+    gl.viewport(0, 0, W, H);
+    renderer.beginDraw();
+    gl.clearColor(scene[0], scene[1], scene[2], 1);
+    gl.clear(gl.COLOR_BUFFER_BIT);
+    renderer.draw();
+    expect(gl.getParameter(gl.DRAW_FRAMEBUFFER_BINDING)).toBe(target.framebuffer);
+    const result = new Uint8Array(W * H * 4);
+    gl.readPixels(0, 0, W, H, gl.RGBA, gl.UNSIGNED_BYTE, result);
+    const lightmap = readTexture(gl, renderer.lightmapTexture, W, H);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.deleteFramebuffer(target.framebuffer);
+    gl.deleteTexture(target.texture);
+    return { result, lightmap };
+  }
+
+  // The host target is RGBA8: one step is 1/255, and rounding the product adds up to half a step.
+  const TOLERANCE = 1.5 / 255;
+
+  it('writes scene × lightmap: a white scene shows the lightmap clamped to 1', () => {
+    const { result, lightmap } = composite([1, 1, 1]);
+    let above1 = 0;
+    for (let i = 0; i < W * H * 4; i += 4) {
+      for (let c = 0; c < 3; c++) expect(Math.abs(result[i + c] / 255 - Math.min(1, lightmap[i + c]))).toBeLessThanOrEqual(TOLERANCE);
+      if (lightmap[i] > 1) above1++;
+    }
+    expect(above1).toBeGreaterThan(0); // the red channel (1.5 × falloff) exceeds 1 near the light
+  });
+
+  it('multiplies a coloured scene by the lightmap', () => {
+    const scene: [number, number, number] = [0.5, 1, 0.25];
+    const { result, lightmap } = composite(scene);
+    // One more step than for white: the scene texture is RGBA8 too, so 0.5 is stored as 128/255.
+    for (let i = 0; i < W * H * 4; i += 4) {
+      for (let c = 0; c < 3; c++) {
+        expect(Math.abs(result[i + c] / 255 - Math.min(1, scene[c] * lightmap[i + c]))).toBeLessThanOrEqual(TOLERANCE + 1 / 255);
+      }
+    }
+  });
+});
