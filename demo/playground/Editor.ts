@@ -1,0 +1,188 @@
+import { Hull } from 'penumbra-gl';
+import { hullContains } from './hullShape';
+import { LIGHT_HANDLE_RADIUS } from './Overlay';
+import type { Playground, Selectable } from './Playground';
+
+/** Keyboard panning speed in CSS pixels per second. */
+const PAN_SPEED = 600;
+/** Clicking this close (CSS pixels) to a new hull's first point closes it. */
+const CLOSE_DISTANCE = 12;
+const PAN_KEYS: Record<string, [number, number]> = {
+  KeyW: [0, 1], ArrowUp: [0, 1], KeyS: [0, -1], ArrowDown: [0, -1],
+  KeyA: [1, 0], ArrowLeft: [1, 0], KeyD: [-1, 0], ArrowRight: [-1, 0],
+};
+
+/** What a single-pointer drag is doing. */
+type Drag =
+  | { kind: 'move'; target: Selectable; offsetX: number; offsetY: number; moved: boolean }
+  | { kind: 'pan' };
+
+/**
+ * Pointer and keyboard editing on the overlay canvas: click to select, drag lights and hulls
+ * (mouse, pen or touch), drag empty space or press W/A/S/D or arrows to pan, wheel or pinch to
+ * zoom, and in hull mode click points to draw a hull (click its first point, double-click or press
+ * Enter to close; Escape cancels). Delete or Backspace removes the selection.
+ */
+export class Editor extends EventTarget {
+  /** World points of the hull being drawn. */
+  readonly draft: [number, number][] = [];
+  /** Whether the hull being drawn would be valid (the renderer's own check). */
+  draftValid = false;
+  private _drawing = false;
+  private readonly pointers = new Map<number, { x: number; y: number }>();
+  private drag: Drag | null = null;
+  private pinchDistance = 0;
+  private readonly keys = new Set<string>();
+  private readonly world: [number, number] = [0, 0];
+
+  constructor(private readonly surface: HTMLElement, private readonly playground: Playground) {
+    super();
+    surface.addEventListener('pointerdown', this.onPointerDown);
+    surface.addEventListener('pointermove', this.onPointerMove);
+    surface.addEventListener('pointerup', this.onPointerUp);
+    surface.addEventListener('pointercancel', this.onPointerUp);
+    surface.addEventListener('dblclick', () => this.finishHull());
+    surface.addEventListener('wheel', this.onWheel, { passive: false });
+    window.addEventListener('keydown', this.onKeyDown);
+    window.addEventListener('keyup', (event) => this.keys.delete(event.code));
+    window.addEventListener('blur', () => this.keys.clear());
+  }
+
+  /** Whether clicks add points to a new hull instead of selecting. Fires `mode` on change. */
+  get drawing(): boolean {
+    return this._drawing;
+  }
+  set drawing(value: boolean) {
+    this._drawing = value;
+    this.draft.length = 0;
+    this.draftValid = false;
+    if (value) this.playground.selection = null;
+    this.dispatchEvent(new Event('mode'));
+  }
+
+  /** Turns the hull being drawn into a hull (even an invalid one: it is kept and shown as invalid). */
+  finishHull(): void {
+    if (!this._drawing || this.draft.length < 3) return;
+    const points = this.draft.slice();
+    this.drawing = false;
+    this.playground.addHull(points);
+  }
+
+  /** Applies held pan keys for `dt` seconds. */
+  update(dt: number): void {
+    for (const code of this.keys) {
+      const direction = PAN_KEYS[code];
+      if (direction) this.playground.camera.panBy(direction[0] * PAN_SPEED * dt, direction[1] * PAN_SPEED * dt);
+    }
+  }
+
+  /** The light or hull under a canvas point (CSS pixels): lights first, topmost first. */
+  pick(x: number, y: number): Selectable | null {
+    const { camera, renderer } = this.playground;
+    const [wx, wy] = camera.screenToWorld(x, y, this.world);
+    const lights = renderer.lights;
+    const reach = LIGHT_HANDLE_RADIUS / camera.zoom;
+    for (let i = lights.length - 1; i >= 0; i--) {
+      const [lx, ly] = lights[i].position;
+      if ((lx - wx) ** 2 + (ly - wy) ** 2 <= reach * reach) return lights[i];
+    }
+    const hulls = renderer.hulls;
+    for (let i = hulls.length - 1; i >= 0; i--) if (hullContains(hulls[i], wx, wy)) return hulls[i];
+    return null;
+  }
+
+  private readonly onPointerDown = (event: PointerEvent): void => {
+    this.surface.setPointerCapture(event.pointerId);
+    this.pointers.set(event.pointerId, { x: event.offsetX, y: event.offsetY });
+    if (this.pointers.size === 2) {
+      this.drag = null;
+      this.pinchDistance = this.pointerSpread().distance;
+      return;
+    }
+    if (this.pointers.size > 2) return;
+    if (this._drawing) {
+      this.addDraftPoint(event.offsetX, event.offsetY);
+      return;
+    }
+    const target = this.pick(event.offsetX, event.offsetY);
+    this.playground.selection = target;
+    if (!target) {
+      this.drag = { kind: 'pan' };
+      return;
+    }
+    const [wx, wy] = this.playground.camera.screenToWorld(event.offsetX, event.offsetY, this.world);
+    this.drag = { kind: 'move', target, offsetX: target.position[0] - wx, offsetY: target.position[1] - wy, moved: false };
+  };
+
+  private readonly onPointerMove = (event: PointerEvent): void => {
+    const previous = this.pointers.get(event.pointerId);
+    if (!previous) return;
+    const dx = event.offsetX - previous.x, dy = event.offsetY - previous.y;
+    previous.x = event.offsetX;
+    previous.y = event.offsetY;
+    const camera = this.playground.camera;
+    if (this.pointers.size === 2) {
+      const { distance, x, y } = this.pointerSpread();
+      camera.panBy(dx / 2, dy / 2);
+      if (this.pinchDistance > 0 && distance > 0) camera.zoomAt(x, y, distance / this.pinchDistance);
+      this.pinchDistance = distance;
+      return;
+    }
+    const drag = this.drag;
+    if (!drag) return;
+    if (drag.kind === 'pan') {
+      camera.panBy(dx, dy);
+      return;
+    }
+    const [wx, wy] = camera.screenToWorld(event.offsetX, event.offsetY, this.world);
+    drag.target.setPosition(wx + drag.offsetX, wy + drag.offsetY);
+    drag.moved = true;
+  };
+
+  private readonly onPointerUp = (event: PointerEvent): void => {
+    this.pointers.delete(event.pointerId);
+    if (this.drag?.kind === 'move' && this.drag.moved) this.playground.changed();
+    if (this.pointers.size === 0) this.drag = null;
+  };
+
+  private readonly onWheel = (event: WheelEvent): void => {
+    event.preventDefault();
+    this.playground.camera.zoomAt(event.offsetX, event.offsetY, Math.exp(-event.deltaY * 0.0015));
+  };
+
+  private readonly onKeyDown = (event: KeyboardEvent): void => {
+    // Typing into the panel's fields must not pan or delete.
+    if (event.target instanceof HTMLInputElement || event.target instanceof HTMLTextAreaElement) return;
+    if (event.code in PAN_KEYS) {
+      this.keys.add(event.code);
+      event.preventDefault();
+    } else if (event.key === 'Enter') {
+      this.finishHull();
+    } else if (event.key === 'Escape') {
+      if (this._drawing) this.drawing = false;
+      else this.playground.selection = null;
+    } else if (event.key === 'Delete' || event.key === 'Backspace') {
+      this.playground.deleteSelection();
+    }
+  };
+
+  private addDraftPoint(x: number, y: number): void {
+    const camera = this.playground.camera;
+    if (this.draft.length >= 3) {
+      const [fx, fy] = camera.worldToScreen(this.draft[0][0], this.draft[0][1], this.world);
+      if (Math.hypot(fx - x, fy - y) <= CLOSE_DISTANCE) {
+        this.finishHull();
+        return;
+      }
+    }
+    const [wx, wy] = camera.screenToWorld(x, y, this.world);
+    this.draft.push([wx, wy]);
+    this.draftValid = new Hull(this.draft).valid;
+  }
+
+  /** Distance between the two active pointers and their midpoint. */
+  private pointerSpread(): { distance: number; x: number; y: number } {
+    const [a, b] = [...this.pointers.values()];
+    return { distance: Math.hypot(a.x - b.x, a.y - b.y), x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 };
+  }
+}

@@ -1,0 +1,186 @@
+import GUI from 'lil-gui';
+import { Hull, ShadowType, Spotlight, TexturedLight, type Light } from 'penumbra-gl';
+import type { Editor } from './Editor';
+import type { Playground } from './Playground';
+import { PRESETS } from './presets';
+
+/** What the panel's buttons do outside the model: files and messages. */
+export interface PanelActions {
+  selectPreset(name: string): void;
+  save(): void;
+  load(): void;
+  showError(message: string): void;
+}
+
+const DEGREES = 180 / Math.PI;
+
+/** `[r, g, b]` in 0..1 ↔ `#rrggbb` for lil-gui's colour picker (channels above 1 show as 1). */
+function toHex(color: readonly number[]): string {
+  return `#${color.map((c) => Math.round(Math.min(1, c) * 255).toString(16).padStart(2, '0')).join('')}`;
+}
+function fromHex(hex: string): [number, number, number] {
+  return [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16) / 255) as [number, number, number];
+}
+
+/** Adds a property to `model` whose reads and writes go through `get` and `set`. */
+function bind<T>(model: Record<string, unknown>, key: string, get: () => T, set: (value: T) => void): void {
+  Object.defineProperty(model, key, { get, set, enumerable: true });
+}
+
+/**
+ * The properties panel (lil-gui): scene settings, presets and files, adding and deleting, and
+ * every property of the selected light or hull, rebuilt when the selection changes.
+ */
+export class Panel {
+  readonly gui = new GUI({ title: 'penumbra-gl playground' });
+  private selectionFolder: GUI | null = null;
+  private readonly settings = { preset: Object.keys(PRESETS)[0] };
+
+  constructor(private readonly playground: Playground, editor: Editor, private readonly actions: PanelActions) {
+    const scene = this.gui.addFolder('Scene');
+    scene.add(this.settings, 'preset', Object.keys(PRESETS)).name('preset').onChange((name: string) => actions.selectPreset(name));
+    const sceneModel: Record<string, unknown> = {};
+    bind(sceneModel, 'ambient', () => toHex(playground.renderer.ambientColor), (hex: string) => {
+      playground.renderer.ambientColor = fromHex(hex);
+      playground.changed();
+    });
+    scene.addColor(sceneModel, 'ambient').listen();
+    scene.add(playground.renderer, 'debug').name('debug wireframe');
+    scene.add(playground, 'animate').name('animate');
+    scene.add(actions, 'save').name('save scene (download)');
+    scene.add(actions, 'load').name('load scene… (or drop a file)');
+
+    const edit = this.gui.addFolder('Add / delete');
+    const buttons = {
+      point: () => playground.addLight('point'),
+      spot: () => playground.addLight('spot'),
+      textured: () => playground.addLight('textured'),
+      hull: () => { editor.drawing = !editor.drawing; },
+      remove: () => playground.deleteSelection(),
+    };
+    edit.add(buttons, 'point').name('add point light');
+    edit.add(buttons, 'spot').name('add spotlight');
+    edit.add(buttons, 'textured').name('add textured light');
+    const drawHull = edit.add(buttons, 'hull').name('draw hull (click points)');
+    editor.addEventListener('mode', () => drawHull.name(editor.drawing ? 'cancel hull (Enter closes)' : 'draw hull (click points)'));
+    edit.add(buttons, 'remove').name('delete selected (Del)');
+
+    playground.addEventListener('selection', () => this.showSelection());
+    this.showSelection();
+  }
+
+  /** Shows a preset's name in the menu without loading it again. */
+  showPreset(name: string): void {
+    this.settings.preset = name;
+    this.gui.controllersRecursive().forEach((controller) => controller.updateDisplay());
+  }
+
+  private showSelection(): void {
+    this.selectionFolder?.destroy();
+    const selected = this.playground.selection;
+    this.selectionFolder = null;
+    if (!selected) return;
+    const folder = this.gui.addFolder(selected instanceof Hull ? 'Selected hull' : `Selected ${selected.kind} light`);
+    this.selectionFolder = folder;
+    if (selected instanceof Hull) this.hullControls(folder, selected);
+    else this.lightControls(folder, selected);
+  }
+
+  /** Binds a field, reporting a rejected value (RangeError naming the field) instead of throwing. */
+  private field<T>(model: Record<string, unknown>, key: string, get: () => T, set: (value: T) => void): void {
+    bind(model, key, get, (value: T) => {
+      try {
+        set(value);
+        this.playground.changed();
+      } catch (error) {
+        this.actions.showError((error as Error).message);
+      }
+    });
+  }
+
+  private lightControls(folder: GUI, light: Light): void {
+    const m: Record<string, unknown> = {};
+    this.field(m, 'enabled', () => light.enabled, (v: boolean) => { light.enabled = v; });
+    this.field(m, 'castsShadows', () => light.castsShadows, (v: boolean) => { light.castsShadows = v; });
+    this.field(m, 'x', () => light.position[0], (v: number) => light.setPosition(v, light.position[1]));
+    this.field(m, 'y', () => light.position[1], (v: number) => light.setPosition(light.position[0], v));
+    this.field(m, 'range', () => light.range, (v: number) => { light.range = v; });
+    this.field(m, 'radius', () => light.radius, (v: number) => { light.radius = v; });
+    this.field(m, 'color', () => toHex(light.color), (v: string) => { light.color = fromHex(v); });
+    this.field(m, 'intensity', () => light.intensity, (v: number) => { light.intensity = v; });
+    this.field(m, 'rotation°', () => light.rotation * DEGREES, (v: number) => { light.rotation = v / DEGREES; });
+    this.field(m, 'originX', () => light.origin[0], (v: number) => { light.origin = [v, light.origin[1]]; });
+    this.field(m, 'originY', () => light.origin[1], (v: number) => { light.origin = [light.origin[0], v]; });
+    this.field(m, 'shadowType', () => light.shadowType, (v: ShadowType) => { light.shadowType = v; });
+    this.field(m, 'ignoredHulls', () => this.hullIndices(light), (v: string) => this.setIgnoredHulls(light, v));
+    folder.add(m, 'enabled').listen();
+    folder.add(m, 'castsShadows').listen();
+    folder.add(m, 'x').listen();
+    folder.add(m, 'y').listen();
+    folder.add(m, 'range', 0, 2000).listen();
+    folder.add(m, 'radius', 0, 100).listen();
+    folder.addColor(m, 'color').listen();
+    folder.add(m, 'intensity', 0, 4).listen();
+    folder.add(m, 'rotation°', -360, 360).listen();
+    folder.add(m, 'originX', -1, 2).listen();
+    folder.add(m, 'originY', -1, 2).listen();
+    folder.add(m, 'shadowType', [ShadowType.Illuminated, ShadowType.Solid]).listen();
+    folder.add(m, 'ignoredHulls').name('ignored hulls (indices)').listen();
+    if (light instanceof Spotlight) {
+      this.field(m, 'coneAngle°', () => light.coneAngle * DEGREES, (v: number) => { light.coneAngle = v / DEGREES; });
+      this.field(m, 'coneDecay', () => light.coneDecay, (v: number) => { light.coneDecay = v; });
+      folder.add(m, 'coneAngle°', 0, 180).listen();
+      folder.add(m, 'coneDecay', 0, 8).listen();
+    }
+    if (light instanceof TexturedLight) {
+      const cookies = this.playground.cookies;
+      this.field(m, 'cookie', () => cookies.nameOf(light.texture), (v: string) => { light.texture = cookies.resolve(v)!; });
+      this.field(m, 'width', () => light.size[0], (v: number) => { light.size = [v, light.size[1]]; });
+      this.field(m, 'height', () => light.size[1], (v: number) => { light.size = [light.size[0], v]; });
+      folder.add(m, 'cookie', [...cookies.names]).listen();
+      folder.add(m, 'width', 0, 2000).listen();
+      folder.add(m, 'height', 0, 2000).listen();
+    }
+  }
+
+  private hullControls(folder: GUI, hull: Hull): void {
+    const m: Record<string, unknown> = {};
+    this.field(m, 'enabled', () => hull.enabled, (v: boolean) => { hull.enabled = v; });
+    this.field(m, 'x', () => hull.position[0], (v: number) => hull.setPosition(v, hull.position[1]));
+    this.field(m, 'y', () => hull.position[1], (v: number) => hull.setPosition(hull.position[0], v));
+    this.field(m, 'originX', () => hull.origin[0], (v: number) => { hull.origin = [v, hull.origin[1]]; });
+    this.field(m, 'originY', () => hull.origin[1], (v: number) => { hull.origin = [hull.origin[0], v]; });
+    this.field(m, 'rotation°', () => hull.rotation * DEGREES, (v: number) => { hull.rotation = v / DEGREES; });
+    this.field(m, 'scaleX', () => hull.scale[0], (v: number) => { hull.scale = [v, hull.scale[1]]; });
+    this.field(m, 'scaleY', () => hull.scale[1], (v: number) => { hull.scale = [hull.scale[0], v]; });
+    this.field(m, 'points', () => JSON.stringify(hull.points), (v: string) => { hull.points = JSON.parse(v); });
+    bind(m, 'valid', () => (hull.valid ? 'valid' : 'INVALID (ignored by the renderer)'), () => undefined);
+    folder.add(m, 'enabled').listen();
+    folder.add(m, 'x').listen();
+    folder.add(m, 'y').listen();
+    folder.add(m, 'originX').listen();
+    folder.add(m, 'originY').listen();
+    folder.add(m, 'rotation°', -360, 360).listen();
+    folder.add(m, 'scaleX', -4, 4).listen();
+    folder.add(m, 'scaleY', -4, 4).listen();
+    folder.add(m, 'points').name('points (JSON)').listen();
+    folder.add(m, 'valid').disable().listen();
+  }
+
+  /** A light's ignored hulls as indices into the renderer's hull list, e.g. `"0, 3"`. */
+  private hullIndices(light: Light): string {
+    const hulls = this.playground.renderer.hulls;
+    return [...light.ignoredHulls].map((hull) => hulls.indexOf(hull)).filter((i) => i >= 0).join(', ');
+  }
+
+  private setIgnoredHulls(light: Light, text: string): void {
+    const hulls = this.playground.renderer.hulls;
+    const chosen = text.split(',').map((s) => s.trim()).filter(Boolean).map((s) => {
+      const hull = hulls[Number(s)];
+      if (!Number.isInteger(Number(s)) || !hull) throw new RangeError(`ignored hulls: "${s}" is not a hull index (0 to ${hulls.length - 1})`);
+      return hull;
+    });
+    light.ignoredHulls.clear();
+    for (const hull of chosen) light.ignoredHulls.add(hull);
+  }
+}

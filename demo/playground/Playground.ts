@@ -1,0 +1,159 @@
+import {
+  createSceneObjects, describeScene, Hull, PenumbraRenderer, PointLight, readScene, Spotlight, TexturedLight,
+  type Light, type SceneDocument,
+} from 'penumbra-gl';
+import { Camera } from './Camera';
+import { Cookies } from './Cookies';
+import { SceneArt, type Sprite } from './SceneArt';
+
+/** What can be selected and edited. */
+export type Selectable = Light | Hull;
+/** Kinds of light the page can add. */
+export type NewLightKind = 'point' | 'spot' | 'textured';
+
+/** Spotlights sweep this far (radians) either side when animation is on. */
+const SWEEP = 0.5;
+
+/**
+ * The playground's model: the renderer with its lights and hulls, the camera, the selection and
+ * the art. Fires `scene` when the scene was edited or replaced and `selection` when the selection
+ * changed; the animation changes the scene without firing (it is not an edit).
+ */
+export class Playground extends EventTarget {
+  readonly camera = new Camera();
+  readonly renderer: PenumbraRenderer;
+  readonly cookies: Cookies;
+  /** Whether spotlights sweep and walkers walk. */
+  animate = true;
+  private _selection: Selectable | null = null;
+  private readonly art: SceneArt;
+  private readonly sprites: Sprite[] = [
+    { texture: 'barrel', x: 560, y: 560, size: 44, rotation: 0 },
+    { texture: 'barrel', x: 1240, y: 880, size: 40, rotation: 1 },
+    { texture: 'barrel', x: 150, y: 900, size: 46, rotation: 2 },
+    { texture: 'walker', x: 0, y: 0, size: 56, rotation: 0 },
+    { texture: 'walker', x: 0, y: 0, size: 56, rotation: 0 },
+  ];
+  private readonly view = new Float32Array(4);
+  private time = 0;
+
+  constructor(readonly gl: WebGL2RenderingContext) {
+    super();
+    this.renderer = new PenumbraRenderer(gl);
+    this.cookies = new Cookies(gl);
+    this.art = new SceneArt(gl);
+  }
+
+  get selection(): Selectable | null {
+    return this._selection;
+  }
+  set selection(value: Selectable | null) {
+    if (value === this._selection) return;
+    this._selection = value;
+    this.dispatchEvent(new Event('selection'));
+  }
+
+  /** Tells listeners (storage, panel) that the scene was edited. */
+  changed(): void {
+    this.dispatchEvent(new Event('scene'));
+  }
+
+  /**
+   * Replaces the scene with a scene file's contents. Validates everything and builds every object
+   * before touching the current scene, so on an error (thrown, naming the bad field) nothing changes.
+   */
+  load(source: string | SceneDocument): void {
+    const document = readScene(source);
+    const objects = createSceneObjects(document, this.cookies.resolve);
+    const renderer = this.renderer;
+    for (const light of [...renderer.lights]) renderer.removeLight(light);
+    for (const hull of [...renderer.hulls]) renderer.removeHull(hull);
+    for (const hull of objects.hulls) renderer.addHull(hull);
+    for (const light of objects.lights) renderer.addLight(light);
+    renderer.ambientColor = document.ambient;
+    this.camera.center[0] = document.camera.center[0];
+    this.camera.center[1] = document.camera.center[1];
+    this.camera.zoom = document.camera.zoom;
+    this.selection = null;
+    this.changed();
+  }
+
+  /** The current scene as a scene document. */
+  document(): SceneDocument {
+    const { renderer, camera } = this;
+    return describeScene({
+      lights: [...renderer.lights], hulls: [...renderer.hulls], ambient: renderer.ambientColor,
+      camera: { center: [...camera.center], zoom: camera.zoom }, cookieName: this.cookies.nameOf,
+    });
+  }
+
+  /** Adds a light of `kind` at the centre of the view and selects it. */
+  addLight(kind: NewLightKind): Light {
+    const options = { position: [...this.camera.center] as [number, number], range: 300, radius: 10, color: [1, 0.9, 0.7] as [number, number, number] };
+    const light = kind === 'point' ? new PointLight(options)
+      : kind === 'spot' ? new Spotlight({ ...options, coneAngle: 0.8 })
+        : new TexturedLight({ ...options, texture: this.cookies.resolve('flame')!, size: [500, 500] });
+    this.renderer.addLight(light);
+    this.selection = light;
+    this.changed();
+    return light;
+  }
+
+  /** Adds a hull through world points (placed at their centroid, so it rotates about its middle) and selects it. */
+  addHull(worldPoints: readonly (readonly [number, number])[]): Hull {
+    let cx = 0, cy = 0;
+    for (const [x, y] of worldPoints) {
+      cx += x / worldPoints.length;
+      cy += y / worldPoints.length;
+    }
+    const hull = new Hull(worldPoints.map(([x, y]) => [x - cx, y - cy]), { position: [cx, cy] });
+    this.renderer.addHull(hull);
+    this.selection = hull;
+    this.changed();
+    return hull;
+  }
+
+  /** Removes the selected light or hull (and forgets it in lights' ignored hulls). */
+  deleteSelection(): void {
+    const selected = this._selection;
+    if (!selected) return;
+    if (selected instanceof Hull) {
+      this.renderer.removeHull(selected);
+      for (const light of this.renderer.lights) light.ignoredHulls.delete(selected);
+    } else {
+      this.renderer.removeLight(selected);
+    }
+    this.selection = null;
+    this.changed();
+  }
+
+  /** Advances the animation by `dt` seconds and draws one frame into the canvas. */
+  frame(dt: number): void {
+    const { gl, renderer, camera } = this;
+    this.time += dt;
+    if (this.animate) this.step(dt);
+    this.cookies.update(this.time);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.viewport(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight);
+    const viewProjection = camera.viewProjection();
+    renderer.viewProjection = viewProjection;
+    renderer.beginDraw();
+    this.art.draw(viewProjection, camera.visibleWorld(this.view), renderer.hulls, this.sprites);
+    renderer.draw();
+  }
+
+  /** Sweeps spotlights back and forth and walks the walkers round their loops. */
+  private step(dt: number): void {
+    const t = this.time;
+    // Adding the derivative of a sine keeps each spotlight swinging around its own rotation.
+    const turn = SWEEP * 0.6 * Math.cos(t * 0.6) * dt;
+    for (const light of this.renderer.lights) if (light instanceof Spotlight) light.rotation += turn;
+    for (let i = 0; i < 2; i++) {
+      const walker = this.sprites[3 + i];
+      const angle = t * 0.35 + i * Math.PI;
+      walker.x = 700 + Math.cos(angle) * 330;
+      walker.y = 560 + Math.sin(angle) * 170;
+      walker.rotation = angle + Math.PI / 2;
+    }
+  }
+}

@@ -1,0 +1,105 @@
+import { writeScene } from 'penumbra-gl';
+import { Editor } from './Editor';
+import { acceptDroppedFiles, downloadText, pickTextFile, storedScene, storeScene } from './files';
+import { Overlay } from './Overlay';
+import { Panel } from './Panel';
+import { Playground } from './Playground';
+import { PRESETS } from './presets';
+import { StatsOverlay } from './StatsOverlay';
+import { installTestHook } from './testHook';
+
+/** Edits are kept for the next visit at most this often (the stress scene is a large file). */
+const STORE_INTERVAL_MS = 1000;
+
+const view = document.getElementById('view') as HTMLCanvasElement;
+const gizmos = document.getElementById('gizmos') as HTMLCanvasElement;
+const message = document.getElementById('message') as HTMLElement;
+const gl = view.getContext('webgl2', { antialias: false, alpha: false });
+if (!gl) throw new Error('playground: this browser has no WebGL2');
+
+const playground = new Playground(gl);
+const editor = new Editor(gizmos, playground);
+const overlay = new Overlay(gizmos, playground);
+const stats = new StatsOverlay(document.getElementById('stats') as HTMLElement);
+
+function showError(text: string): void {
+  message.textContent = text;
+  message.hidden = false;
+}
+message.addEventListener('click', () => { message.hidden = true; });
+
+/** Loads a scene file's text; on a bad file shows the error (naming the bad field) and keeps the scene. */
+function loadText(text: string, source: string): boolean {
+  try {
+    playground.load(text);
+    message.hidden = true;
+    return true;
+  } catch (error) {
+    showError(`Could not load ${source}: ${(error as Error).message}`);
+    return false;
+  }
+}
+
+function selectPreset(name: string): void {
+  const preset = PRESETS[name];
+  if (!preset) throw new Error(`playground: no preset named ${name}`);
+  playground.load(preset());
+  panel.showPreset(name);
+}
+
+const panel = new Panel(playground, editor, {
+  selectPreset,
+  save: () => downloadText(writeScene(playground.document()), 'scene.penumbra.json'),
+  load: () => pickTextFile((text, name) => loadText(text, name)),
+  showError,
+});
+acceptDroppedFiles(document.body, (text, name) => loadText(text, name));
+
+// Keep the scene across reloads: edits mark it dirty, a timer writes it, leaving the page flushes it.
+let unsaved = false;
+playground.addEventListener('scene', () => { unsaved = true; });
+function keepScene(): void {
+  if (!unsaved) return;
+  unsaved = false;
+  storeScene(writeScene(playground.document()));
+}
+setInterval(keepScene, STORE_INTERVAL_MS);
+window.addEventListener('pagehide', keepScene);
+
+const stored = storedScene();
+if (!stored || !loadText(stored, 'the scene kept from the last visit')) selectPreset(Object.keys(PRESETS)[0]);
+
+/** Matches both canvases' drawing buffers to their CSS size × devicePixelRatio. */
+function fitCanvases(): number {
+  const dpr = window.devicePixelRatio || 1;
+  const width = Math.max(1, Math.round(view.clientWidth * dpr));
+  const height = Math.max(1, Math.round(view.clientHeight * dpr));
+  playground.camera.width = view.clientWidth || 1;
+  playground.camera.height = view.clientHeight || 1;
+  if (view.width !== width || view.height !== height) {
+    view.width = gizmos.width = width;
+    view.height = gizmos.height = height;
+    playground.renderer.resize(width, height);
+  }
+  return dpr;
+}
+
+let last = performance.now();
+/** Draws one frame; `now` in milliseconds. */
+function frame(now: number): void {
+  const dt = Math.min(0.1, Math.max(0, (now - last) / 1000));
+  last = now;
+  const dpr = fitCanvases();
+  editor.update(dt);
+  playground.frame(dt);
+  overlay.draw(dpr, editor.draft, editor.draftValid);
+  stats.frame(now, playground.renderer.stats);
+}
+
+function loop(now: number): void {
+  frame(now);
+  requestAnimationFrame(loop);
+}
+requestAnimationFrame(loop);
+
+installTestHook({ playground, stats, loadText, selectPreset, frame: () => frame(performance.now()), message });

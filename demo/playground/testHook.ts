@@ -1,0 +1,74 @@
+import { writeScene, type FrameStats } from 'penumbra-gl';
+import type { Playground } from './Playground';
+import { PRESETS } from './presets';
+import type { OverlayFigures, StatsOverlay } from './StatsOverlay';
+
+/** What the page exposes as `window.playground`, so browser tests can drive it without brittle clicks. */
+export interface PlaygroundTestHook {
+  /** Preset names, in menu order. */
+  readonly presets: string[];
+  /** Loads a preset by name. */
+  selectPreset(name: string): void;
+  /** Loads scene-file text as the file picker would; returns whether it loaded (on failure the page shows the error). */
+  loadScene(text: string): boolean;
+  /** The current scene as scene-file text (what "save" downloads). */
+  sceneText(): string;
+  /** The error message shown, or null when none is. */
+  errorMessage(): string | null;
+  /** Turns the animation (spotlight sweep, walkers) on or off, for deterministic pictures. */
+  setAnimation(on: boolean): void;
+  /** The canvas point (CSS pixels) of a world point. */
+  worldToScreen(x: number, y: number): [number, number];
+  /** Draws a frame now and returns the canvas colour (0..255 RGB) at a CSS pixel point. */
+  readPixel(x: number, y: number): [number, number, number];
+  /** `gl.getError()` after a frame: 0 when WebGL reported nothing. */
+  glError(): number;
+  /** The renderer's stats of the last frame. */
+  rendererStats(): FrameStats;
+  /** The overlay's figures (fps, mean CPU time per frame, counts). */
+  overlayFigures(): OverlayFigures;
+}
+
+/** Dependencies of the test hook. */
+export interface TestHookParts {
+  playground: Playground;
+  stats: StatsOverlay;
+  message: HTMLElement;
+  loadText(text: string, source: string): boolean;
+  selectPreset(name: string): void;
+  frame(): void;
+}
+
+declare global {
+  interface Window {
+    playground: PlaygroundTestHook;
+  }
+}
+
+/** Installs `window.playground`. */
+export function installTestHook(parts: TestHookParts): void {
+  const { playground, stats, message } = parts;
+  const gl = playground.gl;
+  const pixel = new Uint8Array(4);
+  window.playground = {
+    presets: Object.keys(PRESETS),
+    selectPreset: parts.selectPreset,
+    loadScene: (text) => parts.loadText(text, 'the scene'),
+    sceneText: () => writeScene(playground.document()),
+    errorMessage: () => (message.hidden ? null : message.textContent),
+    setAnimation: (on) => { playground.animate = on; },
+    worldToScreen: (x, y) => playground.camera.worldToScreen(x, y, [0, 0]),
+    readPixel(x, y) {
+      parts.frame();
+      const scale = gl.drawingBufferWidth / playground.camera.width;
+      gl.readPixels(Math.floor(x * scale), gl.drawingBufferHeight - 1 - Math.floor(y * scale), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+      return [pixel[0], pixel[1], pixel[2]];
+    },
+    glError() {
+      parts.frame();
+      return gl.getError();
+    },
+    rendererStats: () => ({ ...playground.renderer.stats }),
+    overlayFigures: () => ({ ...stats.figures }),
+  };
+}
