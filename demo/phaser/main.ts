@@ -1,0 +1,104 @@
+// Phaser 4 example: a character with a flashlight aimed at the mouse, walking (WASD / arrows)
+// through walls that cast soft shadows, with a few lamps. The HUD sits above the lighting layer.
+import Phaser from 'phaser';
+import { DEFAULT_LAYER_DEPTH, Hull, PenumbraPlugin, PointLight, Spotlight } from 'penumbra-gl/phaser';
+import {
+  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, VIEW_HEIGHT, VIEW_WIDTH, WALLS,
+  WORLD_HEIGHT, WORLD_WIDTH, ZOOM, cameraScroll, moveWithCollisions, readPixels, waitFrames,
+} from '../examples/level';
+
+class LevelScene extends Phaser.Scene {
+  declare penumbra: PenumbraPlugin;
+  private readonly position: [number, number] = [PLAYER_START[0], PLAYER_START[1]];
+  private readonly direction: [number, number] = [0, 0];
+  private readonly scroll: [number, number] = [0, 0];
+  private readonly keys = new Keys(window);
+  private player!: Phaser.GameObjects.Graphics;
+  private flashlight!: Spotlight;
+
+  create(): void {
+    const floor = this.add.graphics();
+    const tile = 40;
+    for (let y = 0; y < WORLD_HEIGHT; y += tile) {
+      for (let x = 0; x < WORLD_WIDTH; x += tile) {
+        floor.fillStyle(((x + y) / tile) % 2 === 0 ? 0x9a9a9a : 0x8c8c8c).fillRect(x, y, tile, tile);
+      }
+    }
+    const walls = this.add.graphics().fillStyle(0x8a7f72);
+    for (const [x, y, w, h] of WALLS) {
+      walls.fillRect(x, y, w, h);
+      this.penumbra.addHull(new Hull([[0, 0], [w, 0], [w, h], [0, h]], { position: [x, y] }));
+    }
+    for (const lamp of LAMPS) {
+      this.penumbra.addLight(new PointLight({ position: lamp.position, color: lamp.color, range: 220, radius: 8, intensity: 1.2 }));
+      this.add.graphics().fillStyle(0xffffff).fillCircle(lamp.position[0], lamp.position[1], 5);
+    }
+    this.player = this.add.graphics().fillStyle(0xe8d8b0).fillCircle(0, 0, PLAYER_RADIUS).fillStyle(0x444444).fillRect(4, -3, 12, 6);
+    this.flashlight = this.penumbra.addLight(new Spotlight({ range: 320, radius: 3, coneAngle: Math.PI / 3.5, coneDecay: 0.6, intensity: 1.3, color: [1, 0.95, 0.8] }));
+    this.penumbra.penumbra.ambientColor = [0.08, 0.08, 0.12];
+    this.cameras.main.setZoom(ZOOM).setOrigin(0, 0);
+
+    // Above the lighting layer: unlit.
+    const hud = this.add.container(0, 0).setScrollFactor(0).setDepth(DEFAULT_LAYER_DEPTH + 1);
+    hud.add(this.add.graphics().fillStyle(HUD_COLOR).fillRect(8, 8, 28, 28));
+    hud.add(this.add.text(44, 12, 'WASD / arrows to move, mouse to aim', { color: '#ffffff', fontSize: '14px' }));
+    hud.setScale(1 / ZOOM);
+    this.exposeTestHook();
+  }
+
+  override update(_time: number, delta: number): void {
+    this.step(Math.min(delta, 50) / 1000);
+  }
+
+  private step(seconds: number): void {
+    const { position, direction, scroll } = this;
+    this.keys.direction(direction);
+    moveWithCollisions(position, direction[0] * PLAYER_SPEED * seconds, direction[1] * PLAYER_SPEED * seconds);
+    cameraScroll(position, scroll);
+    this.cameras.main.setScroll(scroll[0], scroll[1]);
+    const pointer = this.input.activePointer;
+    const aim = Math.atan2(pointer.y / ZOOM + scroll[1] - position[1], pointer.x / ZOOM + scroll[0] - position[0]);
+    this.player.setPosition(position[0], position[1]).setRotation(aim);
+    this.flashlight.setPosition(position[0], position[1]);
+    this.flashlight.rotation = aim;
+  }
+
+  private exposeTestHook(): void {
+    const renderer = this.game.renderer as Phaser.Renderer.WebGL.WebGLRenderer;
+    const gl = renderer.gl as WebGL2RenderingContext;
+    window.penumbraExample = {
+      setPlayer: (x, y) => {
+        this.position[0] = x;
+        this.position[1] = y;
+        this.step(0);
+      },
+      renderAndRead: (points) => {
+        this.step(0);
+        // One full game step (update and render) now, then read before the browser presents.
+        this.game.step(performance.now(), 0);
+        return readPixels(gl, points);
+      },
+      frames: waitFrames,
+      removeLighting: () => {
+        this.plugins.removeScenePlugin('PenumbraPlugin');
+        this.penumbra.destroy();
+        return gl.getError() === gl.NO_ERROR;
+      },
+    };
+  }
+}
+
+// Phaser 4 creates a WebGL1 context by default; the lighting needs WebGL2, which Phaser accepts.
+const canvas = document.createElement('canvas');
+document.body.appendChild(canvas);
+const context = canvas.getContext('webgl2', { antialias: false, alpha: true })!;
+new Phaser.Game({
+  type: Phaser.WEBGL,
+  canvas,
+  context: context as unknown as CanvasRenderingContext2D,
+  width: VIEW_WIDTH,
+  height: VIEW_HEIGHT,
+  backgroundColor: '#000000',
+  scene: LevelScene,
+  plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra' }] },
+});

@@ -1,0 +1,126 @@
+import Phaser from 'phaser';
+import { mat4 } from 'gl-matrix';
+import { PenumbraRenderer, type Hull, type Light } from '../../index';
+import { setViewProjection, type Affine2D } from '../viewProjection';
+
+/** Depth of the lighting layer unless changed: objects above it (the HUD) stay unlit. */
+export const DEFAULT_LAYER_DEPTH = 1000;
+
+/**
+ * A Phaser 4 scene plugin: `this.penumbra.addLight(…)` inside a scene. Install it in the game
+ * config with `plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra' }] }`.
+ *
+ * It adds a lighting layer to the scene's display list, at depth {@link DEFAULT_LAYER_DEPTH}:
+ * everything the camera drew below that depth is multiplied by the lightmap, what is drawn
+ * above it (the HUD) stays unlit. Lights and hulls are in world units: the camera's scroll,
+ * zoom and rotation are honoured. The layer is an `Extern`, Phaser's own hook for foreign GL
+ * code, so Phaser yields the context before and rebinds its state after. On scene shutdown the
+ * lights and hulls are dropped; when the scene or the plugin is destroyed the GL resources are freed.
+ */
+export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
+  private renderer: PenumbraRenderer | null = null;
+  private extern: Phaser.GameObjects.Extern | null = null;
+  private readonly viewProjection = mat4.create();
+  private readonly camera: Affine2D = { a: 1, b: 0, c: 0, d: 1, tx: 0, ty: 0 };
+  private targetWidth = 0;
+  private targetHeight = 0;
+
+  /** The core renderer: ambient colour, debug wireframe, stats, lights and hulls. */
+  get penumbra(): PenumbraRenderer {
+    if (!this.renderer) throw new Error('penumbra: the plugin is not booted or was destroyed');
+    return this.renderer;
+  }
+
+  /** The lighting layer: set its depth to choose what is lit (below) and what is not (above). */
+  get layer(): Phaser.GameObjects.Extern {
+    if (!this.extern) throw new Error('penumbra: the lighting layer exists only while the scene runs');
+    return this.extern;
+  }
+
+  /** Adds a light in world units; see {@link PenumbraRenderer.addLight}. */
+  addLight<T extends Light>(light: T): T {
+    return this.penumbra.addLight(light);
+  }
+  /** Removes a light; returns whether it was there. */
+  removeLight(light: Light): boolean {
+    return this.penumbra.removeLight(light);
+  }
+  /** Adds a hull in world units; see {@link PenumbraRenderer.addHull}. */
+  addHull(hull: Hull): Hull {
+    return this.penumbra.addHull(hull);
+  }
+  /** Removes a hull; returns whether it was there. */
+  removeHull(hull: Hull): boolean {
+    return this.penumbra.removeHull(hull);
+  }
+
+  /** Called by Phaser once, when the scene boots. @internal */
+  override boot(): void {
+    const renderer = this.game!.renderer as Partial<Phaser.Renderer.WebGL.WebGLRenderer>;
+    if (!renderer.gl) throw new TypeError('penumbra: PenumbraPlugin needs Phaser\'s WebGL renderer (type: Phaser.WEBGL)');
+    // Phaser 4 types its context as WebGL1; PenumbraRenderer checks for WebGL2 itself.
+    this.renderer = new PenumbraRenderer(renderer.gl as WebGL2RenderingContext);
+    this.targetWidth = renderer.gl.drawingBufferWidth;
+    this.targetHeight = renderer.gl.drawingBufferHeight;
+    const events = this.systems!.events;
+    events.on(Phaser.Scenes.Events.START, this.onStart, this);
+    events.on(Phaser.Scenes.Events.SHUTDOWN, this.onShutdown, this);
+    events.once(Phaser.Scenes.Events.DESTROY, this.destroy, this);
+  }
+
+  /** Frees the GL resources; safe to call twice. */
+  override destroy(): void {
+    const events = this.systems?.events;
+    events?.off(Phaser.Scenes.Events.START, this.onStart, this);
+    events?.off(Phaser.Scenes.Events.SHUTDOWN, this.onShutdown, this);
+    events?.off(Phaser.Scenes.Events.DESTROY, this.destroy, this);
+    this.extern?.destroy();
+    this.extern = null;
+    this.renderer?.dispose();
+    this.renderer = null;
+    super.destroy();
+  }
+
+  private onStart(): void {
+    const extern = this.scene!.add.extern();
+    extern.setDepth(DEFAULT_LAYER_DEPTH);
+    extern.render = this.renderLayer;
+    this.extern = extern;
+  }
+
+  private onShutdown(): void {
+    this.extern = null;
+    const penumbra = this.renderer;
+    if (!penumbra) return;
+    for (let i = penumbra.lights.length - 1; i >= 0; i--) penumbra.removeLight(penumbra.lights[i]);
+    for (let i = penumbra.hulls.length - 1; i >= 0; i--) penumbra.removeHull(penumbra.hulls[i]);
+  }
+
+  /** The Extern's render: `calcMatrix` is world → drawing context, since the layer sits at the origin. */
+  private readonly renderLayer = (
+    _renderer: Phaser.Renderer.WebGL.WebGLRenderer,
+    context: Phaser.Renderer.WebGL.DrawingContext,
+    calcMatrix: Phaser.GameObjects.Components.TransformMatrix,
+  ): void => {
+    const penumbra = this.renderer;
+    if (!penumbra) return;
+    // Binds the context's framebuffer and viewport, which the lighting reads and writes.
+    context.beginDraw();
+    if (context.width !== this.targetWidth || context.height !== this.targetHeight) {
+      this.targetWidth = context.width;
+      this.targetHeight = context.height;
+      penumbra.resize(context.width, context.height);
+    }
+    const camera = this.camera;
+    camera.a = calcMatrix.a;
+    camera.b = calcMatrix.b;
+    camera.c = calcMatrix.c;
+    camera.d = calcMatrix.d;
+    camera.tx = calcMatrix.e;
+    camera.ty = calcMatrix.f;
+    // Phaser draws framebuffer contexts (camera filters) upside down, the canvas right side up.
+    setViewProjection(this.viewProjection, context.width, context.height, !context.useCanvas, camera);
+    penumbra.viewProjection = this.viewProjection;
+    penumbra.drawInPlace();
+  };
+}

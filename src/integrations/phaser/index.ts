@@ -1,0 +1,6 @@
+/**
+ * Phaser 4 integration of penumbra-gl: `import { PenumbraPlugin } from 'penumbra-gl/phaser'`.
+ * Re-exports the core API so that one import is enough.
+ */
+export { PenumbraPlugin, DEFAULT_LAYER_DEPTH } from './PenumbraPlugin';
+export * from '../../index';

@@ -1,0 +1,3 @@
+import { describeExample } from './exampleSuite';
+
+describeExample('Phaser example', 'phaser/');
