@@ -1,7 +1,8 @@
 #version 300 es
 // Shadow mask, vertex stage: turns each hull edge into a quad that covers every point the edge can
-// hide any part of the light disk from. The two far corners go to infinity (w = 0) along the outer
-// tangents of the disk through the edge's end points; the scissor rectangle bounds them.
+// hide any part of the light disk from. The two far corners are pushed along the outer tangents of
+// the disk through the edge's end points, far beyond the light's bounds (the scissor cuts them).
+// They stay finite rather than at w = 0: SwiftShader culls every triangle with a w = 0 vertex.
 precision highp float;
 
 layout(location = 0) in vec4 a_segment; // edge start (xy) and end (zw), world units
@@ -11,6 +12,7 @@ layout(location = 2) in vec2 a_hull;    // first point and point count of the ed
 uniform mat4 u_viewProjection;
 uniform vec2 u_lightPosition;
 uniform float u_lightRadius;
+uniform float u_projectionLength; // well beyond the light's bounds, see ShadowMaskPass
 
 flat out ivec2 v_hull;
 
@@ -26,7 +28,6 @@ void main() {
   vec2 along = other - point;
   float away = -sign(direction.x * along.y - direction.y * along.x) * sine;
   vec2 tangent = vec2(direction.x * cosine - direction.y * away, direction.x * away + direction.y * cosine);
-  vec4 world = a_corner.y > 0.5 ? vec4(tangent, 0.0, 0.0) : vec4(point, 0.0, 1.0);
-  gl_Position = u_viewProjection * world;
+  gl_Position = u_viewProjection * vec4(point + tangent * (a_corner.y * u_projectionLength), 0.0, 1.0);
   v_hull = ivec2(a_hull);
 }

@@ -4,6 +4,7 @@ import { createProgram, type Program } from '../gl/program';
 import type { UnitQuad } from '../gl/UnitQuad';
 import type { GeometryBuffers } from './GeometryBuffers';
 import { shaderSources } from './shaders';
+import { projectionLength } from './ShadowMaskPass';
 
 /**
  * Debug pass: over the composited image, outlines each drawn light's quad (yellow) and draws its
@@ -35,6 +36,7 @@ export class DebugPass {
       gl.uniformMatrix4fv(shadowUniforms.u_viewProjection, false, viewProjection);
       gl.uniform2f(shadowUniforms.u_lightPosition, draw.light.position[0], draw.light.position[1]);
       gl.uniform1f(shadowUniforms.u_lightRadius, draw.light.radius);
+      gl.uniform1f(shadowUniforms.u_projectionLength, projectionLength(draw.bounds));
       gl.uniform4f(shadowUniforms.u_color, 1, 0, 1, 1);
       gl.bindVertexArray(buffers.edgeVertexArray);
       // Index order per edge quad is (0 1 2)(2 3 0): as lines that gives the edge and the ray from its start.

@@ -5,6 +5,15 @@ import { RenderTarget } from '../gl/RenderTarget';
 import type { GeometryBuffers } from './GeometryBuffers';
 import { shaderSources } from './shaders';
 
+/**
+ * How far the far corners of a shadow quad are pushed: many times the light's bounds diagonal, so
+ * that even when the two tangents of a long edge diverge widely the quad's far side stays outside
+ * the scissor rectangle.
+ */
+export function projectionLength(bounds: Float64Array): number {
+  return 64 * Math.hypot(bounds[2] - bounds[0], bounds[3] - bounds[1]);
+}
+
 /** Texture unit the shadow-mask pass reads hull points from. */
 const POINTS_UNIT = 0;
 
@@ -42,6 +51,7 @@ export class ShadowMaskPass {
     gl.uniform2f(uniforms.u_targetSize, this.target.width, this.target.height);
     gl.uniform2f(uniforms.u_lightPosition, draw.light.position[0], draw.light.position[1]);
     gl.uniform1f(uniforms.u_lightRadius, draw.light.radius);
+    gl.uniform1f(uniforms.u_projectionLength, projectionLength(draw.bounds));
     gl.uniform1i(uniforms.u_hullPoints, POINTS_UNIT);
     gl.activeTexture(gl.TEXTURE0 + POINTS_UNIT);
     gl.bindTexture(gl.TEXTURE_2D, buffers.pointsTexture);
