@@ -413,7 +413,10 @@ export class PenumbraRenderer {
 
   private readonly onContextRestored = (): void => {
     this.contextLost = false;
-    if (!this.disposed) this.createResources();
+    if (this.disposed) return;
+    // A restored context starts with no extension enabled: the half-float lightmap needs its one again.
+    if (this.lightmapFormat === 'rgba16f') supportsFloatTargets(this.gl);
+    this.createResources();
   };
 }
 

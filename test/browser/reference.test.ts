@@ -1,0 +1,83 @@
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import type { Browser, Page } from 'puppeteer';
+import { build } from 'vite';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { lightmapToWorldRows } from '../reference/buildScene';
+import { compareToReference, formatErrorTable, type SceneErrors } from '../reference/compareToReference';
+import { REFERENCE_SCENES, type ReferenceScene } from '../reference/scenes';
+import { computeReference } from '../reference/softShadowReference';
+import { collectPageErrors, launchChromium } from './chromium';
+import { serveDirectory, type StaticServer } from './staticServer';
+
+// The same targets as on headless-gl (test/gl/reference.test.ts), in units of full light.
+const MEAN_LIMIT = 0.01;
+const P99_LIMIT = 0.05;
+
+let outDir: string;
+let server: StaticServer;
+let browser: Browser;
+let page: Page;
+let pageErrors: string[];
+const figures: { scene: string; errors: SceneErrors }[] = [];
+
+/** What test/browser/reference-page/main.ts puts on `window`. */
+interface ReferencePage {
+  renderScene(scene: ReferenceScene): number[];
+  renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before: number[]; after: number[]; lostFrameError: string | null }>;
+}
+
+beforeAll(async () => {
+  outDir = mkdtempSync(join(tmpdir(), 'penumbra-reference-page-'));
+  await build({
+    configFile: false,
+    root: resolve(import.meta.dirname, 'reference-page'),
+    base: './',
+    logLevel: 'warn',
+    build: { outDir, emptyOutDir: true },
+  });
+  server = await serveDirectory(outDir);
+  browser = await launchChromium();
+  page = await browser.newPage();
+  pageErrors = collectPageErrors(page);
+  await page.goto(server.url, { waitUntil: 'load' });
+  await page.waitForFunction(() => 'renderScene' in window);
+});
+
+afterAll(async () => {
+  console.log(formatErrorTable('Chromium (SwiftShader) lightmap vs CPU reference (error in units of full light)', figures));
+  await browser?.close();
+  await server?.close();
+  if (outDir) rmSync(outDir, { recursive: true, force: true });
+});
+
+describe('reference scenes in Chromium', () => {
+  for (const scene of REFERENCE_SCENES) {
+    it(`matches the disk-sampling reference: ${scene.name}`, async () => {
+      const texels = await page.evaluate((s) => (window as unknown as ReferencePage).renderScene(s), scene);
+      const errors = compareToReference(scene, lightmapToWorldRows(texels, scene.width, scene.height), computeReference(scene));
+      figures.push({ scene: scene.name, errors });
+      expect(pageErrors).toEqual([]);
+      expect(errors.all.mean).toBeLessThanOrEqual(MEAN_LIMIT);
+      expect(errors.all.p99).toBeLessThanOrEqual(P99_LIMIT);
+    });
+  }
+
+  it('draws the same light again after the context is lost and restored, keeping lights and hulls', async () => {
+    const scene = REFERENCE_SCENES.find((s) => s.name.startsWith('two hulls'))!;
+    const { before, after, lostFrameError } = await page.evaluate(
+      (s) => (window as unknown as ReferencePage).renderAcrossContextLoss(s), scene);
+    expect(lostFrameError).toBeNull();
+    expect(pageErrors).toEqual([]);
+    const reference = computeReference(scene);
+    const restored = compareToReference(scene, lightmapToWorldRows(after, scene.width, scene.height), reference);
+    expect(restored.all.mean).toBeLessThanOrEqual(MEAN_LIMIT);
+    expect(restored.all.p99).toBeLessThanOrEqual(P99_LIMIT);
+    // Same scene on rebuilt resources: the same pixels.
+    let largest = 0;
+    for (let i = 0; i < before.length; i++) largest = Math.max(largest, Math.abs(before[i] - after[i]));
+    expect(largest).toBeLessThan(1e-6);
+    expect(restored.umbra.pixels).toBeGreaterThan(0);
+  });
+});
