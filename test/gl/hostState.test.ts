@@ -1,6 +1,7 @@
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
 import { Hull, PenumbraRenderer, PointLight } from '../../src/index';
-import { createContext, destroyContext, readTexture } from './context';
+import { createContext, destroyContext } from './context';
+import { readTexture } from './readTexture';
 
 const W = 64, H = 48;
 

@@ -1,6 +1,6 @@
 import type { PenumbraRenderer } from '../../src/index';
 import { lightmapToWorldRows } from '../reference/buildScene';
-import { readTexture } from './context';
+import { readTexture } from './readTexture';
 
 /** A lightmap read back, addressed in world pixels (default view: origin top-left, y down). */
 export interface Lightmap {

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { Hull, PenumbraRenderer, PointLight } from '../../src/index';
-import { createContext, destroyContext, readTexture } from './context';
+import { createContext, destroyContext } from './context';
+import { readTexture } from './readTexture';
 
 describe('smoke', () => {
   it('renders a light with a hull', () => {

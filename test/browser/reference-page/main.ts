@@ -2,6 +2,7 @@
 // the lightmaps with the CPU reference on the Node side. Exposes its entry points on `window`.
 import { createSceneRenderer } from '../../reference/buildScene';
 import type { ReferenceScene } from '../../reference/scenes';
+import { readTexture } from '../../gl/readTexture';
 
 const canvas = document.getElementById('canvas') as HTMLCanvasElement;
 
@@ -13,16 +14,9 @@ function context(width: number, height: number): WebGL2RenderingContext {
   return gl;
 }
 
-/** The renderer's lightmap as floats, RGBA rows bottom-up. */
+/** The renderer's lightmap as plain numbers (puppeteer serialises arrays), RGBA rows bottom-up. */
 function readLightmap(gl: WebGL2RenderingContext, texture: WebGLTexture, width: number, height: number): number[] {
-  const framebuffer = gl.createFramebuffer();
-  gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
-  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
-  const pixels = new Float32Array(width * height * 4);
-  gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, pixels);
-  gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-  gl.deleteFramebuffer(framebuffer);
-  return Array.from(pixels);
+  return Array.from(readTexture(gl, texture, width, height));
 }
 
 function renderScene(scene: ReferenceScene): number[] {
