@@ -47,6 +47,14 @@ export const REFERENCE_SCENES: readonly ReferenceScene[] = [
     light: { position: [30, 60], range: 150, radius: 10 }, hulls: [box(60, 30, 10, 22), box(95, 22, 10, 22)] },
   { name: 'light between pillars (r=6)', width: WIDTH, height: HEIGHT,
     light: { position: [80, 60], range: 90, radius: 6 }, hulls: [box(50, 52, 10, 16), box(100, 52, 10, 16)] },
+  // Each post hides only a middle slice of the disk from the pixels far behind both: the renderer
+  // keeps the largest slice there rather than the union (its documented approximation).
+  { name: 'two posts, middle slices (r=12)', width: WIDTH, height: HEIGHT,
+    light: { position: [30, 60], range: 150, radius: 12 }, hulls: [box(70, 54, 3, 3), box(70, 63, 3, 3)] },
+  // The wall's lower face passes through the light disk: seen from the upper part of the disk that
+  // face is a back face, so the pixels just below the wall lose part of the disk.
+  { name: 'wall grazing the disk (r=10)', width: WIDTH, height: HEIGHT,
+    light: { position: [40, 60], range: 150, radius: 10 }, hulls: [box(60, 48, 80, 6)] },
   { name: 'three hulls, hard (r=0)', width: WIDTH, height: HEIGHT,
     // Off the pixel grid: from a light on it, rows of pixel centres line up exactly with a hull corner,
     // where a grazing segment is neither clearly lit nor clearly hidden.
