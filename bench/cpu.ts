@@ -1,0 +1,112 @@
+import { mat4 } from 'gl-matrix';
+import { PenumbraRenderer } from '../src/index';
+import { createContext, destroyContext } from '../test/gl/context';
+import { probeCalls } from './glProbe';
+import { createScene, WORLD_HEIGHT, WORLD_WIDTH, type SceneSpec } from './scenes';
+import { summarize, type Summary } from './stats';
+
+/** What the Node run measures for one scene. */
+export interface CpuResult {
+  /**
+   * The renderer's own JavaScript time per frame, ms: `renderLightmap()` minus the time inside GL
+   * calls. headless-gl rasterizes on the CPU and blocks in the call that needs a finished mask, so
+   * the time inside GL calls is mostly rasterization, which the browser figures account for.
+   */
+  js: Summary;
+  /** Time inside GL calls per frame, ms (driver and software rasterizer). */
+  gl: Summary;
+  /** GL calls per frame made by the renderer. */
+  glCalls: number;
+  /** Heap bytes allocated per frame by `renderLightmap()` in steady state (null when a GC spoiled every attempt). */
+  heapBytesPerFrame: number | null;
+  lightsDrawn: number;
+  edges: number;
+}
+
+export interface CpuOptions {
+  warmup: number;
+  frames: number;
+}
+
+/**
+ * Target size divisor: the JavaScript work (culling, geometry, uploads, submission) is the same at
+ * any resolution, while the software rasterizer's share (excluded from the figure anyway) would
+ * make a 1280×720 run of S4 take hours.
+ */
+const TARGET_DIVISOR = 8;
+
+/** Runs one scene on a headless-gl WebGL2 context, the world mapped onto small targets. */
+export function runCpu(spec: SceneSpec, options: CpuOptions): CpuResult {
+  const width = WORLD_WIDTH / TARGET_DIVISOR, height = WORLD_HEIGHT / TARGET_DIVISOR;
+  const gl = createContext(width, height);
+  const renderer = new PenumbraRenderer(gl, {
+    ambientColor: [0.05, 0.05, 0.05], width, height,
+    viewProjection: mat4.ortho(mat4.create(), 0, WORLD_WIDTH, WORLD_HEIGHT, 0, -1, 1),
+  });
+  const scene = createScene(spec);
+  for (const light of scene.lights) renderer.addLight(light);
+  for (const hull of scene.hulls) renderer.addHull(hull);
+  let frame = 0;
+  const step = () => {
+    scene.step(frame++);
+    // Let the rasterizer drain so a frame does not pay for the previous one.
+    gl.finish();
+  };
+  for (let i = 0; i < options.warmup; i++) {
+    step();
+    renderer.renderLightmap();
+  }
+  const heapBytesPerFrame = measureHeap(renderer, step);
+  const probe = probeCalls(gl);
+  const js: number[] = [], inGL: number[] = [];
+  let calls = 0;
+  for (let i = 0; i < options.frames; i++) {
+    step();
+    probe.reset();
+    const start = performance.now();
+    renderer.renderLightmap();
+    const total = performance.now() - start;
+    js.push(total - probe.time);
+    inGL.push(probe.time);
+    calls += probe.calls;
+  }
+  const result: CpuResult = {
+    js: summarize(js), gl: summarize(inGL), glCalls: calls / options.frames, heapBytesPerFrame,
+    lightsDrawn: renderer.stats.lightsDrawn, edges: renderer.stats.edges,
+  };
+  renderer.dispose();
+  destroyContext(gl);
+  return result;
+}
+
+/**
+ * Heap growth across `renderLightmap()` calls only (the scene's animation is excluded), over
+ * frames during which no garbage collection ran: needs `--expose-gc` and a young generation large
+ * enough (`--max-semi-space-size`) to hold the frames' garbage. A GC shows as a negative step.
+ */
+function measureHeap(renderer: PenumbraRenderer, step: () => void): number | null {
+  const gc = (globalThis as { gc?: () => void }).gc;
+  if (!gc) return null;
+  const frames = 50;
+  for (let attempt = 0; attempt < 3; attempt++) {
+    gc();
+    // Reading the heap allocates the answer object: measured with nothing between and subtracted.
+    let probe = 0;
+    for (let i = 0; i < frames; i++) {
+      const before = process.memoryUsage().heapUsed;
+      probe += process.memoryUsage().heapUsed - before;
+    }
+    let total = 0;
+    let clean = true;
+    for (let i = 0; i < frames; i++) {
+      step();
+      const before = process.memoryUsage().heapUsed;
+      renderer.renderLightmap();
+      const after = process.memoryUsage().heapUsed;
+      if (after < before) clean = false;
+      total += after - before;
+    }
+    if (clean) return Math.max(0, (total - probe) / frames);
+  }
+  return null;
+}

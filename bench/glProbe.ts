@@ -1,0 +1,47 @@
+/** Counts the calls made on a WebGL context and the time spent inside them (bench only). */
+export interface GLProbe {
+  /** Calls since the last {@link GLProbe.reset}. */
+  calls: number;
+  /** Milliseconds spent inside those calls (the driver's share, including any wait for the rasterizer). */
+  time: number;
+  reset(): void;
+}
+
+/**
+ * Wraps every method of `gl` on the instance with a counting, timing forwarder. The forwarders
+ * allocate (rest arguments), so measure the heap before probing a context.
+ */
+export function probeCalls(gl: WebGL2RenderingContext): GLProbe {
+  const probe: GLProbe = { calls: 0, time: 0, reset() { probe.calls = 0; probe.time = 0; } };
+  const target = gl as unknown as Record<string, unknown>;
+  // headless-gl's methods call each other; only the outermost call is the caller's.
+  let depth = 0;
+  for (const name of methodNames(gl)) {
+    const method = target[name] as (...args: unknown[]) => unknown;
+    target[name] = function (this: unknown, ...args: unknown[]) {
+      if (depth > 0) return method.apply(this, args);
+      depth++;
+      const start = performance.now();
+      try {
+        return method.apply(this, args);
+      } finally {
+        probe.time += performance.now() - start;
+        probe.calls++;
+        depth--;
+      }
+    };
+  }
+  return probe;
+}
+
+function methodNames(gl: WebGL2RenderingContext): string[] {
+  const names = new Set<string>();
+  for (let proto: object | null = gl; proto && proto !== Object.prototype; proto = Object.getPrototypeOf(proto)) {
+    for (const name of Object.getOwnPropertyNames(proto)) {
+      if (name === 'constructor' || name.startsWith('_') || names.has(name)) continue;
+      const descriptor = Object.getOwnPropertyDescriptor(proto, name);
+      if (descriptor && typeof descriptor.value === 'function') names.add(name);
+    }
+  }
+  return [...names];
+}

@@ -1,0 +1,93 @@
+// The benchmark runner (built and started by bench/run.mjs): Node CPU figures on headless-gl, then
+// whole-frame and fill-floor times in Chromium; prints a table and writes bench/results/latest.json.
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { cpus } from 'node:os';
+import { resolve } from 'node:path';
+import { launchChromium } from '../test/browser/chromium';
+import { serveDirectory } from '../test/browser/staticServer';
+import { runCpu, type CpuResult } from './cpu';
+import { SCENES } from './scenes';
+import { summarize, type Summary } from './stats';
+import type { BrowserTimes } from './page/main';
+
+interface BrowserResult {
+  frame: Summary;
+  floor: Summary;
+  /** Median frame ÷ median floor. */
+  ratio: number;
+}
+
+interface SceneResult {
+  scene: string;
+  lights: number;
+  hulls: number;
+  node?: CpuResult;
+  browser?: BrowserResult;
+}
+
+const args = new Map(process.argv.slice(2).map((arg) => arg.replace(/^--/, '').split('=') as [string, string]));
+const only = args.get('scenes')?.split(',');
+const scenes = SCENES.filter((scene) => !only || only.includes(scene.name));
+const cpuFrames = Number(args.get('frames') ?? 100);
+const browserFrames = Number(args.get('browser-frames') ?? 10);
+// run.mjs starts the bundle from the repository root.
+const root = process.cwd();
+
+const results: SceneResult[] = scenes.map((spec) => ({ scene: spec.name, lights: spec.lights, hulls: spec.hulls + spec.farHulls }));
+if (!args.has('no-node')) {
+  for (const [i, spec] of scenes.entries()) {
+    process.stderr.write(`node ${spec.name}…\n`);
+    results[i].node = runCpu(spec, { warmup: 20, frames: cpuFrames });
+  }
+}
+if (!args.has('no-browser')) {
+  const server = await serveDirectory(resolve(root, 'bench/.build/page'));
+  const browser = await launchChromium();
+  try {
+    for (const [i, spec] of scenes.entries()) {
+      process.stderr.write(`chromium ${spec.name}…\n`);
+      const page = await browser.newPage();
+      await page.goto(server.url, { waitUntil: 'load' });
+      await page.waitForFunction('window.penumbraBench');
+      const times = await page.evaluate((name, frames) =>
+        (window as unknown as { penumbraBench: { run(n: string, w: number, f: number): BrowserTimes } }).penumbraBench.run(name, 2, frames),
+      spec.name, browserFrames);
+      await page.close();
+      const frame = summarize(times.frame), floor = summarize(times.floor);
+      results[i].browser = { frame, floor, ratio: frame.median / floor.median };
+    }
+  } finally {
+    await browser.close();
+    await server.close();
+  }
+}
+
+const machine = `${cpus()[0]?.model ?? 'unknown CPU'} × ${cpus().length}, Node ${process.version}, no GPU (headless-gl on Mesa, Chromium on SwiftShader)`;
+printTable(results, machine);
+mkdirSync(resolve(root, 'bench/results'), { recursive: true });
+const file = resolve(root, 'bench/results/latest.json');
+writeFileSync(file, JSON.stringify({ date: new Date().toISOString(), machine, cpuFrames, browserFrames, results }, null, 2));
+console.log(`\nwritten ${file}`);
+
+function printTable(rows: SceneResult[], machine: string): void {
+  const ms = (value: number) => value.toFixed(2);
+  const pair = (summary: Summary | undefined) => (summary ? `${ms(summary.median)} / ${ms(summary.p95)}` : '–');
+  const table = [[
+    'scene', 'lights', 'hulls', 'drawn', 'edges', 'node JS ms (med / p95)', 'in GL ms (med)', 'GL calls', 'heap B/frame',
+    'chromium frame ms (med / p95)', 'floor ms (med / p95)', 'frame ÷ floor',
+  ]];
+  for (const row of rows) {
+    table.push([
+      row.scene, String(row.lights), String(row.hulls), String(row.node?.lightsDrawn ?? '–'), String(row.node?.edges ?? '–'),
+      pair(row.node?.js), row.node ? ms(row.node.gl.median) : '–', row.node ? row.node.glCalls.toFixed(0) : '–',
+      row.node?.heapBytesPerFrame == null ? '–' : row.node.heapBytesPerFrame.toFixed(0),
+      pair(row.browser?.frame), pair(row.browser?.floor), row.browser ? row.browser.ratio.toFixed(2) : '–',
+    ]);
+  }
+  const widths = table[0].map((_, column) => Math.max(...table.map((line) => line[column].length)));
+  console.log(`penumbra-gl benchmark — ${machine}`);
+  for (const [n, line] of table.entries()) {
+    console.log(line.map((cell, column) => cell.padEnd(widths[column])).join(' | '));
+    if (n === 0) console.log(widths.map((width) => '-'.repeat(width)).join('-|-'));
+  }
+}

@@ -1,0 +1,112 @@
+import { Hull, PointLight, type Light } from '../src/index';
+
+/** The benchmark world, in pixels (the renderer's default view maps it 1:1 onto a canvas of this size). */
+export const WORLD_WIDTH = 1280;
+export const WORLD_HEIGHT = 720;
+
+/** One benchmark scene: how many lights and hulls, and how many extra hulls lie out of every light's range. */
+export interface SceneSpec {
+  name: string;
+  lights: number;
+  hulls: number;
+  /** Hulls placed beyond the reach of every light (the "sparse" variant). */
+  farHulls: number;
+}
+
+export const SCENES: readonly SceneSpec[] = [
+  { name: 'S1', lights: 8, hulls: 40, farHulls: 0 },
+  { name: 'S2', lights: 32, hulls: 200, farHulls: 0 },
+  { name: 'S3', lights: 128, hulls: 1000, farHulls: 0 },
+  { name: 'S3-sparse', lights: 128, hulls: 1000, farHulls: 10000 },
+  { name: 'S4', lights: 512, hulls: 4000, farHulls: 0 },
+];
+
+/** Every hull whose index is a multiple of this moves or rotates each frame ("one hull in ten"). */
+const MOVING_HULL_STRIDE = 10;
+/** Far hulls start this far right of the world: beyond the longest light range plus its wander. */
+const FAR_OFFSET = 1000;
+
+/** A deterministic scene and its per-frame animation, which allocates nothing. */
+export interface BenchScene {
+  spec: SceneSpec;
+  lights: Light[];
+  hulls: Hull[];
+  /** Moves every light a little and one hull in ten, for frame number `frame`. */
+  step(frame: number): void;
+}
+
+/** Mulberry32: a small seeded generator, so every run builds the same scene. */
+export function seededRandom(seed: number): () => number {
+  let state = seed >>> 0;
+  return () => {
+    state = (state + 0x6d2b79f5) >>> 0;
+    let t = state;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+/** Builds `spec` from `seed`: lights of range 150–350 and radius 5–25; hulls mostly convex (3–5 points), one in eight concave. */
+export function createScene(spec: SceneSpec, seed = 1): BenchScene {
+  const random = seededRandom(seed);
+  const between = (low: number, high: number) => low + (high - low) * random();
+  const lights: Light[] = [];
+  const anchors = new Float64Array(spec.lights * 3);
+  for (let i = 0; i < spec.lights; i++) {
+    const x = between(0, WORLD_WIDTH), y = between(0, WORLD_HEIGHT);
+    anchors.set([x, y, between(0, Math.PI * 2)], i * 3);
+    lights.push(new PointLight({
+      position: [x, y], range: between(150, 350), radius: between(5, 25),
+      color: [between(0.3, 1), between(0.3, 1), between(0.3, 1)], intensity: 0.6,
+    }));
+  }
+  const hulls: Hull[] = [];
+  const hullAnchors: number[] = [];
+  const total = spec.hulls + spec.farHulls;
+  for (let i = 0; i < total; i++) {
+    const far = i >= spec.hulls;
+    const x = far ? WORLD_WIDTH + FAR_OFFSET + between(0, WORLD_WIDTH * 10) : between(0, WORLD_WIDTH);
+    const y = between(0, WORLD_HEIGHT);
+    const rotation = between(0, Math.PI * 2);
+    hulls.push(new Hull(random() < 1 / 8 ? concaveShape(between) : convexShape(between), { position: [x, y], rotation }));
+    hullAnchors.push(x, y, rotation);
+  }
+  const position: [number, number] = [0, 0];
+  return {
+    spec, lights, hulls,
+    step(frame) {
+      for (let i = 0; i < lights.length; i++) {
+        const phase = anchors[i * 3 + 2] + frame * 0.05;
+        lights[i].setPosition(anchors[i * 3] + 12 * Math.cos(phase), anchors[i * 3 + 1] + 12 * Math.sin(phase));
+      }
+      for (let i = 0; i < hulls.length; i += MOVING_HULL_STRIDE) {
+        const phase = frame * 0.03 + i;
+        position[0] = hullAnchors[i * 3] + 6 * Math.sin(phase);
+        position[1] = hullAnchors[i * 3 + 1];
+        hulls[i].position = position;
+        hulls[i].rotation = hullAnchors[i * 3 + 2] + phase;
+      }
+    },
+  };
+}
+
+type Between = (low: number, high: number) => number;
+
+/** A convex polygon of 3–5 points around the origin, 6–14 pixels across its radius. */
+function convexShape(between: Between): [number, number][] {
+  const count = 3 + Math.floor(between(0, 3));
+  const radius = between(6, 14);
+  const points: [number, number][] = [];
+  for (let k = 0; k < count; k++) {
+    const angle = (k + between(-0.25, 0.25)) / count * Math.PI * 2;
+    points.push([radius * Math.cos(angle), radius * Math.sin(angle)]);
+  }
+  return points;
+}
+
+/** An L-shaped concave polygon of 6 points. */
+function concaveShape(between: Between): [number, number][] {
+  const w = between(12, 24), h = between(12, 24), t = between(4, 8);
+  return [[0, 0], [w, 0], [w, t], [t, t], [t, h], [0, h]];
+}
