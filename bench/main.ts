@@ -37,7 +37,9 @@ const results: SceneResult[] = scenes.map((spec) => ({ scene: spec.name, lights:
 if (!args.has('no-node')) {
   for (const [i, spec] of scenes.entries()) {
     process.stderr.write(`node ${spec.name}…\n`);
-    results[i].node = runCpu(spec, { warmup: 20, frames: cpuFrames });
+    const node = runCpu(spec, { warmup: 20, frames: cpuFrames });
+    results[i].node = node;
+    process.stderr.write(`  JS ${node.js.median.toFixed(2)} ms, ${node.glCalls} GL calls, heap ${node.heapBytesPerFrame} B/frame\n`);
   }
 }
 if (!args.has('no-browser')) {
@@ -55,6 +57,7 @@ if (!args.has('no-browser')) {
       await page.close();
       const frame = summarize(times.frame), floor = summarize(times.floor);
       results[i].browser = { frame, floor, ratio: frame.median / floor.median };
+      process.stderr.write(`  frame ${frame.median.toFixed(1)} ms, floor ${floor.median.toFixed(1)} ms\n`);
     }
   } finally {
     await browser.close();
