@@ -54,6 +54,9 @@ interface Resources {
   debug: DebugPass;
 }
 
+/** Clear value of the scene target. */
+const TRANSPARENT = new Float32Array(4);
+
 /** Texture units the passes bind (0..2), saved and restored around every draw. */
 const TEXTURE_UNITS = 3;
 
@@ -211,18 +214,21 @@ export class PenumbraRenderer {
     if (this.disposed || this.contextLost) return;
     const gl = this.gl;
     const resources = this.requireResources();
-    this.compositeDrawFramebuffer = gl.getParameter(gl.DRAW_FRAMEBUFFER_BINDING);
-    this.compositeReadFramebuffer = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING);
-    this.compositeViewport.set(gl.getParameter(gl.VIEWPORT) as Int32Array);
-    this.withHostState(() => {
+    this.enterHostState();
+    try {
+      const host = this.hostState;
+      this.compositeDrawFramebuffer = host.savedDrawFramebuffer;
+      this.compositeReadFramebuffer = host.savedReadFramebuffer;
+      this.compositeViewport.set(host.savedViewport);
       resources.scene.bind();
-      gl.clearColor(0, 0, 0, 0);
-      gl.clearDepth(1);
-      gl.clearStencil(0);
       gl.depthMask(true);
       gl.stencilMask(0xff);
-      gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT | gl.STENCIL_BUFFER_BIT);
-    });
+      // clearBuffer* leaves the clear values alone, so the host's need not be saved.
+      gl.clearBufferfv(gl.COLOR, 0, TRANSPARENT);
+      gl.clearBufferfi(gl.DEPTH_STENCIL, 0, 1, 0);
+    } finally {
+      this.hostState.restore();
+    }
     resources.scene.bind();
     this.drawing = true;
   }
@@ -238,7 +244,8 @@ export class PenumbraRenderer {
     this.drawing = false;
     const gl = this.gl;
     const resources = this.requireResources();
-    this.withHostState(() => {
+    this.enterHostState();
+    try {
       this.renderLightmapInto(resources);
       this.bindCompositeTarget();
       resources.composite.render(resources.scene.texture, resources.light.lightmap.texture);
@@ -247,7 +254,9 @@ export class PenumbraRenderer {
         resources.debug.render(this.plan.draws, this.plan.drawCount, resources.buffers, this._viewProjection,
           v[2] / this.width, v[3] / this.height, v[0], v[1]);
       }
-    });
+    } finally {
+      this.hostState.restore();
+    }
     this.bindCompositeTarget();
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.compositeReadFramebuffer);
   }
@@ -266,11 +275,14 @@ export class PenumbraRenderer {
     const gl = this.gl;
     const resources = this.requireResources();
     const v = this.compositeViewport;
-    this.withHostState(() => {
+    this.enterHostState();
+    try {
       resources.scene.bind();
       gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.compositeDrawFramebuffer);
       gl.blitFramebuffer(v[0], v[1], v[0] + v[2], v[1] + v[3], 0, 0, this.width, this.height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
-    });
+    } finally {
+      this.hostState.restore();
+    }
     this.draw();
   }
 
@@ -278,7 +290,12 @@ export class PenumbraRenderer {
   renderLightmap(): void {
     if (this.disposed || this.contextLost) return;
     const resources = this.requireResources();
-    this.withHostState(() => this.renderLightmapInto(resources));
+    this.enterHostState();
+    try {
+      this.renderLightmapInto(resources);
+    } finally {
+      this.hostState.restore();
+    }
   }
 
   /** Frees every GL resource and forgets lights and hulls. Safe to call twice. */
@@ -356,10 +373,24 @@ export class PenumbraRenderer {
     gl.viewport(v[0], v[1], v[2], v[3]);
   }
 
-  private withHostState(run: () => void): void {
+  /**
+   * Saves the host's state and puts the renderer's neutral one; pair with `hostState.restore()` in
+   * a `finally`. The per-frame paths use this pair directly: a closure would allocate every frame.
+   */
+  private enterHostState(): void {
     this.hostState.save();
     try {
       this.hostState.prepareForRenderer();
+    } catch (error) {
+      this.hostState.restore();
+      throw error;
+    }
+  }
+
+  /** Runs `run` between {@link PenumbraRenderer.enterHostState} and a restore (for calls that are not per frame). */
+  private withHostState(run: () => void): void {
+    this.enterHostState();
+    try {
       run();
     } finally {
       this.hostState.restore();

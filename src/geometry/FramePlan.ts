@@ -1,6 +1,7 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
 import type { Hull } from '../scene/Hull';
 import type { Light } from '../scene/lights';
+import { HullGrid } from './HullGrid';
 import { isInsidePolygon } from './polygon';
 import { scissorOf } from './scissor';
 import { INDICES_PER_EDGE, VERTICES_PER_EDGE, type HullSlot, type ShadowGeometry } from './ShadowGeometry';
@@ -35,6 +36,7 @@ export class FramePlan {
   readonly draws: LightDraw[] = [];
   drawCount = 0;
   private readonly slotsInRange: HullSlot[] = [];
+  private readonly grid = new HullGrid();
 
   build(
     lights: readonly Light[], hulls: readonly Hull[], geometry: ShadowGeometry,
@@ -42,6 +44,7 @@ export class FramePlan {
   ): void {
     this.indexCount = 0;
     this.drawCount = 0;
+    this.grid.build(hulls);
     for (const light of lights) {
       if (!light.enabled || light.intensity === 0 || light.range === 0) continue;
       const draw = this.nextDraw();
@@ -78,12 +81,13 @@ export class FramePlan {
   /** Fills `slotsInRange`; false when the light centre is inside one of them. */
   private findHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
     const light = draw.light;
-    const [lx, ly] = light.position;
-    const b = draw.bounds;
-    for (const hull of hulls) {
-      if (!hull.enabled || !hull.valid || light.ignoredHulls.has(hull)) continue;
+    const lx = light.position[0], ly = light.position[1];
+    const grid = this.grid;
+    const count = grid.search(draw.bounds);
+    for (let i = 0; i < count; i++) {
+      const hull = hulls[grid.found[i]];
+      if (light.ignoredHulls.size > 0 && light.ignoredHulls.has(hull)) continue;
       const h = hull.worldBounds;
-      if (h[0] > b[2] || h[2] < b[0] || h[1] > b[3] || h[3] < b[1]) continue;
       const slot = geometry.slotOf(hull)!;
       if (h[0] <= lx && lx <= h[2] && h[1] <= ly && ly <= h[3]
         && isInsidePolygon(geometry.points, lx, ly, slot.firstPoint, slot.pointCount)) return false;

@@ -6,9 +6,14 @@ const CAPABILITIES = [
 /**
  * A snapshot of the context state the renderer touches, taken before it draws and put back
  * afterwards, so that it can share a context with a host engine. Saved: framebuffers (draw and
- * read), viewport, scissor, the enables above, blend equations/factors/colour, colour/depth/stencil
- * write masks, clear values, program, VAO, array/pixel-unpack buffers, unpack flags, active texture
- * and the 2D texture and sampler bound on each texture unit the renderer uses.
+ * read), viewport, scissor, the enables above, blend equations/factors, colour/depth/stencil write
+ * masks, cull face and front face, program, VAO, array/pixel-unpack buffers, unpack flags, active
+ * texture and the 2D texture and sampler bound on each texture unit the renderer uses.
+ *
+ * Saved once or twice a frame, so it queries only what the renderer changes: it never sets the blend
+ * colour, and clears with `clearBuffer*` rather than through the clear values. The three array
+ * answers of `getParameter` (viewport, scissor box, colour mask) are fresh objects by the WebGL API;
+ * no other allocation happens here.
  */
 export class HostState {
   private readonly enabled = new Uint8Array(CAPABILITIES.length);
@@ -18,14 +23,10 @@ export class HostState {
   private scissorBox: Int32Array = new Int32Array(4);
   private blendEquations = [0, 0];
   private blendFactors = [0, 0, 0, 0];
-  private blendColor: Float32Array = new Float32Array(4);
   private colorMask: boolean[] = [true, true, true, true];
   private depthMask = true;
   private stencilMask = 0;
   private stencilBackMask = 0;
-  private clearColor: Float32Array = new Float32Array(4);
-  private clearDepth = 1;
-  private clearStencil = 0;
   private cullFaceMode = 0;
   private frontFace = 0;
   private program: WebGLProgram | null = null;
@@ -59,14 +60,10 @@ export class HostState {
     this.blendFactors[1] = gl.getParameter(gl.BLEND_DST_RGB);
     this.blendFactors[2] = gl.getParameter(gl.BLEND_SRC_ALPHA);
     this.blendFactors[3] = gl.getParameter(gl.BLEND_DST_ALPHA);
-    this.blendColor = gl.getParameter(gl.BLEND_COLOR);
     this.colorMask = gl.getParameter(gl.COLOR_WRITEMASK);
     this.depthMask = gl.getParameter(gl.DEPTH_WRITEMASK);
     this.stencilMask = gl.getParameter(gl.STENCIL_WRITEMASK);
     this.stencilBackMask = gl.getParameter(gl.STENCIL_BACK_WRITEMASK);
-    this.clearColor = gl.getParameter(gl.COLOR_CLEAR_VALUE);
-    this.clearDepth = gl.getParameter(gl.DEPTH_CLEAR_VALUE);
-    this.clearStencil = gl.getParameter(gl.STENCIL_CLEAR_VALUE);
     this.cullFaceMode = gl.getParameter(gl.CULL_FACE_MODE);
     this.frontFace = gl.getParameter(gl.FRONT_FACE);
     this.program = gl.getParameter(gl.CURRENT_PROGRAM);
@@ -96,7 +93,7 @@ export class HostState {
     gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
     gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, false);
     gl.pixelStorei(gl.UNPACK_ROW_LENGTH, 0);
-    for (const capability of CAPABILITIES) gl.disable(gl[capability]);
+    for (let i = 0; i < CAPABILITIES.length; i++) gl.disable(gl[CAPABILITIES[i]]);
     gl.colorMask(true, true, true, true);
   }
 
@@ -112,14 +109,10 @@ export class HostState {
     gl.scissor(this.scissorBox[0], this.scissorBox[1], this.scissorBox[2], this.scissorBox[3]);
     gl.blendEquationSeparate(this.blendEquations[0], this.blendEquations[1]);
     gl.blendFuncSeparate(this.blendFactors[0], this.blendFactors[1], this.blendFactors[2], this.blendFactors[3]);
-    gl.blendColor(this.blendColor[0], this.blendColor[1], this.blendColor[2], this.blendColor[3]);
     gl.colorMask(this.colorMask[0], this.colorMask[1], this.colorMask[2], this.colorMask[3]);
     gl.depthMask(this.depthMask);
     gl.stencilMaskSeparate(gl.FRONT, this.stencilMask);
     gl.stencilMaskSeparate(gl.BACK, this.stencilBackMask);
-    gl.clearColor(this.clearColor[0], this.clearColor[1], this.clearColor[2], this.clearColor[3]);
-    gl.clearDepth(this.clearDepth);
-    gl.clearStencil(this.clearStencil);
     gl.cullFace(this.cullFaceMode);
     gl.frontFace(this.frontFace);
     gl.useProgram(this.program);
@@ -138,8 +131,16 @@ export class HostState {
     gl.activeTexture(this.activeTexture);
   }
 
-  /** The framebuffer and viewport saved by the last {@link HostState.save}. */
-  get savedTarget(): { framebuffer: WebGLFramebuffer | null; viewport: Int32Array } {
-    return { framebuffer: this.drawFramebuffer, viewport: this.viewport };
+  /** The draw framebuffer saved by the last {@link HostState.save}. */
+  get savedDrawFramebuffer(): WebGLFramebuffer | null {
+    return this.drawFramebuffer;
+  }
+  /** The read framebuffer saved by the last {@link HostState.save}. */
+  get savedReadFramebuffer(): WebGLFramebuffer | null {
+    return this.readFramebuffer;
+  }
+  /** The viewport `[x, y, width, height]` saved by the last {@link HostState.save}. */
+  get savedViewport(): Int32Array {
+    return this.viewport;
   }
 }

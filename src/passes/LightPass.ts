@@ -17,6 +17,7 @@ const COOKIE_UNIT = 2;
 export class LightPass {
   readonly lightmap: RenderTarget;
   private readonly programs: Record<LightKind, Program>;
+  private readonly clearValue = new Float32Array(4);
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly quad: UnitQuad, format: TargetFormat, width: number, height: number) {
     this.programs = {
@@ -36,8 +37,13 @@ export class LightPass {
     const gl = this.gl;
     this.lightmap.bind();
     gl.disable(gl.SCISSOR_TEST);
-    gl.clearColor(ambient[0], ambient[1], ambient[2], 1);
-    gl.clear(gl.COLOR_BUFFER_BIT);
+    const clear = this.clearValue;
+    clear[0] = ambient[0];
+    clear[1] = ambient[1];
+    clear[2] = ambient[2];
+    clear[3] = 1;
+    // clearBufferfv leaves the clear colour alone, so the host's need not be saved.
+    gl.clearBufferfv(gl.COLOR, 0, clear);
   }
 
   /** Adds one light into the lightmap; `shadowMask` is null for a light with nothing to shadow it. */

@@ -14,6 +14,9 @@ export function projectionLength(bounds: Float64Array): number {
   return 64 * Math.hypot(bounds[2] - bounds[0], bounds[3] - bounds[1]);
 }
 
+/** The cleared mask: no part of the disk hidden. */
+const NOTHING_HIDDEN = new Float32Array(4);
+
 /** Texture unit the shadow-mask pass reads hull points from. */
 const POINTS_UNIT = 0;
 
@@ -43,8 +46,7 @@ export class ShadowMaskPass {
     const gl = this.gl;
     const uniforms = this.program.uniforms;
     this.target.bind();
-    gl.clearColor(0, 0, 0, 0);
-    gl.clear(gl.COLOR_BUFFER_BIT);
+    gl.clearBufferfv(gl.COLOR, 0, NOTHING_HIDDEN);
     gl.useProgram(this.program.handle);
     gl.uniformMatrix4fv(uniforms.u_viewProjection, false, viewProjection);
     gl.uniformMatrix4fv(uniforms.u_clipToWorld, false, clipToWorld);

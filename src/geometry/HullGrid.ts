@@ -1,0 +1,144 @@
+import type { Hull } from '../scene/Hull';
+
+/** Smallest cell side, in world units: finer cells cost more cell visits than they save box tests. */
+const MIN_CELL_SIZE = 64;
+/** Most cells per hull: bounds the grid's memory when a few hulls lie far apart. */
+const CELLS_PER_HULL = 4;
+
+/**
+ * A uniform grid over the hulls' world bounds, rebuilt each frame in O(hulls) with a counting sort
+ * into reused typed arrays, so finding the hulls near a light visits only the cells its bounds
+ * overlap instead of every hull. Chosen over a packed R-tree (flatbush): both answer a light's
+ * query in microseconds here, but the R-tree allocates its arrays on every rebuild and its results
+ * on every query.
+ */
+export class HullGrid {
+  private cellSize = MIN_CELL_SIZE;
+  private originX = 0;
+  private originY = 0;
+  private columns = 0;
+  private rows = 0;
+  /** Start of each cell's run in `items` (`cells + 1` entries, CSR layout). */
+  private cellStart = new Int32Array(1);
+  /** Hull indices (into the array given to `build`), grouped by cell. */
+  private items = new Int32Array(0);
+  /** Per hull: the number of the last query that reported it, so a hull in many cells is reported once. */
+  private stamps = new Uint32Array(0);
+  private query = 0;
+  private hulls: readonly Hull[] = [];
+  /** Hull indices found by the last {@link HullGrid.search}. */
+  found = new Int32Array(64);
+  foundCount = 0;
+
+  /** Files every enabled, valid hull by the cells its world bounds overlap (world bounds must be up to date). */
+  build(hulls: readonly Hull[]): void {
+    this.hulls = hulls;
+    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity, filed = 0;
+    for (const hull of hulls) {
+      if (!hull.enabled || !hull.valid) continue;
+      const b = hull.worldBounds;
+      if (b[0] < minX) minX = b[0];
+      if (b[1] < minY) minY = b[1];
+      if (b[2] > maxX) maxX = b[2];
+      if (b[3] > maxY) maxY = b[3];
+      filed++;
+    }
+    if (filed === 0) {
+      this.columns = this.rows = 0;
+      return;
+    }
+    const width = maxX - minX, height = maxY - minY;
+    this.cellSize = Math.max(MIN_CELL_SIZE, Math.sqrt(width * height / (filed * CELLS_PER_HULL)));
+    this.originX = minX;
+    this.originY = minY;
+    this.columns = Math.floor(width / this.cellSize) + 1;
+    this.rows = Math.floor(height / this.cellSize) + 1;
+    const cells = this.columns * this.rows;
+    if (this.cellStart.length < cells + 1) this.cellStart = new Int32Array(Math.ceil((cells + 1) * 1.5));
+    if (this.stamps.length < hulls.length) this.stamps = new Uint32Array(Math.ceil(hulls.length * 1.5));
+    const start = this.cellStart;
+    start.fill(0, 0, cells + 1);
+    // Pass 1 counts each cell's hulls (shifted by one), pass 2 turns counts into starts, pass 3 fills.
+    let total = 0;
+    for (const hull of hulls) {
+      if (!hull.enabled || !hull.valid) continue;
+      total += this.forCells(hull.worldBounds, start, -1, 1);
+    }
+    for (let cell = 0; cell < cells; cell++) start[cell + 1] += start[cell];
+    if (this.items.length < total) this.items = new Int32Array(Math.ceil(total * 1.5));
+    for (let i = 0; i < hulls.length; i++) {
+      const hull = hulls[i];
+      if (hull.enabled && hull.valid) this.forCells(hull.worldBounds, start, i, 0);
+    }
+    // Pass 3 advanced every start to the next cell's: shift back.
+    for (let cell = cells; cell > 0; cell--) start[cell] = start[cell - 1];
+    start[0] = 0;
+  }
+
+  /**
+   * Puts into `found` the indices of the filed hulls whose world bounds overlap the box
+   * `[minX, minY, maxX, maxY]`, each once; returns how many.
+   */
+  search(box: ArrayLike<number>): number {
+    this.foundCount = 0;
+    if (this.columns === 0) return 0;
+    const size = this.cellSize;
+    if (box[2] < this.originX || box[3] < this.originY
+      || box[0] > this.originX + this.columns * size || box[1] > this.originY + this.rows * size) return 0;
+    if (++this.query === 0xffffffff) {
+      this.stamps.fill(0);
+      this.query = 1;
+    }
+    const c0 = this.column(box[0]), c1 = this.column(box[2]);
+    const r0 = this.row(box[1]), r1 = this.row(box[3]);
+    const { cellStart, items, stamps, hulls, query } = this;
+    for (let r = r0; r <= r1; r++) {
+      for (let c = c0; c <= c1; c++) {
+        const cell = r * this.columns + c;
+        for (let k = cellStart[cell], end = cellStart[cell + 1]; k < end; k++) {
+          const index = items[k];
+          if (stamps[index] === query) continue;
+          stamps[index] = query;
+          const h = hulls[index].worldBounds;
+          if (h[0] > box[2] || h[2] < box[0] || h[1] > box[3] || h[3] < box[1]) continue;
+          this.push(index);
+        }
+      }
+    }
+    return this.foundCount;
+  }
+
+  /**
+   * For each cell overlapping `bounds`: with `index < 0` adds `step` to the cell's count (stored one
+   * slot ahead); otherwise writes `index` at the cell's cursor and advances it. Returns the cell count.
+   */
+  private forCells(bounds: Float64Array, start: Int32Array, index: number, step: number): number {
+    const c0 = this.column(bounds[0]), c1 = this.column(bounds[2]);
+    const r0 = this.row(bounds[1]), r1 = this.row(bounds[3]);
+    for (let r = r0; r <= r1; r++) {
+      for (let c = c0; c <= c1; c++) {
+        const cell = r * this.columns + c;
+        if (index < 0) start[cell + 1] += step;
+        else this.items[start[cell]++] = index;
+      }
+    }
+    return (c1 - c0 + 1) * (r1 - r0 + 1);
+  }
+
+  private column(x: number): number {
+    return Math.min(this.columns - 1, Math.max(0, Math.floor((x - this.originX) / this.cellSize)));
+  }
+
+  private row(y: number): number {
+    return Math.min(this.rows - 1, Math.max(0, Math.floor((y - this.originY) / this.cellSize)));
+  }
+
+  private push(index: number): void {
+    if (this.foundCount === this.found.length) {
+      const grown = new Int32Array(this.found.length * 2);
+      grown.set(this.found);
+      this.found = grown;
+    }
+    this.found[this.foundCount++] = index;
+  }
+}
