@@ -4,9 +4,9 @@ import type { Light } from '../scene/lights';
 import { HullGrid } from './HullGrid';
 import { isInsidePolygon } from './polygon';
 import { scissorOf } from './scissor';
-import { INDICES_PER_EDGE, VERTICES_PER_EDGE, type HullSlot, type ShadowGeometry } from './ShadowGeometry';
+import type { HullSlot, ShadowGeometry } from './ShadowGeometry';
 
-/** What the passes need to draw one light: its quad, scissor and the index ranges of the hulls in its range. */
+/** What the passes need to draw one light: its quad, scissor, and the edges and triangles of the hulls in its range. */
 export class LightDraw {
   light!: Light;
   /** `[cornerX, cornerY, axisXx, axisXy, axisYx, axisYy]`, see `Light.writeQuad`. */
@@ -15,9 +15,9 @@ export class LightDraw {
   readonly bounds = new Float64Array(4);
   /** `[x, y, width, height]` in lightmap pixels. */
   readonly scissor = new Int32Array(4);
-  /** Offset and count, in the plan's `indices`, of the shadow-quad indices of the edges in range. */
-  edgeIndexOffset = 0;
-  edgeIndexCount = 0;
+  /** Offset and count, in the plan's `edges`, of the numbers of the edges in range (one shadow quad instance each). */
+  edgeOffset = 0;
+  edgeCount = 0;
   /** Offset and count, in the plan's `indices`, of the triangles of the hulls in range. */
   triangleIndexOffset = 0;
   triangleIndexCount = 0;
@@ -28,11 +28,15 @@ export class LightDraw {
 /**
  * Decides each frame which lights are drawn and, per light, which hulls shadow it: a light is
  * skipped when disabled, black, off screen, or when its centre is inside a hull it does not
- * ignore. The index lists of all drawn lights share one array, reused from frame to frame.
+ * ignore. The edge and triangle lists of all drawn lights share two arrays, reused from frame to frame.
  */
 export class FramePlan {
+  /** Triangle indices (global point numbers) of the hulls in range, per light. */
   indices = new Uint32Array(1024);
   indexCount = 0;
+  /** Edge numbers (= global point numbers of their start) of the hulls in range, per light. */
+  edges = new Uint32Array(1024);
+  edgeCount = 0;
   readonly draws: LightDraw[] = [];
   drawCount = 0;
   private readonly slotsInRange: HullSlot[] = [];
@@ -43,6 +47,7 @@ export class FramePlan {
     viewProjection: ReadonlyMat4, targetWidth: number, targetHeight: number,
   ): void {
     this.indexCount = 0;
+    this.edgeCount = 0;
     this.drawCount = 0;
     this.grid.build(hulls);
     for (const light of lights) {
@@ -69,9 +74,9 @@ export class FramePlan {
     inRange.length = 0;
     if (light.castsShadows && !this.findHullsInRange(draw, hulls, geometry)) return false;
     draw.hullCount = inRange.length;
-    draw.edgeIndexOffset = this.indexCount;
+    draw.edgeOffset = this.edgeCount;
     for (const slot of inRange) this.appendEdges(slot.firstPoint, slot.pointCount);
-    draw.edgeIndexCount = this.indexCount - draw.edgeIndexOffset;
+    draw.edgeCount = this.edgeCount - draw.edgeOffset;
     draw.triangleIndexOffset = this.indexCount;
     for (const slot of inRange) this.appendTriangles(geometry, slot);
     draw.triangleIndexCount = this.indexCount - draw.triangleIndexOffset;
@@ -90,14 +95,14 @@ export class FramePlan {
       const h = hull.worldBounds;
       const slot = geometry.slotOf(hull)!;
       if (h[0] <= lx && lx <= h[2] && h[1] <= ly && ly <= h[3]
-        && isInsidePolygon(geometry.points, lx, ly, slot.firstPoint, slot.pointCount)) return false;
+        && isInsidePolygon(hull.worldPoints, lx, ly, 0, slot.pointCount)) return false;
       this.slotsInRange.push(slot);
     }
     return true;
   }
 
   private appendTriangles(geometry: ShadowGeometry, slot: HullSlot): void {
-    this.ensureCapacity(slot.triangleIndexCount);
+    this.indices = ensureCapacity(this.indices, this.indexCount, slot.triangleIndexCount);
     const source = geometry.triangleIndices;
     const indices = this.indices;
     let k = this.indexCount;
@@ -106,27 +111,20 @@ export class FramePlan {
   }
 
   private appendEdges(firstEdge: number, edgeCount: number): void {
-    this.ensureCapacity(edgeCount * INDICES_PER_EDGE);
-    const indices = this.indices;
-    let k = this.indexCount;
-    for (let e = firstEdge; e < firstEdge + edgeCount; e++) {
-      const base = e * VERTICES_PER_EDGE;
-      indices[k++] = base;
-      indices[k++] = base + 1;
-      indices[k++] = base + 2;
-      indices[k++] = base + 2;
-      indices[k++] = base + 3;
-      indices[k++] = base;
-    }
-    this.indexCount = k;
+    this.edges = ensureCapacity(this.edges, this.edgeCount, edgeCount);
+    const edges = this.edges;
+    let k = this.edgeCount;
+    for (let e = firstEdge, end = firstEdge + edgeCount; e < end; e++) edges[k++] = e;
+    this.edgeCount = k;
   }
+}
 
-  private ensureCapacity(extra: number): void {
-    if (this.indexCount + extra <= this.indices.length) return;
-    const grown = new Uint32Array(Math.max(this.indexCount + extra, this.indices.length * 2));
-    grown.set(this.indices.subarray(0, this.indexCount));
-    this.indices = grown;
-  }
+/** `array`, or a grown copy of its first `used` entries, with room for `extra` more. */
+function ensureCapacity(array: Uint32Array<ArrayBuffer>, used: number, extra: number): Uint32Array<ArrayBuffer> {
+  if (used + extra <= array.length) return array;
+  const grown = new Uint32Array(Math.max(used + extra, array.length * 2));
+  grown.set(array.subarray(0, used));
+  return grown;
 }
 
 function writeBounds(draw: LightDraw): void {

@@ -1,18 +1,18 @@
 import type { Hull } from '../scene/Hull';
 
-/** Floats per shadow-quad vertex: edge start (2), edge end (2), corner (2), hull first point and point count (2). */
-export const SHADOW_VERTEX_FLOATS = 8;
-/** Vertices per edge quad. */
-export const VERTICES_PER_EDGE = 4;
-/** Indices per edge quad (two triangles). */
-export const INDICES_PER_EDGE = 6;
+/**
+ * Floats per point: world x, y, then the first point and point count of its hull. Edge i runs from
+ * point i to the next point of its hull, so one record per point is all the shadow pass reads: it
+ * draws each edge as an instance that fetches its record (and the next point) by the edge number.
+ */
+export const POINT_FLOATS = 4;
 
-/** Point capacity grows in whole rows of this many points, so the points fill a texture's rows exactly. */
+/** Point capacity grows in whole rows of this many points, so the records fill a texture's rows exactly. */
 export const POINT_ROW = 1024;
 
 /** Where one hull's data sits in the shared arrays. */
 export interface HullSlot {
-  /** First point (= first edge) of the hull in `points` and `edgeVertices`. */
+  /** First point (= first edge) of the hull in `points`. */
   firstPoint: number;
   pointCount: number;
   /** First index of the hull's triangles in `triangleIndices`. */
@@ -24,10 +24,9 @@ export interface HullSlot {
 
 /**
  * The world-space data of every hull, packed for the GPU and independent of any light:
- * - `points`: each hull's world points, contiguous per hull (`x, y` per point), read by the
- *   shadow-mask pass (as a texture) and the hull pass (as vertices);
- * - `edgeVertices`: four vertices per edge, each carrying both end points, its corner flags and
- *   its hull's point range: the light is a uniform, so this changes only when a hull does;
+ * - `points`: each hull's world points, contiguous per hull, as {@link POINT_FLOATS} records that
+ *   also carry the hull's point range; read by the shadow-mask pass (as a texture: the light is a
+ *   uniform, so this changes only when a hull does) and the hull pass (as vertices);
  * - `triangleIndices`: each hull's triangulation as global point indices.
  *
  * `update` rewrites only hulls whose version changed and reports the dirty point range; adding,
@@ -35,7 +34,6 @@ export interface HullSlot {
  */
 export class ShadowGeometry {
   points = new Float32Array(0);
-  edgeVertices = new Float32Array(0);
   triangleIndices = new Uint32Array(0);
   pointCount = 0;
   triangleIndexCount = 0;
@@ -103,11 +101,9 @@ export class ShadowGeometry {
     }
     this.pointCount = points;
     this.triangleIndexCount = triangleIndices;
-    if (this.points.length < points * 2) {
-      const wanted = Math.max(points, Math.ceil(this.points.length / 2 * 1.5));
-      const capacity = Math.ceil(wanted / POINT_ROW) * POINT_ROW;
-      this.points = new Float32Array(capacity * 2);
-      this.edgeVertices = new Float32Array(capacity * VERTICES_PER_EDGE * SHADOW_VERTEX_FLOATS);
+    if (this.points.length < points * POINT_FLOATS) {
+      const wanted = Math.max(points, Math.ceil(this.points.length / POINT_FLOATS * 1.5));
+      this.points = new Float32Array(Math.ceil(wanted / POINT_ROW) * POINT_ROW * POINT_FLOATS);
     }
     if (this.triangleIndices.length < triangleIndices) {
       this.triangleIndices = new Uint32Array(Math.max(triangleIndices, Math.ceil(this.triangleIndices.length * 1.5)));
@@ -116,23 +112,12 @@ export class ShadowGeometry {
 
   private writeHull(hull: Hull, slot: HullSlot): void {
     const world = hull.worldPoints;
-    const n = slot.pointCount;
-    this.points.set(world.subarray(0, n * 2), slot.firstPoint * 2);
-    const vertices = this.edgeVertices;
-    for (let i = 0; i < n; i++) {
-      const j = i + 1 === n ? 0 : i + 1;
-      let offset = (slot.firstPoint + i) * VERTICES_PER_EDGE * SHADOW_VERTEX_FLOATS;
-      for (let corner = 0; corner < VERTICES_PER_EDGE; corner++) {
-        vertices[offset] = world[2 * i];
-        vertices[offset + 1] = world[2 * i + 1];
-        vertices[offset + 2] = world[2 * j];
-        vertices[offset + 3] = world[2 * j + 1];
-        vertices[offset + 4] = corner === 1 || corner === 2 ? 1 : 0;
-        vertices[offset + 5] = corner >= 2 ? 1 : 0;
-        vertices[offset + 6] = slot.firstPoint;
-        vertices[offset + 7] = n;
-        offset += SHADOW_VERTEX_FLOATS;
-      }
+    const points = this.points;
+    for (let i = 0, k = slot.firstPoint * POINT_FLOATS; i < slot.pointCount; i++, k += POINT_FLOATS) {
+      points[k] = world[2 * i];
+      points[k + 1] = world[2 * i + 1];
+      points[k + 2] = slot.firstPoint;
+      points[k + 3] = slot.pointCount;
     }
     const triangles = hull.worldTriangles;
     for (let k = 0; k < triangles.length; k++) this.triangleIndices[slot.firstTriangleIndex + k] = slot.firstPoint + triangles[k];

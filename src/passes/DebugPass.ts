@@ -38,9 +38,12 @@ export class DebugPass {
       gl.uniform1f(shadowUniforms.u_lightRadius, draw.light.radius);
       gl.uniform1f(shadowUniforms.u_projectionLength, projectionLength(draw.bounds));
       gl.uniform4f(shadowUniforms.u_color, 1, 0, 1, 1);
-      gl.bindVertexArray(buffers.edgeVertexArray);
-      // Index order per edge quad is (0 1 2)(2 3 0): as lines that gives the edge and the ray from its start.
-      gl.drawElements(gl.LINES, draw.edgeIndexCount, gl.UNSIGNED_INT, draw.edgeIndexOffset * 4);
+      gl.uniform1i(shadowUniforms.u_hullPoints, 0);
+      gl.activeTexture(gl.TEXTURE0);
+      gl.bindTexture(gl.TEXTURE_2D, buffers.pointsTexture);
+      buffers.bindEdges(draw);
+      // Each edge quad as a loop: the edge, the rays from its ends and the far side.
+      gl.drawArraysInstanced(gl.LINE_LOOP, 0, 4, draw.edgeCount);
       gl.useProgram(this.quadProgram.handle);
       const quadUniforms = this.quadProgram.uniforms;
       gl.uniformMatrix4fv(quadUniforms.u_viewProjection, false, viewProjection);

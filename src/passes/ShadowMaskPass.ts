@@ -63,8 +63,8 @@ export class ShadowMaskPass {
     gl.cullFace(gl.BACK);
     // Edges facing away from the light give clockwise quads in world space (y up).
     gl.frontFace(mirrored ? gl.CCW : gl.CW);
-    gl.bindVertexArray(buffers.edgeVertexArray);
-    gl.drawElements(gl.TRIANGLES, draw.edgeIndexCount, gl.UNSIGNED_INT, draw.edgeIndexOffset * 4);
+    buffers.bindEdges(draw);
+    gl.drawArraysInstanced(gl.TRIANGLE_FAN, 0, 4, draw.edgeCount);
     gl.disable(gl.CULL_FACE);
   }
 
