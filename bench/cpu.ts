@@ -1,7 +1,7 @@
 import { mat4 } from 'gl-matrix';
 import { PenumbraRenderer } from '../src/index';
 import { createContext, destroyContext } from '../test/gl/context';
-import { probeCalls } from './glProbe';
+import { probeCalls, stubCalls } from './glProbe';
 import { createScene, WORLD_HEIGHT, WORLD_WIDTH, type SceneSpec } from './scenes';
 import { summarize, type Summary } from './stats';
 
@@ -17,7 +17,11 @@ export interface CpuResult {
   gl: Summary;
   /** GL calls per frame made by the renderer. */
   glCalls: number;
-  /** Heap bytes allocated per frame by `renderLightmap()` in steady state (null when a GC spoiled every attempt). */
+  /**
+   * Heap bytes allocated per frame by `renderLightmap()` in steady state, GL calls stubbed out (see
+   * `stubCalls`; null when a GC spoiled every attempt). The WebGL API's own answers are not
+   * counted: in a browser `getParameter` returns three fresh arrays per saved host state.
+   */
   heapBytesPerFrame: number | null;
   lightsDrawn: number;
   edges: number;
@@ -56,7 +60,9 @@ export function runCpu(spec: SceneSpec, options: CpuOptions): CpuResult {
     step();
     renderer.renderLightmap();
   }
+  const unstub = stubCalls(gl);
   const heapBytesPerFrame = measureHeap(renderer, step);
+  unstub();
   const probe = probeCalls(gl);
   const js: number[] = [], inGL: number[] = [];
   let calls = 0;
@@ -98,6 +104,10 @@ function measureHeap(renderer: PenumbraRenderer, step: () => void): number | nul
     }
     let total = 0;
     let clean = true;
+    for (let i = 0; i < 3; i++) {
+      step();
+      renderer.renderLightmap();
+    }
     for (let i = 0; i < frames; i++) {
       step();
       const before = process.memoryUsage().heapUsed;

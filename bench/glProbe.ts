@@ -34,6 +34,37 @@ export function probeCalls(gl: WebGL2RenderingContext): GLProbe {
   return probe;
 }
 
+/**
+ * Replaces every method of `gl` with a stub that does nothing and allocates nothing, so that heap
+ * growth across a frame is the renderer's own: headless-gl's JavaScript layer allocates in many
+ * calls (bindFramebuffer ~95 B, isEnabled ~29 B), which a browser's native WebGL does not.
+ * `getParameter` answers from a cache filled by the real method. Returns a function that puts the
+ * real methods back.
+ */
+export function stubCalls(gl: WebGL2RenderingContext): () => void {
+  const target = gl as unknown as Record<string, unknown>;
+  const names = methodNames(gl);
+  const saved = names.map((name) => Object.getOwnPropertyDescriptor(target, name));
+  const realGetParameter = gl.getParameter.bind(gl);
+  const answers = new Map<number, unknown>();
+  for (const name of names) target[name] = stub;
+  target.getParameter = (pname: number) => {
+    if (!answers.has(pname)) answers.set(pname, realGetParameter(pname));
+    return answers.get(pname);
+  };
+  return () => {
+    names.forEach((name, i) => {
+      const descriptor = saved[i];
+      if (descriptor) Object.defineProperty(target, name, descriptor);
+      else delete target[name];
+    });
+  };
+}
+
+function stub(): undefined {
+  return undefined;
+}
+
 function methodNames(gl: WebGL2RenderingContext): string[] {
   const names = new Set<string>();
   for (let proto: object | null = gl; proto && proto !== Object.prototype; proto = Object.getPrototypeOf(proto)) {

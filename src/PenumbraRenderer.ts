@@ -26,6 +26,12 @@ export interface PenumbraRendererOptions {
   /** Size of the internal targets. Default: the context's drawing buffer size. */
   width?: number;
   height?: number;
+  /**
+   * Resolution of the lightmap and shadow mask relative to `width × height`, in (0, 1]. Below 1
+   * (e.g. 0.5) the shadow and light passes shade a quarter of the pixels, for fill-bound scenes;
+   * the composite upscales the lightmap with linear filtering. Default `1`.
+   */
+  lightmapScale?: number;
 }
 
 /** Figures about the last frame, for overlays and benchmarks. */
@@ -92,6 +98,7 @@ export class PenumbraRenderer {
   private resources: Resources | null = null;
   private width: number;
   private height: number;
+  private readonly lightmapScale: number;
   private drawing = false;
   private contextLost = false;
   private disposed = false;
@@ -107,6 +114,7 @@ export class PenumbraRenderer {
     if (options.ambientColor) this.ambientColor = options.ambientColor;
     this.width = checkSize('width', options.width ?? gl.drawingBufferWidth);
     this.height = checkSize('height', options.height ?? gl.drawingBufferHeight);
+    this.lightmapScale = checkScale(options.lightmapScale ?? 1);
     if (options.viewProjection) this.viewProjection = options.viewProjection;
     else this.updateDefaultViewProjection();
     this.hostState = new HostState(gl, TEXTURE_UNITS);
@@ -157,7 +165,7 @@ export class PenumbraRenderer {
     return this._hulls;
   }
 
-  /** The lightmap texture (RGBA16F, or RGBA8 without EXT_color_buffer_float), for hosts that composite themselves. */
+  /** The lightmap texture (RGBA16F, or RGBA8 without EXT_color_buffer_float; `lightmapScale` × the renderer size), for hosts that composite themselves. */
   get lightmapTexture(): WebGLTexture {
     return this.requireResources().light.lightmap.texture;
   }
@@ -200,8 +208,8 @@ export class PenumbraRenderer {
     if (!resources || this.contextLost) return;
     this.withHostState(() => {
       resources.scene.resize(this.width, this.height);
-      resources.shadowMask.resize(this.width, this.height);
-      resources.light.resize(this.width, this.height);
+      resources.shadowMask.resize(this.lightmapWidth, this.lightmapHeight);
+      resources.light.resize(this.lightmapWidth, this.lightmapHeight);
     });
   }
 
@@ -252,7 +260,7 @@ export class PenumbraRenderer {
       if (this.debug) {
         const v = this.compositeViewport;
         resources.debug.render(this.plan.draws, this.plan.drawCount, resources.buffers, this._viewProjection,
-          v[2] / this.width, v[3] / this.height, v[0], v[1]);
+          v[2] / this.lightmapWidth, v[3] / this.lightmapHeight, v[0], v[1]);
       }
     } finally {
       this.hostState.restore();
@@ -316,7 +324,7 @@ export class PenumbraRenderer {
     const plan = this.plan;
     const viewProjection = this._viewProjection;
     this.geometry.update(this._hulls);
-    plan.build(this._lights, this._hulls, this.geometry, viewProjection, this.width, this.height);
+    plan.build(this._lights, this._hulls, this.geometry, viewProjection, this.lightmapWidth, this.lightmapHeight);
     resources.buffers.upload(this.geometry, plan);
     const mirrored = this.updateClipToWorld();
     resources.light.begin(this._ambient);
@@ -397,6 +405,13 @@ export class PenumbraRenderer {
     }
   }
 
+  private get lightmapWidth(): number {
+    return Math.max(1, Math.round(this.width * this.lightmapScale));
+  }
+  private get lightmapHeight(): number {
+    return Math.max(1, Math.round(this.height * this.lightmapScale));
+  }
+
   private updateDefaultViewProjection(): void {
     mat4.ortho(this._viewProjection, 0, this.width, this.height, 0, -1, 1);
   }
@@ -415,9 +430,10 @@ export class PenumbraRenderer {
         quad,
         buffers: new GeometryBuffers(gl),
         scene: new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, this.width, this.height),
-        shadowMask: new ShadowMaskPass(gl, this.width, this.height),
+        // The mask is read texel for texel by the light pass: it has the lightmap's size.
+        shadowMask: new ShadowMaskPass(gl, this.lightmapWidth, this.lightmapHeight),
         hull: new HullPass(gl),
-        light: new LightPass(gl, quad, this.lightmapFormat, this.width, this.height),
+        light: new LightPass(gl, quad, this.lightmapFormat, this.lightmapWidth, this.lightmapHeight),
         composite: new CompositePass(gl),
         debug: new DebugPass(gl, quad),
       };
@@ -453,6 +469,11 @@ export class PenumbraRenderer {
 
 function checkSize(name: string, value: number): number {
   if (!Number.isInteger(value) || value <= 0) throw new RangeError(`PenumbraRenderer.${name} must be a positive integer, got ${value}`);
+  return value;
+}
+
+function checkScale(value: number): number {
+  if (typeof value !== 'number' || !(value > 0 && value <= 1)) throw new RangeError(`PenumbraRenderer.lightmapScale must be in (0, 1], got ${value}`);
   return value;
 }
 
