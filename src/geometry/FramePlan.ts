@@ -39,7 +39,9 @@ export class FramePlan {
   edgeCount = 0;
   readonly draws: LightDraw[] = [];
   drawCount = 0;
+  /** Slots of the hulls in range of the current light: the first `inRangeCount` entries (never truncated, which would free the backing store). */
   private readonly slotsInRange: HullSlot[] = [];
+  private inRangeCount = 0;
   private readonly grid = new HullGrid();
 
   build(
@@ -71,14 +73,15 @@ export class FramePlan {
   private collectHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
     const light = draw.light;
     const inRange = this.slotsInRange;
-    inRange.length = 0;
+    this.inRangeCount = 0;
     if (light.castsShadows && !this.findHullsInRange(draw, hulls, geometry)) return false;
-    draw.hullCount = inRange.length;
+    const count = this.inRangeCount;
+    draw.hullCount = count;
     draw.edgeOffset = this.edgeCount;
-    for (const slot of inRange) this.appendEdges(slot.firstPoint, slot.pointCount);
+    for (let i = 0; i < count; i++) this.appendEdges(inRange[i].firstPoint, inRange[i].pointCount);
     draw.edgeCount = this.edgeCount - draw.edgeOffset;
     draw.triangleIndexOffset = this.indexCount;
-    for (const slot of inRange) this.appendTriangles(geometry, slot);
+    for (let i = 0; i < count; i++) this.appendTriangles(geometry, inRange[i]);
     draw.triangleIndexCount = this.indexCount - draw.triangleIndexOffset;
     return true;
   }
@@ -96,7 +99,9 @@ export class FramePlan {
       const slot = geometry.slotOf(hull)!;
       if (h[0] <= lx && lx <= h[2] && h[1] <= ly && ly <= h[3]
         && isInsidePolygon(hull.worldPoints, lx, ly, 0, slot.pointCount)) return false;
-      this.slotsInRange.push(slot);
+      if (this.inRangeCount === this.slotsInRange.length) this.slotsInRange.push(slot);
+      else this.slotsInRange[this.inRangeCount] = slot;
+      this.inRangeCount++;
     }
     return true;
   }

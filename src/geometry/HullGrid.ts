@@ -89,8 +89,8 @@ export class HullGrid {
       this.stamps.fill(0);
       this.query = 1;
     }
-    const c0 = this.column(box[0]), c1 = this.column(box[2]);
-    const r0 = this.row(box[1]), r1 = this.row(box[3]);
+    const c0 = this.cell(box[0] - this.originX, this.columns), c1 = this.cell(box[2] - this.originX, this.columns);
+    const r0 = this.cell(box[1] - this.originY, this.rows), r1 = this.cell(box[3] - this.originY, this.rows);
     const { cellStart, items, stamps, hulls, query } = this;
     for (let r = r0; r <= r1; r++) {
       for (let c = c0; c <= c1; c++) {
@@ -113,8 +113,12 @@ export class HullGrid {
    * slot ahead); otherwise writes `index` at the cell's cursor and advances it. Returns the cell count.
    */
   private forCells(bounds: Float64Array, start: Int32Array, index: number, step: number): number {
-    const c0 = this.column(bounds[0]), c1 = this.column(bounds[2]);
-    const r0 = this.row(bounds[1]), r1 = this.row(bounds[3]);
+    // Inlined cell numbers (see `cell`): this runs for every hull every frame.
+    const size = this.cellSize, columns = this.columns, rows = this.rows;
+    const c0 = Math.min(columns - 1, Math.max(0, Math.floor((bounds[0] - this.originX) / size)));
+    const c1 = Math.min(columns - 1, Math.max(0, Math.floor((bounds[2] - this.originX) / size)));
+    const r0 = Math.min(rows - 1, Math.max(0, Math.floor((bounds[1] - this.originY) / size)));
+    const r1 = Math.min(rows - 1, Math.max(0, Math.floor((bounds[3] - this.originY) / size)));
     for (let r = r0; r <= r1; r++) {
       for (let c = c0; c <= c1; c++) {
         const cell = r * this.columns + c;
@@ -125,12 +129,10 @@ export class HullGrid {
     return (c1 - c0 + 1) * (r1 - r0 + 1);
   }
 
-  private column(x: number): number {
-    return Math.min(this.columns - 1, Math.max(0, Math.floor((x - this.originX) / this.cellSize)));
-  }
-
-  private row(y: number): number {
-    return Math.min(this.rows - 1, Math.max(0, Math.floor((y - this.originY) / this.cellSize)));
+  /** The cell number along one axis of an offset from the grid's origin, clamped to `[0, cells)`. */
+  private cell(offset: number, cells: number): number {
+    const cell = Math.floor(offset / this.cellSize);
+    return cell < 0 ? 0 : cell >= cells ? cells - 1 : cell;
   }
 
   private push(index: number): void {

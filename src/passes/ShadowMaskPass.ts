@@ -11,7 +11,9 @@ import { shaderSources } from './shaders';
  * the scissor rectangle.
  */
 export function projectionLength(bounds: Float64Array): number {
-  return 64 * Math.hypot(bounds[2] - bounds[0], bounds[3] - bounds[1]);
+  const width = bounds[2] - bounds[0], height = bounds[3] - bounds[1];
+  // Not Math.hypot: it is variadic and allocates.
+  return 64 * Math.sqrt(width * width + height * height);
 }
 
 /** The cleared mask: no part of the disk hidden. */
