@@ -30,6 +30,9 @@ const POINTS_UNIT = 0;
 export class ShadowMaskPass {
   readonly target: RenderTarget;
   private readonly program: Program;
+  private readonly lightPosition = new Float32Array(2);
+  private readonly lightRadius = new Float32Array(1);
+  private readonly projectionLength = new Float32Array(1);
 
   constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number) {
     this.program = createProgram(gl, 'shadow mask', shaderSources.shadowMaskVertex, shaderSources.shadowMaskFragment);
@@ -53,9 +56,15 @@ export class ShadowMaskPass {
     gl.uniformMatrix4fv(uniforms.u_viewProjection, false, viewProjection);
     gl.uniformMatrix4fv(uniforms.u_clipToWorld, false, clipToWorld);
     gl.uniform2f(uniforms.u_targetSize, this.target.width, this.target.height);
-    gl.uniform2f(uniforms.u_lightPosition, draw.light.position[0], draw.light.position[1]);
-    gl.uniform1f(uniforms.u_lightRadius, draw.light.radius);
-    gl.uniform1f(uniforms.u_projectionLength, projectionLength(draw.bounds));
+    // Through reused typed arrays: doubles passed to a GL call one by one are boxed on the heap.
+    // (One array per uniform: headless-gl lacks the srcOffset/srcLength overloads.)
+    this.lightPosition[0] = draw.light.position[0];
+    this.lightPosition[1] = draw.light.position[1];
+    this.lightRadius[0] = draw.light.radius;
+    this.projectionLength[0] = projectionLength(draw.bounds);
+    gl.uniform2fv(uniforms.u_lightPosition, this.lightPosition);
+    gl.uniform1fv(uniforms.u_lightRadius, this.lightRadius);
+    gl.uniform1fv(uniforms.u_projectionLength, this.projectionLength);
     gl.uniform1i(uniforms.u_hullPoints, POINTS_UNIT);
     gl.activeTexture(gl.TEXTURE0 + POINTS_UNIT);
     gl.bindTexture(gl.TEXTURE_2D, buffers.pointsTexture);
