@@ -8,12 +8,12 @@ import { summarize, type Summary } from './stats';
 /** What the Node run measures for one scene. */
 export interface CpuResult {
   /**
-   * The renderer's own JavaScript time per frame, ms: `renderLightmap()` minus the time inside GL
-   * calls. headless-gl rasterizes on the CPU and blocks in the call that needs a finished mask, so
-   * the time inside GL calls is mostly rasterization, which the browser figures account for.
+   * The renderer's own JavaScript time per frame, ms: `renderLightmap()` with every GL call stubbed
+   * out (see `stubCalls`), so neither headless-gl nor its software rasterizer (which blocks in the
+   * call that needs a finished mask) is in it; the browser figures account for those.
    */
   js: Summary;
-  /** Time inside GL calls per frame, ms (driver and software rasterizer). */
+  /** Time inside the real GL calls per frame, ms (headless-gl's JavaScript layer, driver, rasterizer). */
   gl: Summary;
   /** GL calls per frame made by the renderer. */
   glCalls: number;
@@ -39,6 +39,9 @@ export interface CpuOptions {
  */
 const TARGET_DIVISOR = 8;
 
+/** Frames run on the real context to count GL calls and time them. */
+const PROBED_FRAMES = 10;
+
 /** Runs one scene on a headless-gl WebGL2 context, the world mapped onto small targets. */
 export function runCpu(spec: SceneSpec, options: CpuOptions): CpuResult {
   const width = WORLD_WIDTH / TARGET_DIVISOR, height = WORLD_HEIGHT / TARGET_DIVISOR;
@@ -62,22 +65,26 @@ export function runCpu(spec: SceneSpec, options: CpuOptions): CpuResult {
   }
   const unstub = stubCalls(gl);
   const heapBytesPerFrame = measureHeap(renderer, step);
-  unstub();
-  const probe = probeCalls(gl);
-  const js: number[] = [], inGL: number[] = [];
-  let calls = 0;
+  const js: number[] = [];
   for (let i = 0; i < options.frames; i++) {
     step();
-    probe.reset();
     const start = performance.now();
     renderer.renderLightmap();
-    const total = performance.now() - start;
-    js.push(total - probe.time);
+    js.push(performance.now() - start);
+  }
+  unstub();
+  const probe = probeCalls(gl);
+  const inGL: number[] = [];
+  let calls = 0;
+  for (let i = 0; i < PROBED_FRAMES; i++) {
+    step();
+    probe.reset();
+    renderer.renderLightmap();
     inGL.push(probe.time);
     calls += probe.calls;
   }
   const result: CpuResult = {
-    js: summarize(js), gl: summarize(inGL), glCalls: calls / options.frames, heapBytesPerFrame,
+    js: summarize(js), gl: summarize(inGL), glCalls: calls / PROBED_FRAMES, heapBytesPerFrame,
     lightsDrawn: renderer.stats.lightsDrawn, edges: renderer.stats.edges,
   };
   renderer.dispose();
@@ -104,7 +111,8 @@ function measureHeap(renderer: PenumbraRenderer, step: () => void): number | nul
     }
     let total = 0;
     let clean = true;
-    for (let i = 0; i < 3; i++) {
+    // Stubbed frames are cheap: run enough of them for every per-frame function to be optimized.
+    for (let i = 0; i < 300; i++) {
       step();
       renderer.renderLightmap();
     }
