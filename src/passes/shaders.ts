@@ -9,10 +9,12 @@ import lightSpotFragment from '../../shaders/light-spot.frag.glsl?raw';
 import lightTexturedFragment from '../../shaders/light-textured.frag.glsl?raw';
 import lightVertex from '../../shaders/light.vert.glsl?raw';
 import shadowMaskFragment from '../../shaders/shadow-mask.frag.glsl?raw';
+import shadowMaskUmbraVertex from '../../shaders/shadow-mask.umbra.vert.glsl?raw';
 import shadowMaskVertex from '../../shaders/shadow-mask.vert.glsl?raw';
+import shadowEdge from '../../shaders/chunks/shadow-edge.glsl?raw';
 import { resolveIncludes } from '../gl/program';
 
-const chunks = { 'light-common': lightCommon };
+const chunks = { 'light-common': lightCommon, 'shadow-edge': shadowEdge };
 
 /** The GLSL sources, inlined at build time, with their chunks resolved. */
 export const shaderSources = {
@@ -26,5 +28,6 @@ export const shaderSources = {
   lightSpotFragment: resolveIncludes(lightSpotFragment, chunks),
   lightTexturedFragment: resolveIncludes(lightTexturedFragment, chunks),
   shadowMaskFragment,
-  shadowMaskVertex,
+  shadowMaskVertex: resolveIncludes(shadowMaskVertex, chunks),
+  shadowMaskUmbraVertex: resolveIncludes(shadowMaskUmbraVertex, chunks),
 };
