@@ -349,7 +349,8 @@ export class PenumbraRenderer {
     stats.lightsDrawn = this.plan.drawCount;
     stats.hulls = this._hulls.length;
     let edges = 0;
-    for (const hull of this._hulls) if (hull.valid) edges += hull.edgeCount;
+    const hulls = this._hulls;
+    for (let i = 0; i < hulls.length; i++) if (hulls[i].valid) edges += hulls[i].edgeCount;
     stats.edges = edges;
     stats.cpuTime = cpuTime;
   }

@@ -52,7 +52,8 @@ export class FramePlan {
     this.edgeCount = 0;
     this.drawCount = 0;
     this.grid.build(hulls);
-    for (const light of lights) {
+    for (let i = 0; i < lights.length; i++) {
+      const light = lights[i];
       if (!light.enabled || light.intensity === 0 || light.range === 0) continue;
       const draw = this.nextDraw();
       draw.light = light;
@@ -134,7 +135,7 @@ function ensureCapacity(array: Uint32Array<ArrayBuffer>, used: number, extra: nu
 
 function writeBounds(draw: LightDraw): void {
   const q = draw.quad;
-  const [lx, ly] = draw.light.position;
+  const lx = draw.light.position[0], ly = draw.light.position[1];
   const b = draw.bounds;
   b[0] = Math.min(lx, q[0], q[0] + q[2], q[0] + q[4], q[0] + q[2] + q[4]);
   b[1] = Math.min(ly, q[1], q[1] + q[3], q[1] + q[5], q[1] + q[3] + q[5]);

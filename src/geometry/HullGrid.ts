@@ -34,7 +34,8 @@ export class HullGrid {
   build(hulls: readonly Hull[]): void {
     this.hulls = hulls;
     let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity, filed = 0;
-    for (const hull of hulls) {
+    for (let i = 0; i < hulls.length; i++) {
+      const hull = hulls[i];
       if (!hull.enabled || !hull.valid) continue;
       const b = hull.worldBounds;
       if (b[0] < minX) minX = b[0];
@@ -60,7 +61,8 @@ export class HullGrid {
     start.fill(0, 0, cells + 1);
     // Pass 1 counts each cell's hulls (shifted by one), pass 2 turns counts into starts, pass 3 fills.
     let total = 0;
-    for (const hull of hulls) {
+    for (let i = 0; i < hulls.length; i++) {
+      const hull = hulls[i];
       if (!hull.enabled || !hull.valid) continue;
       total += this.forCells(hull.worldBounds, start, -1, 1);
     }

@@ -62,7 +62,10 @@ export class ShadowGeometry {
     this.dirtyEnd = 0;
     this.relaidOut = this.needsLayout(hulls);
     if (this.relaidOut) this.layOut(hulls);
-    for (const hull of hulls) {
+    // Indexed loops here and in other per-frame code: a for-of over thousands of hulls showed
+    // iterator results on the heap every frame.
+    for (let i = 0; i < hulls.length; i++) {
+      const hull = hulls[i];
       const slot = this.slots.get(hull)!;
       const moved = hull.updateWorld();
       if (!moved && slot.version === hull.version && !this.relaidOut) continue;
