@@ -8,7 +8,7 @@ import { serveDirectory } from '../test/browser/staticServer';
 import { runCpu, type CpuResult } from './cpu';
 import { SCENES } from './scenes';
 import { summarize, type Summary } from './stats';
-import type { BrowserTimes } from './page/main';
+import type { BenchPage } from './page/main';
 
 interface BrowserResult {
   frame: Summary;
@@ -32,6 +32,8 @@ const cpuFrames = Number(args.get('frames') ?? 100);
 const browserFrames = Number(args.get('browser-frames') ?? 10);
 // run.mjs starts the bundle from the repository root.
 const root = process.cwd();
+/** Frames run in Chromium before the measured ones. */
+const BROWSER_WARMUP = 2;
 
 const results: SceneResult[] = scenes.map((spec) => ({ scene: spec.name, lights: spec.lights, hulls: spec.hulls + spec.farHulls }));
 if (!args.has('no-node')) {
@@ -52,9 +54,16 @@ if (!args.has('no-browser')) {
       const page = await browser.newPage();
       await page.goto(server.url, { waitUntil: 'load' });
       await page.waitForFunction('window.penumbraBench');
-      const times = await page.evaluate((name, frames) =>
-        (window as unknown as { penumbraBench: { run(n: string, w: number, f: number): BrowserTimes } }).penumbraBench.run(name, 2, frames),
-      spec.name, browserFrames);
+      // Evaluated in the page: each function must name the page's API itself.
+      await page.evaluate((name) => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.setup(name), spec.name);
+      const times: { frame: number[]; floor: number[] } = { frame: [], floor: [] };
+      for (let frame = 0; frame < BROWSER_WARMUP + browserFrames; frame++) {
+        const measured = await page.evaluate(() => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.frame());
+        if (frame < BROWSER_WARMUP) continue;
+        times.frame.push(measured.frame);
+        times.floor.push(measured.floor);
+      }
+      await page.evaluate(() => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.teardown());
       await page.close();
       const frame = summarize(times.frame), floor = summarize(times.floor);
       results[i].browser = { frame, floor, ratio: frame.median / floor.median };
