@@ -22,32 +22,21 @@ const NOTHING_HIDDEN = new Float32Array(4);
 /** Texture unit the shadow-mask pass reads hull points from. */
 const POINTS_UNIT = 0;
 
-/** Depth clear value of the mask target: nothing drawn in front yet. */
-const FAR_DEPTH = 1;
-
 /**
  * Shadow mask pass: per light, writes into its own RGBA8 target how much of the light disk the
  * hulls in range hide from each pixel (see shadow-mask.frag.glsl), then lets the hull pass mark
  * the hulls' insides. Light-facing edges are culled by the rasterizer.
- *
- * An umbra prepass first marks, with a one-line fragment shader, where a single edge hides the
- * whole disk (shadow-mask.umbra.vert.glsl) and writes the front depth there; the full pass, drawn
- * behind it without writing depth, is rejected there by the early depth test, so its per-pixel
- * loop over the hull's points runs only where the answer is not already "fully hidden".
  */
 export class ShadowMaskPass {
   readonly target: RenderTarget;
   private readonly program: Program;
-  private readonly umbraProgram: Program;
   private readonly lightPosition = new Float32Array(2);
   private readonly lightRadius = new Float32Array(1);
   private readonly projectionLength = new Float32Array(1);
 
   constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number) {
     this.program = createProgram(gl, 'shadow mask', shaderSources.shadowMaskVertex, shaderSources.shadowMaskFragment);
-    // The hull pass's fragment stage writes a constant mask value: here "fully hidden".
-    this.umbraProgram = createProgram(gl, 'shadow mask umbra', shaderSources.shadowMaskUmbraVertex, shaderSources.hullFragment);
-    this.target = new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, width, height);
+    this.target = new RenderTarget(gl, { format: 'rgba8' }, width, height);
   }
 
   resize(width: number, height: number): void {
@@ -60,14 +49,23 @@ export class ShadowMaskPass {
    */
   render(draw: LightDraw, buffers: GeometryBuffers, viewProjection: ReadonlyMat4, clipToWorld: ReadonlyMat4, mirrored: boolean): void {
     const gl = this.gl;
+    const uniforms = this.program.uniforms;
     this.target.bind();
-    gl.depthMask(true);
     gl.clearBufferfv(gl.COLOR, 0, NOTHING_HIDDEN);
-    gl.clearBufferfi(gl.DEPTH_STENCIL, 0, FAR_DEPTH, 0);
+    gl.useProgram(this.program.handle);
+    gl.uniformMatrix4fv(uniforms.u_viewProjection, false, viewProjection);
+    gl.uniformMatrix4fv(uniforms.u_clipToWorld, false, clipToWorld);
+    gl.uniform2f(uniforms.u_targetSize, this.target.width, this.target.height);
+    // Through reused typed arrays: doubles passed to a GL call one by one are boxed on the heap.
+    // (One array per uniform: headless-gl lacks the srcOffset/srcLength overloads.)
     this.lightPosition[0] = draw.light.position[0];
     this.lightPosition[1] = draw.light.position[1];
     this.lightRadius[0] = draw.light.radius;
     this.projectionLength[0] = projectionLength(draw.bounds);
+    gl.uniform2fv(uniforms.u_lightPosition, this.lightPosition);
+    gl.uniform1fv(uniforms.u_lightRadius, this.lightRadius);
+    gl.uniform1fv(uniforms.u_projectionLength, this.projectionLength);
+    gl.uniform1i(uniforms.u_hullPoints, POINTS_UNIT);
     gl.activeTexture(gl.TEXTURE0 + POINTS_UNIT);
     gl.bindTexture(gl.TEXTURE_2D, buffers.pointsTexture);
     gl.enable(gl.BLEND);
@@ -76,40 +74,12 @@ export class ShadowMaskPass {
     gl.cullFace(gl.BACK);
     // Edges facing away from the light give clockwise quads in world space (y up).
     gl.frontFace(mirrored ? gl.CCW : gl.CW);
-    gl.enable(gl.DEPTH_TEST);
-    gl.depthFunc(gl.LESS);
     buffers.bindEdges(draw);
-
-    this.useEdgeProgram(this.umbraProgram, viewProjection);
-    gl.uniform4f(this.umbraProgram.uniforms.u_maskValue, 1, 0, 0, 0);
     gl.drawArraysInstanced(gl.TRIANGLE_FAN, 0, 4, draw.edgeCount);
-
-    const uniforms = this.useEdgeProgram(this.program, viewProjection);
-    gl.uniformMatrix4fv(uniforms.u_clipToWorld, false, clipToWorld);
-    gl.uniform2f(uniforms.u_targetSize, this.target.width, this.target.height);
-    gl.depthMask(false);
-    gl.drawArraysInstanced(gl.TRIANGLE_FAN, 0, 4, draw.edgeCount);
-    gl.disable(gl.DEPTH_TEST);
     gl.disable(gl.CULL_FACE);
   }
 
-  /** Binds a program using shaders/chunks/shadow-edge.glsl and sets that chunk's uniforms; returns its uniforms. */
-  private useEdgeProgram(program: Program, viewProjection: ReadonlyMat4): Program['uniforms'] {
-    const gl = this.gl;
-    const uniforms = program.uniforms;
-    gl.useProgram(program.handle);
-    gl.uniformMatrix4fv(uniforms.u_viewProjection, false, viewProjection);
-    // Through reused typed arrays: doubles passed to a GL call one by one are boxed on the heap.
-    // (One array per uniform: headless-gl lacks the srcOffset/srcLength overloads.)
-    gl.uniform2fv(uniforms.u_lightPosition, this.lightPosition);
-    gl.uniform1fv(uniforms.u_lightRadius, this.lightRadius);
-    gl.uniform1fv(uniforms.u_projectionLength, this.projectionLength);
-    gl.uniform1i(uniforms.u_hullPoints, POINTS_UNIT);
-    return uniforms;
-  }
-
   dispose(): void {
-    this.gl.deleteProgram(this.umbraProgram.handle);
     this.gl.deleteProgram(this.program.handle);
     this.target.dispose();
   }

@@ -9,12 +9,10 @@ import lightSpotFragment from '../../shaders/light-spot.frag.glsl?raw';
 import lightTexturedFragment from '../../shaders/light-textured.frag.glsl?raw';
 import lightVertex from '../../shaders/light.vert.glsl?raw';
 import shadowMaskFragment from '../../shaders/shadow-mask.frag.glsl?raw';
-import shadowMaskUmbraVertex from '../../shaders/shadow-mask.umbra.vert.glsl?raw';
 import shadowMaskVertex from '../../shaders/shadow-mask.vert.glsl?raw';
-import shadowEdge from '../../shaders/chunks/shadow-edge.glsl?raw';
 import { resolveIncludes } from '../gl/program';
 
-const chunks = { 'light-common': lightCommon, 'shadow-edge': shadowEdge };
+const chunks = { 'light-common': lightCommon };
 
 /** The GLSL sources, inlined at build time, with their chunks resolved. */
 export const shaderSources = {
@@ -28,6 +26,5 @@ export const shaderSources = {
   lightSpotFragment: resolveIncludes(lightSpotFragment, chunks),
   lightTexturedFragment: resolveIncludes(lightTexturedFragment, chunks),
   shadowMaskFragment,
-  shadowMaskVertex: resolveIncludes(shadowMaskVertex, chunks),
-  shadowMaskUmbraVertex: resolveIncludes(shadowMaskUmbraVertex, chunks),
+  shadowMaskVertex,
 };
