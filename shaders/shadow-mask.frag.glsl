@@ -33,20 +33,34 @@ void main() {
   vec2 toLight = u_lightPosition - pixel;
   float distance = max(length(toLight), 1e-6);
   vec2 axis = toLight / distance;
-  // A ray from the pixel at angle θ off the axis passes the light centre at distance·sin(θ);
-  // divided by the radius it is the chord height that splits the disk.
-  float scale = distance / max(u_lightRadius, 1e-4);
-  float low = 2.0;
-  float high = -2.0;
+  // The hull's extreme directions seen from the pixel. Points ahead of the pixel (towards the light)
+  // lie in one half-plane, so a cross product orders their angles: no square root or division per
+  // point. Points behind the pixel stand for directions past ±90°, beyond any chord of the disk.
+  vec2 highest = vec2(axis.y, -axis.x); // -90°: below every point ahead
+  vec2 lowest = vec2(-axis.y, axis.x);  // +90°: above every point ahead
+  bool highBehind = false;
+  bool lowBehind = false;
   int width = textureSize(u_hullPoints, 0).x;
+  // Step through the texels instead of dividing the index by the width for every point.
+  ivec2 texel = ivec2(v_hull.x % width, v_hull.x / width);
   for (int i = 0; i < v_hull.y; i++) {
-    int index = v_hull.x + i;
-    vec2 toPoint = texelFetch(u_hullPoints, ivec2(index % width, index / width), 0).xy - pixel;
+    vec2 toPoint = texelFetch(u_hullPoints, texel, 0).xy - pixel;
+    texel.x++;
+    if (texel.x == width) texel = ivec2(0, texel.y + 1);
     float across = axis.x * toPoint.y - axis.y * toPoint.x;
-    float t = dot(axis, toPoint) > 0.0 ? scale * across / length(toPoint) : (across >= 0.0 ? 2.0 : -2.0);
-    low = min(low, t);
-    high = max(high, t);
+    if (dot(axis, toPoint) <= 0.0) {
+      highBehind = highBehind || across >= 0.0;
+      lowBehind = lowBehind || across < 0.0;
+      continue;
+    }
+    if (highest.x * toPoint.y - highest.y * toPoint.x > 0.0) highest = toPoint;
+    if (lowest.x * toPoint.y - lowest.y * toPoint.x < 0.0) lowest = toPoint;
   }
+  // A ray at angle θ off the axis passes the light centre at distance·sin(θ); over the radius it is
+  // the height of the chord that splits the disk.
+  float scale = distance / max(u_lightRadius, 1e-4);
+  float high = highBehind ? 2.0 : scale * (axis.x * highest.y - axis.y * highest.x) / length(highest);
+  float low = lowBehind ? -2.0 : scale * (axis.x * lowest.y - axis.y * lowest.x) / length(lowest);
   float lowArea = diskAreaBelow(low);
   float highArea = diskAreaBelow(high);
   bool fromFirstSide = lowArea <= TOUCH;
