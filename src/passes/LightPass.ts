@@ -18,6 +18,17 @@ export class LightPass {
   readonly lightmap: RenderTarget;
   private readonly programs: Record<LightKind, Program>;
   private readonly clearValue = new Float32Array(4);
+  // Uniform values go through reused typed arrays: doubles passed to a GL call one by one are boxed
+  // on the heap. (One array per uniform: headless-gl lacks the srcOffset/srcLength overloads.)
+  private readonly quadCorner = new Float32Array(2);
+  private readonly quadAxisX = new Float32Array(2);
+  private readonly quadAxisY = new Float32Array(2);
+  private readonly lightColor = new Float32Array(3);
+  private readonly lightPosition = new Float32Array(2);
+  private readonly lightRange = new Float32Array(1);
+  private readonly direction = new Float32Array(2);
+  private readonly coneHalfAngle = new Float32Array(1);
+  private readonly coneDecay = new Float32Array(1);
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly quad: UnitQuad, format: TargetFormat, width: number, height: number) {
     this.programs = {
@@ -55,21 +66,25 @@ export class LightPass {
     this.lightmap.bind();
     gl.useProgram(program.handle);
     gl.uniformMatrix4fv(uniforms.u_viewProjection, false, viewProjection);
-    gl.uniform2f(uniforms.u_quadCorner, draw.quad[0], draw.quad[1]);
-    gl.uniform2f(uniforms.u_quadAxisX, draw.quad[2], draw.quad[3]);
-    gl.uniform2f(uniforms.u_quadAxisY, draw.quad[4], draw.quad[5]);
-    const [r, g, b] = light.color;
-    gl.uniform3f(uniforms.u_lightColor, r * light.intensity, g * light.intensity, b * light.intensity);
-    gl.uniform2f(uniforms.u_lightPosition, light.position[0], light.position[1]);
-    gl.uniform1f(uniforms.u_lightRange, light.range);
+    this.writeLightUniforms(draw);
+    gl.uniform2fv(uniforms.u_quadCorner, this.quadCorner);
+    gl.uniform2fv(uniforms.u_quadAxisX, this.quadAxisX);
+    gl.uniform2fv(uniforms.u_quadAxisY, this.quadAxisY);
+    gl.uniform3fv(uniforms.u_lightColor, this.lightColor);
+    gl.uniform2fv(uniforms.u_lightPosition, this.lightPosition);
+    gl.uniform1fv(uniforms.u_lightRange, this.lightRange);
     gl.uniform1i(uniforms.u_hasShadowMask, shadowMask ? 1 : 0);
     gl.uniform1i(uniforms.u_shadowMask, MASK_UNIT);
     gl.activeTexture(gl.TEXTURE0 + MASK_UNIT);
     gl.bindTexture(gl.TEXTURE_2D, shadowMask);
     if (light instanceof Spotlight) {
-      gl.uniform2f(uniforms.u_direction, Math.cos(light.rotation), Math.sin(light.rotation));
-      gl.uniform1f(uniforms.u_coneHalfAngle, light.coneAngle / 2);
-      gl.uniform1f(uniforms.u_coneDecay, light.coneDecay);
+      this.direction[0] = Math.cos(light.rotation);
+      this.direction[1] = Math.sin(light.rotation);
+      this.coneHalfAngle[0] = light.coneAngle / 2;
+      this.coneDecay[0] = light.coneDecay;
+      gl.uniform2fv(uniforms.u_direction, this.direction);
+      gl.uniform1fv(uniforms.u_coneHalfAngle, this.coneHalfAngle);
+      gl.uniform1fv(uniforms.u_coneDecay, this.coneDecay);
     } else if (light instanceof TexturedLight) {
       gl.uniform1i(uniforms.u_cookie, COOKIE_UNIT);
       gl.activeTexture(gl.TEXTURE0 + COOKIE_UNIT);
@@ -79,6 +94,24 @@ export class LightPass {
     gl.blendEquation(gl.FUNC_ADD);
     gl.blendFunc(gl.ONE, gl.ONE);
     this.quad.draw(gl.TRIANGLE_FAN);
+  }
+
+  /** Copies the quad and the light's colour, position and range into the uniform arrays. */
+  private writeLightUniforms(draw: LightDraw): void {
+    const quad = draw.quad, light = draw.light;
+    this.quadCorner[0] = quad[0];
+    this.quadCorner[1] = quad[1];
+    this.quadAxisX[0] = quad[2];
+    this.quadAxisX[1] = quad[3];
+    this.quadAxisY[0] = quad[4];
+    this.quadAxisY[1] = quad[5];
+    const color = light.color, intensity = light.intensity;
+    this.lightColor[0] = color[0] * intensity;
+    this.lightColor[1] = color[1] * intensity;
+    this.lightColor[2] = color[2] * intensity;
+    this.lightPosition[0] = light.position[0];
+    this.lightPosition[1] = light.position[1];
+    this.lightRange[0] = light.range;
   }
 
   dispose(): void {

@@ -148,7 +148,9 @@ export abstract class Light {
   writeQuad(out: Float32Array): void {
     const width = this.quadWidth(), height = this.quadHeight();
     const cos = Math.cos(this._rotation), sin = Math.sin(this._rotation);
-    const [ox, oy] = this.quadPivot();
+    // Indexed, not destructured: array destructuring goes through the iterator protocol and allocates.
+    const pivot = this.quadPivot();
+    const ox = pivot[0], oy = pivot[1];
     out[2] = cos * width;
     out[3] = sin * width;
     out[4] = -sin * height;
