@@ -348,10 +348,7 @@ export class PenumbraRenderer {
     stats.lights = this._lights.length;
     stats.lightsDrawn = this.plan.drawCount;
     stats.hulls = this._hulls.length;
-    let edges = 0;
-    const hulls = this._hulls;
-    for (let i = 0; i < hulls.length; i++) if (hulls[i].valid) edges += hulls[i].edgeCount;
-    stats.edges = edges;
+    stats.edges = this.geometry.validEdgeCount;
     stats.cpuTime = cpuTime;
   }
 

@@ -43,6 +43,8 @@ export class FramePlan {
   private readonly slotsInRange: HullSlot[] = [];
   private inRangeCount = 0;
   private readonly grid = new HullGrid();
+  /** Box around the bounds of every light placed this frame that casts shadows: the grid files only hulls inside it. */
+  private readonly reach = new Float64Array(4);
 
   build(
     lights: readonly Light[], hulls: readonly Hull[], geometry: ShadowGeometry,
@@ -51,23 +53,44 @@ export class FramePlan {
     this.indexCount = 0;
     this.edgeCount = 0;
     this.drawCount = 0;
-    this.grid.build(hulls);
+    const placed = this.placeLights(lights, viewProjection, targetWidth, targetHeight);
+    this.grid.build(geometry.coarseBounds, geometry.castsShadow, hulls.length, this.reach);
+    // Keeps the placed lights whose centre is not inside a hull, in order.
+    for (let i = 0; i < placed; i++) {
+      const draw = this.draws[i];
+      if (!this.collectHulls(draw, hulls, geometry)) continue;
+      this.draws[i] = this.draws[this.drawCount];
+      this.draws[this.drawCount++] = draw;
+    }
+  }
+
+  /**
+   * Puts the enabled, visible, on-screen lights' quads, bounds and scissors in the first draws and
+   * their shadow casters' bounds together in `reach`; returns how many.
+   */
+  private placeLights(lights: readonly Light[], viewProjection: ReadonlyMat4, targetWidth: number, targetHeight: number): number {
+    const reach = this.reach;
+    reach[0] = reach[1] = Infinity;
+    reach[2] = reach[3] = -Infinity;
+    let placed = 0;
     for (let i = 0; i < lights.length; i++) {
       const light = lights[i];
       if (!light.enabled || light.intensity === 0 || light.range === 0) continue;
-      const draw = this.nextDraw();
+      if (this.draws.length === placed) this.draws.push(new LightDraw());
+      const draw = this.draws[placed];
       draw.light = light;
       light.writeQuad(draw.quad);
       writeBounds(draw);
       if (!scissorOf(draw.bounds, viewProjection, targetWidth, targetHeight, draw.scissor)) continue;
-      if (!this.collectHulls(draw, hulls, geometry)) continue;
-      this.drawCount++;
+      placed++;
+      if (!light.castsShadows) continue;
+      const b = draw.bounds;
+      if (b[0] < reach[0]) reach[0] = b[0];
+      if (b[1] < reach[1]) reach[1] = b[1];
+      if (b[2] > reach[2]) reach[2] = b[2];
+      if (b[3] > reach[3]) reach[3] = b[3];
     }
-  }
-
-  private nextDraw(): LightDraw {
-    if (this.draws.length === this.drawCount) this.draws.push(new LightDraw());
-    return this.draws[this.drawCount];
+    return placed;
   }
 
   /** Appends the index lists of the hulls in range; false when the light centre is inside a hull. */
@@ -87,17 +110,24 @@ export class FramePlan {
     return true;
   }
 
-  /** Fills `slotsInRange`; false when the light centre is inside one of them. */
+  /**
+   * Fills `slotsInRange` with the hulls whose exact bounds overlap the light's, transforming each
+   * candidate the grid finds by its coarse bounds first (see `ShadowGeometry.prepare`), so every
+   * change reaches the light this frame; false when the light centre is inside one of them.
+   */
   private findHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
     const light = draw.light;
     const lx = light.position[0], ly = light.position[1];
+    const b = draw.bounds;
     const grid = this.grid;
-    const count = grid.search(draw.bounds);
+    const count = grid.search(b);
     for (let i = 0; i < count; i++) {
-      const hull = hulls[grid.found[i]];
+      const index = grid.found[i];
+      const hull = hulls[index];
       if (light.ignoredHulls.size > 0 && light.ignoredHulls.has(hull)) continue;
+      const slot = geometry.prepare(index);
       const h = hull.worldBounds;
-      const slot = geometry.slotOf(hull)!;
+      if (h[0] > b[2] || h[2] < b[0] || h[1] > b[3] || h[3] < b[1]) continue;
       if (h[0] <= lx && lx <= h[2] && h[1] <= ly && ly <= h[3]
         && isInsidePolygon(hull.worldPoints, lx, ly, 0, slot.pointCount)) return false;
       if (this.inRangeCount === this.slotsInRange.length) this.slotsInRange.push(slot);

@@ -29,88 +29,134 @@ export interface HullSlot {
  *   uniform, so this changes only when a hull does) and the hull pass (as vertices);
  * - `triangleIndices`: each hull's triangulation as global point indices.
  *
- * `update` rewrites only hulls whose version changed and reports the dirty point range; adding,
- * removing or reshaping a hull re-lays out everything.
+ * Hull data is written lazily: `update` only refreshes the coarse bounds of hulls that changed
+ * (constant time each) into flat arrays the hull grid reads without touching the hulls, and a hull is transformed and written by {@link ShadowGeometry.prepare} when some
+ * light finds it in range, so hulls far from every light cost (almost) nothing. Only prepared
+ * hulls' data is meaningful, and only they are drawn. Adding, removing or reshaping a hull
+ * re-lays out everything.
  */
 export class ShadowGeometry {
   points = new Float32Array(0);
   triangleIndices = new Uint32Array(0);
   pointCount = 0;
   triangleIndexCount = 0;
-  /** Point range `[dirtyFirst, dirtyEnd)` changed by the last update (empty when equal). */
-  dirtyFirst = 0;
-  dirtyEnd = 0;
-  /** True when the last update re-laid out the arrays (so everything must be uploaded). */
-  relaidOut = false;
-  private readonly slots = new Map<Hull, HullSlot>();
+  /** Per row of {@link POINT_ROW} points: 1 when a hull written since the last `update` has points in it. */
+  dirtyRows = new Uint8Array(0);
+  /** Per hull, `Hull.coarseBounds` as of the last update: `[minX, minY, maxX, maxY]` at `4 × index`. */
+  coarseBounds = new Float64Array(0);
+  /** Per hull: 1 when it is enabled and valid (it may shadow a light). */
+  castsShadow = new Uint8Array(0);
+  /** Edges of all valid hulls. */
+  validEdgeCount = 0;
+  private slots: HullSlot[] = [];
   private layoutHulls: Hull[] = [];
+  /** Per hull: `hull.version` when `coarseBounds` and `castsShadow` were last refreshed. */
+  private refreshedVersions = new Float64Array(0);
+  /** Per hull: its edges counted in `validEdgeCount`. */
+  private countedEdges = new Int32Array(0);
 
   /** Forgets the layout so the next update rewrites and re-uploads everything (e.g. after a context loss). */
   invalidate(): void {
     this.layoutHulls = [];
-    this.slots.clear();
+    this.slots = [];
   }
 
-  /** The slot of a hull, or undefined for a hull not in the last update. */
-  slotOf(hull: Hull): HullSlot | undefined {
-    return this.slots.get(hull);
-  }
-
-  /** Brings the arrays up to date with `hulls`, touching only what changed. */
+  /**
+   * Lays the arrays out for `hulls` if they changed, and refreshes the per-hull flat arrays of the
+   * hulls that changed. Reads one field of an unchanged hull: touching every hull's objects each
+   * frame (bounds arrays, getters) cost more than everything else on ten thousand far hulls.
+   */
   update(hulls: readonly Hull[]): void {
-    this.dirtyFirst = Infinity;
-    this.dirtyEnd = 0;
-    this.relaidOut = this.needsLayout(hulls);
-    if (this.relaidOut) this.layOut(hulls);
+    this.dirtyRows.fill(0);
     // Indexed loops here and in other per-frame code: a for-of over thousands of hulls showed
     // iterator results on the heap every frame.
-    for (let i = 0; i < hulls.length; i++) {
-      const hull = hulls[i];
-      const slot = this.slots.get(hull)!;
-      const moved = hull.updateWorld();
-      if (!moved && slot.version === hull.version && !this.relaidOut) continue;
-      slot.version = hull.version;
-      this.writeHull(hull, slot);
-      if (slot.firstPoint < this.dirtyFirst) this.dirtyFirst = slot.firstPoint;
-      if (slot.firstPoint + slot.pointCount > this.dirtyEnd) this.dirtyEnd = slot.firstPoint + slot.pointCount;
+    if (hulls.length !== this.layoutHulls.length || !this.refresh(hulls)) {
+      this.layOut(hulls);
+      this.refresh(hulls);
     }
-    if (this.dirtyEnd === 0) this.dirtyFirst = 0;
   }
 
-  private needsLayout(hulls: readonly Hull[]): boolean {
-    if (hulls.length !== this.layoutHulls.length) return true;
+  /**
+   * The slot of the hull at `index` in the last update's list, its world points and data brought
+   * up to date first (and their rows marked dirty) if the hull changed since it was last written.
+   */
+  prepare(index: number): HullSlot {
+    const hull = this.layoutHulls[index];
+    const slot = this.slots[index];
+    if (slot.version === hull.version) return slot;
+    hull.updateWorld();
+    slot.version = hull.version;
+    this.writeHull(hull, slot);
+    this.dirtyRows.fill(1, Math.floor(slot.firstPoint / POINT_ROW), Math.floor((slot.firstPoint + slot.pointCount - 1) / POINT_ROW) + 1);
+    return slot;
+  }
+
+  /** Refreshes the flat arrays of changed hulls; false when the list or a hull's shape no longer fits the layout. */
+  private refresh(hulls: readonly Hull[]): boolean {
+    const layout = this.layoutHulls;
     for (let i = 0; i < hulls.length; i++) {
       const hull = hulls[i];
-      const slot = this.slots.get(hull);
-      if (this.layoutHulls[i] !== hull || !slot || slot.pointCount !== hull.edgeCount
-        || slot.triangleIndexCount !== hull.worldTriangles.length) return true;
+      if (hull !== layout[i]) return false;
+      if (hull.version === this.refreshedVersions[i]) continue;
+      const slot = this.slots[i];
+      if (slot.pointCount !== hull.edgeCount || slot.triangleIndexCount !== hull.worldTriangles.length) return false;
+      this.refreshHull(hull, i);
     }
-    return false;
+    return true;
+  }
+
+  private refreshHull(hull: Hull, index: number): void {
+    this.refreshedVersions[index] = hull.version;
+    hull.updateCoarseBounds();
+    const from = hull.coarseBounds, to = this.coarseBounds;
+    to[4 * index] = from[0];
+    to[4 * index + 1] = from[1];
+    to[4 * index + 2] = from[2];
+    to[4 * index + 3] = from[3];
+    this.castsShadow[index] = hull.enabled && hull.valid ? 1 : 0;
+    const edges = hull.valid ? hull.edgeCount : 0;
+    this.validEdgeCount += edges - this.countedEdges[index];
+    this.countedEdges[index] = edges;
   }
 
   private layOut(hulls: readonly Hull[]): void {
-    this.slots.clear();
     this.layoutHulls = hulls.slice();
+    this.slots = [];
     let points = 0, triangleIndices = 0;
     for (const hull of hulls) {
-      hull.updateWorld();
       const slot: HullSlot = {
         firstPoint: points, pointCount: hull.edgeCount,
         firstTriangleIndex: triangleIndices, triangleIndexCount: hull.worldTriangles.length, version: -1,
       };
-      this.slots.set(hull, slot);
+      this.slots.push(slot);
       points += slot.pointCount;
       triangleIndices += slot.triangleIndexCount;
     }
     this.pointCount = points;
     this.triangleIndexCount = triangleIndices;
+    this.allocatePerHull(hulls.length);
     if (this.points.length < points * POINT_FLOATS) {
       const wanted = Math.max(points, Math.ceil(this.points.length / POINT_FLOATS * 1.5));
       this.points = new Float32Array(Math.ceil(wanted / POINT_ROW) * POINT_ROW * POINT_FLOATS);
+      this.dirtyRows = new Uint8Array(this.points.length / (POINT_ROW * POINT_FLOATS));
     }
     if (this.triangleIndices.length < triangleIndices) {
       this.triangleIndices = new Uint32Array(Math.max(triangleIndices, Math.ceil(this.triangleIndices.length * 1.5)));
     }
+  }
+
+  /** Sizes the per-hull flat arrays for `count` hulls, every hull to be refreshed. */
+  private allocatePerHull(count: number): void {
+    if (this.castsShadow.length < count) {
+      const capacity = Math.ceil(count * 1.5);
+      this.coarseBounds = new Float64Array(4 * capacity);
+      this.castsShadow = new Uint8Array(capacity);
+      this.refreshedVersions = new Float64Array(capacity);
+      this.countedEdges = new Int32Array(capacity);
+    }
+    this.refreshedVersions.fill(-1);
+    this.countedEdges.fill(0);
+    this.validEdgeCount = 0;
   }
 
   private writeHull(hull: Hull, slot: HullSlot): void {

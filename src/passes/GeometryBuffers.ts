@@ -8,7 +8,9 @@ const POINTS_TEXTURE_WIDTH = POINT_ROW;
  * The shared GPU copy of the hull geometry: the point records (as a vertex buffer for the hull
  * pass and as an RGBA32F texture the shadow-mask pass fetches edges from), and the frame's lists:
  * triangle indices for the hull pass, edge numbers for the instanced shadow quads. Uploads only the
- * dirty point range unless the layout changed.
+ * runs of dirty point rows unless the capacity changed: one call pair per run rather than one span
+ * from the first to the last dirty row, so two hulls moving far apart in the arrays do not upload
+ * everything between them.
  *
  * Shadow quads are instanced (one instance per edge, its corners from `gl_VertexID`): per light the
  * CPU writes and uploads 4 bytes per edge, where four vertices and six indices per edge took 24
@@ -52,8 +54,8 @@ export class GeometryBuffers {
     if (capacity !== this.pointCapacity) {
       this.pointCapacity = capacity;
       this.allocate(geometry);
-    } else if (geometry.dirtyEnd > geometry.dirtyFirst) {
-      this.uploadPoints(geometry, geometry.dirtyFirst, geometry.dirtyEnd);
+    } else {
+      this.uploadDirtyRows(geometry);
     }
     // The index buffer is element state of the hull vertex array: bound through it, never through the host's.
     gl.bindVertexArray(this.hullVertexArray);
@@ -94,14 +96,24 @@ export class GeometryBuffers {
     if (rows > 0) this.uploadPointRows(geometry, 0, rows);
   }
 
-  private uploadPoints(geometry: ShadowGeometry, first: number, end: number): void {
+  private uploadDirtyRows(geometry: ShadowGeometry): void {
+    const dirty = geometry.dirtyRows;
+    for (let row = 0; row < dirty.length; row++) {
+      if (dirty[row] === 0) continue;
+      const first = row;
+      while (row + 1 < dirty.length && dirty[row + 1] !== 0) row++;
+      this.uploadPoints(geometry, first, row + 1 - first);
+    }
+  }
+
+  /** Uploads `rows` whole rows of point records from `firstRow` to the vertex buffer and the texture. */
+  private uploadPoints(geometry: ShadowGeometry, firstRow: number, rows: number): void {
     const gl = this.gl;
+    const rowFloats = POINTS_TEXTURE_WIDTH * POINT_FLOATS;
     gl.bindBuffer(gl.ARRAY_BUFFER, this.pointBuffer);
-    gl.bufferSubData(gl.ARRAY_BUFFER, first * POINT_FLOATS * 4, geometry.points, first * POINT_FLOATS, (end - first) * POINT_FLOATS);
-    const firstRow = Math.floor(first / POINTS_TEXTURE_WIDTH);
-    const endRow = Math.ceil(end / POINTS_TEXTURE_WIDTH);
+    gl.bufferSubData(gl.ARRAY_BUFFER, firstRow * rowFloats * 4, geometry.points, firstRow * rowFloats, rows * rowFloats);
     gl.bindTexture(gl.TEXTURE_2D, this.pointsTexture);
-    this.uploadPointRows(geometry, firstRow, endRow - firstRow);
+    this.uploadPointRows(geometry, firstRow, rows);
   }
 
   /** Uploads whole texture rows; the points array holds whole rows (see POINT_ROW). */

@@ -36,6 +36,9 @@ export class Hull {
   private mirroredTriangles: readonly number[] = [];
   private worldVersion = -1;
   private worldIsMirrored = false;
+  private coarseVersion = -1;
+  /** Largest distance of a local point from `origin`; NaN when points or origin changed since it was computed. */
+  private pivotRadius = NaN;
 
   /**
    * Bumped by every change; the renderer compares it to decide what to rebuild.
@@ -46,6 +49,11 @@ export class Hull {
   worldPoints = new Float32Array(0);
   /** World-space bounds `[minX, minY, maxX, maxY]`. @internal */
   readonly worldBounds = new Float64Array(4);
+  /**
+   * Bounds that contain `worldBounds`, from position, scale and `pivotRadius` alone; see
+   * {@link Hull.updateCoarseBounds}. @internal
+   */
+  readonly coarseBounds = new Float64Array(4);
 
   constructor(points: ReadonlyArray<Vec2Like>, options: HullOptions = {}) {
     this.points = points;
@@ -76,6 +84,7 @@ export class Hull {
     const last = (cleaned.length >> 1) - 1;
     this.mirroredTriangles = this.localTriangles.map((index) => last - index);
     this.worldPoints = new Float32Array(cleaned.length);
+    this.pivotRadius = NaN;
     this.touch();
   }
 
@@ -99,6 +108,7 @@ export class Hull {
   }
   set origin(value: Vec2Like) {
     copyVec2('Hull.origin', value, this._origin);
+    this.pivotRadius = NaN;
     this.touch();
   }
 
@@ -162,9 +172,10 @@ export class Hull {
     this.worldVersion = this.version;
     const n = this.edgeCount;
     const cos = Math.cos(this._rotation), sin = Math.sin(this._rotation);
-    const [sx, sy] = this._scale;
-    const [ox, oy] = this._origin;
-    const [px, py] = this._position;
+    // Indexed, not destructured: array destructuring goes through the iterator protocol and allocates.
+    const sx = this._scale[0], sy = this._scale[1];
+    const ox = this._origin[0], oy = this._origin[1];
+    const px = this._position[0], py = this._position[1];
     this.worldIsMirrored = sx * sy < 0;
     const bounds = this.worldBounds;
     bounds[0] = bounds[1] = Infinity;
@@ -183,6 +194,37 @@ export class Hull {
       if (y > bounds[3]) bounds[3] = y;
     }
     return true;
+  }
+
+  /**
+   * Recomputes `coarseBounds` if the hull changed since the last call, in constant time: every
+   * world point lies within `max(|sx|, |sy|) × pivotRadius` of `position` whatever the rotation,
+   * so the renderer can cull a hull without transforming its points.
+   * @internal
+   */
+  updateCoarseBounds(): void {
+    if (this.coarseVersion === this.version) return;
+    this.coarseVersion = this.version;
+    if (Number.isNaN(this.pivotRadius)) this.pivotRadius = this.farthestFromOrigin();
+    const scale = Math.max(Math.abs(this._scale[0]), Math.abs(this._scale[1]));
+    // Padded by a relative hair, so rounding in the exact transform never lands a point outside.
+    const reach = scale * this.pivotRadius * (1 + 1e-9);
+    const b = this.coarseBounds;
+    b[0] = this._position[0] - reach;
+    b[1] = this._position[1] - reach;
+    b[2] = this._position[0] + reach;
+    b[3] = this._position[1] + reach;
+  }
+
+  private farthestFromOrigin(): number {
+    const local = this.localPoints;
+    const ox = this._origin[0], oy = this._origin[1];
+    let farthest = 0;
+    for (let i = 0; i < local.length; i += 2) {
+      const dx = local[i] - ox, dy = local[i + 1] - oy;
+      farthest = Math.max(farthest, dx * dx + dy * dy);
+    }
+    return Math.sqrt(farthest);
   }
 
   private touch(): void {

@@ -10,14 +10,21 @@ function seededRandom(seed: number): () => number {
 
 function square(x: number, y: number, size: number): Hull {
   const hull = new Hull([[0, 0], [size, 0], [size, size], [0, size]], { position: [x, y] });
-  hull.updateWorld();
+  hull.updateCoarseBounds();
   return hull;
+}
+
+/** Builds `grid` over the coarse bounds of the enabled, valid hulls, as the frame plan does. */
+function build(grid: HullGrid, hulls: readonly Hull[], clip = [-Infinity, -Infinity, Infinity, Infinity]): void {
+  const bounds = new Float64Array(4 * hulls.length);
+  hulls.forEach((hull, i) => bounds.set(hull.coarseBounds, 4 * i));
+  grid.build(bounds, Uint8Array.from(hulls, (hull) => (hull.enabled && hull.valid ? 1 : 0)), hulls.length, clip);
 }
 
 function bruteForce(hulls: readonly Hull[], box: number[]): number[] {
   const found: number[] = [];
   hulls.forEach((hull, i) => {
-    const h = hull.worldBounds;
+    const h = hull.coarseBounds;
     if (hull.enabled && hull.valid && !(h[0] > box[2] || h[2] < box[0] || h[1] > box[3] || h[3] < box[1])) found.push(i);
   });
   return found;
@@ -29,7 +36,7 @@ describe('HullGrid', () => {
     const hulls = Array.from({ length: 500 }, () => square(random() * 2000 - 500, random() * 1000, 2 + random() * 120));
     hulls[3].enabled = false;
     const grid = new HullGrid();
-    grid.build(hulls);
+    build(grid, hulls);
     for (let q = 0; q < 200; q++) {
       const x = random() * 2400 - 700, y = random() * 1400 - 200, w = random() * 700, h = random() * 700;
       const box = [x, y, x + w, y + h];
@@ -41,15 +48,17 @@ describe('HullGrid', () => {
 
   it('finds nothing without hulls, and follows hulls that moved after a rebuild', () => {
     const grid = new HullGrid();
-    grid.build([]);
+    build(grid, []);
     expect(grid.search([0, 0, 100, 100])).toBe(0);
     const hull = square(0, 0, 10);
-    grid.build([hull]);
+    build(grid, [hull]);
     expect(grid.search([0, 0, 5, 5])).toBe(1);
     hull.setPosition(500, 500);
-    hull.updateWorld();
-    grid.build([hull]);
+    hull.updateCoarseBounds();
+    build(grid, [hull]);
     expect(grid.search([0, 0, 5, 5])).toBe(0);
     expect(grid.search([505, 505, 506, 506])).toBe(1);
+    build(grid, [hull], [0, 0, 400, 400]);
+    expect(grid.search([505, 505, 506, 506])).toBe(0);
   });
 });
