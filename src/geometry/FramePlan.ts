@@ -129,7 +129,7 @@ export class FramePlan {
       const h = hull.worldBounds;
       if (h[0] > b[2] || h[2] < b[0] || h[1] > b[3] || h[3] < b[1]) continue;
       if (h[0] <= lx && lx <= h[2] && h[1] <= ly && ly <= h[3]
-        && isInsidePolygon(hull.worldPoints, lx, ly, 0, slot.pointCount)) return false;
+        && isInsidePolygon(hull.worldPoints, light.position, 0, slot.pointCount)) return false;
       if (this.inRangeCount === this.slotsInRange.length) this.slotsInRange.push(slot);
       else this.slotsInRange[this.inRangeCount] = slot;
       this.inRangeCount++;

@@ -93,8 +93,12 @@ export function isSimplePolygon(coords: ArrayLike<number>): boolean {
   return true;
 }
 
-/** Even-odd point-in-polygon test on `count` points starting at point `first`. */
-export function isInsidePolygon(coords: ArrayLike<number>, x: number, y: number, first = 0, count = (coords.length >> 1) - first): boolean {
+/**
+ * Even-odd test of `point` (`[x, y]`) against the polygon of `count` points starting at point
+ * `first`. The point comes as an array: two doubles passed to a call that is not inlined are boxed.
+ */
+export function isInsidePolygon(coords: ArrayLike<number>, point: ArrayLike<number>, first = 0, count = (coords.length >> 1) - first): boolean {
+  const x = point[0], y = point[1];
   let inside = false;
   for (let i = 0, j = count - 1; i < count; j = i++) {
     const xi = coords[2 * (first + i)], yi = coords[2 * (first + i) + 1];

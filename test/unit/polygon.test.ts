@@ -44,8 +44,8 @@ describe('polygon winding and validity', () => {
 
   it('tests points against a concave outline', () => {
     const l = [0, 0, 30, 0, 30, 10, 10, 10, 10, 30, 0, 30];
-    expect(isInsidePolygon(l, 5, 25)).toBe(true);
-    expect(isInsidePolygon(l, 20, 20)).toBe(false); // in the notch
+    expect(isInsidePolygon(l, [5, 25])).toBe(true);
+    expect(isInsidePolygon(l, [20, 20])).toBe(false); // in the notch
   });
 });
 
