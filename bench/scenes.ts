@@ -25,6 +25,10 @@ export const SCENES: readonly SceneSpec[] = [
 const MOVING_HULL_STRIDE = 10;
 /** Far hulls start this far right of the world: beyond the longest light range plus its wander. */
 const FAR_OFFSET = 1000;
+/** How far a light (12 pixels) and a hull (6 pixels) wander from their anchors. */
+const WANDER = 12 + 6;
+/** Tries at a spot clear of every light before a hull keeps its last one (rare even in S4). */
+const PLACEMENT_TRIES = 64;
 
 /** A deterministic scene and its per-frame animation, which allocates nothing. */
 export interface BenchScene {
@@ -47,7 +51,7 @@ export function seededRandom(seed: number): () => number {
   };
 }
 
-/** Builds `spec` from `seed`: lights of range 150–350 and radius 5–25; hulls mostly convex (3–5 points), one in eight concave. */
+/** Builds `spec` from `seed`: lights of range 150–350 and radius 5–25; hulls mostly convex (3–5 points), one in eight concave, placed so that no light centre is ever inside one. */
 export function createScene(spec: SceneSpec, seed = 1): BenchScene {
   const random = seededRandom(seed);
   const between = (low: number, high: number) => low + (high - low) * random();
@@ -66,10 +70,17 @@ export function createScene(spec: SceneSpec, seed = 1): BenchScene {
   const total = spec.hulls + spec.farHulls;
   for (let i = 0; i < total; i++) {
     const far = i >= spec.hulls;
-    const x = far ? WORLD_WIDTH + FAR_OFFSET + between(0, WORLD_WIDTH * 10) : between(0, WORLD_WIDTH);
-    const y = between(0, WORLD_HEIGHT);
+    const shape = random() < 1 / 8 ? concaveShape(between) : convexShape(between);
+    // Hulls turn around their position: a light anchor this far away never ends up inside one.
+    const clearance = reach(shape) + WANDER;
+    let x = 0, y = 0;
+    for (let attempt = 0; attempt < PLACEMENT_TRIES; attempt++) {
+      x = far ? WORLD_WIDTH + FAR_OFFSET + between(0, WORLD_WIDTH * 10) : between(0, WORLD_WIDTH);
+      y = between(0, WORLD_HEIGHT);
+      if (far || clearOfLights(anchors, x, y, clearance)) break;
+    }
     const rotation = between(0, Math.PI * 2);
-    hulls.push(new Hull(random() < 1 / 8 ? concaveShape(between) : convexShape(between), { position: [x, y], rotation }));
+    hulls.push(new Hull(shape, { position: [x, y], rotation }));
     hullAnchors.push(x, y, rotation);
   }
   const position: [number, number] = [0, 0];
@@ -89,6 +100,22 @@ export function createScene(spec: SceneSpec, seed = 1): BenchScene {
       }
     },
   };
+}
+
+/** Whether `(x, y)` is at least `clearance` from every light anchor (`[x, y, phase]` triples). */
+function clearOfLights(anchors: Float64Array, x: number, y: number, clearance: number): boolean {
+  for (let i = 0; i < anchors.length; i += 3) {
+    const dx = anchors[i] - x, dy = anchors[i + 1] - y;
+    if (dx * dx + dy * dy < clearance * clearance) return false;
+  }
+  return true;
+}
+
+/** Largest distance of a shape's points from its origin. */
+function reach(shape: [number, number][]): number {
+  let farthest = 0;
+  for (const [x, y] of shape) farthest = Math.max(farthest, Math.sqrt(x * x + y * y));
+  return farthest;
 }
 
 type Between = (low: number, high: number) => number;
