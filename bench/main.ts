@@ -30,6 +30,8 @@ const only = args.get('scenes')?.split(',');
 const scenes = SCENES.filter((scene) => !only || only.includes(scene.name));
 const cpuFrames = Number(args.get('frames') ?? 100);
 const browserFrames = Number(args.get('browser-frames') ?? 10);
+// The browser frames' lightmap resolution scale (the renderer's `lightmapScale`), for fill-bound comparisons.
+const lightmapScale = Number(args.get('lightmap-scale') ?? 1);
 // run.mjs starts the bundle from the repository root.
 const root = process.cwd();
 /** Frames run in Chromium before the measured ones. */
@@ -55,7 +57,7 @@ if (!args.has('no-browser')) {
       await page.goto(server.url, { waitUntil: 'load' });
       await page.waitForFunction('window.penumbraBench');
       // Evaluated in the page: each function must name the page's API itself.
-      await page.evaluate((name) => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.setup(name), spec.name);
+      await page.evaluate((name, scale) => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.setup(name, scale), spec.name, lightmapScale);
       const times: { frame: number[]; floor: number[] } = { frame: [], floor: [] };
       for (let frame = 0; frame < BROWSER_WARMUP + browserFrames; frame++) {
         const measured = await page.evaluate(() => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.frame());

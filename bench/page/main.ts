@@ -10,7 +10,7 @@ export interface FrameTimes {
 
 /** What the runner calls, one frame per call so that no call outlasts the DevTools protocol timeout. */
 export interface BenchPage {
-  setup(name: string): void;
+  setup(name: string, lightmapScale: number): void;
   frame(): FrameTimes;
   teardown(): void;
 }
@@ -22,11 +22,11 @@ const floatPixel = new Float32Array(4);
 let current: { scene: BenchScene; renderer: PenumbraRenderer; floor: FillFloor; frame: number } | null = null;
 
 const page: BenchPage = {
-  setup(name) {
+  setup(name, lightmapScale) {
     const spec = SCENES.find((scene) => scene.name === name);
     if (!spec) throw new Error(`no scene ${name}`);
     const scene = createScene(spec);
-    const renderer = new PenumbraRenderer(gl, { ambientColor: [0.05, 0.05, 0.05] });
+    const renderer = new PenumbraRenderer(gl, { ambientColor: [0.05, 0.05, 0.05], lightmapScale });
     for (const light of scene.lights) renderer.addLight(light);
     for (const hull of scene.hulls) renderer.addHull(hull);
     current = { scene, renderer, floor: new FillFloor(gl, WORLD_WIDTH, WORLD_HEIGHT), frame: 0 };
