@@ -98,7 +98,9 @@ export class Hull {
   }
   /** Moves the hull without allocating. */
   setPosition(x: number, y: number): this {
-    this.position = [x, y];
+    this._position[0] = assertFinite('Hull.position[0]', x);
+    this._position[1] = assertFinite('Hull.position[1]', y);
+    this.touch();
     return this;
   }
 
