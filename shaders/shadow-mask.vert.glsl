@@ -1,47 +1,111 @@
 #version 300 es
-// Shadow mask, vertex stage: turns each hull edge into a quad that covers every point the edge can
-// hide any part of the light disk from. The two far corners are pushed along the outer tangents of
-// the disk through the edge's end points, far beyond the light's bounds (the scissor cuts them).
-// They stay finite rather than at w = 0: SwiftShader culls every triangle with a w = 0 vertex.
+// Shadow mask, vertex stage: turns each shadow caster of the light into a quad (two triangles, six
+// vertices, no attributes) that covers every point where the caster can hide part of the light disk.
+// - A convex hull clear of the disk (caster -1 - its first point) casts one region: between the disk's two inner
+//   tangents through the hull (the outer bounds of its penumbrae), from the hull's nearest point
+//   out to the light's reach.
+// - Any other hull casts one quad per edge: the edge, its ends pushed along the inner tangents far
+//   beyond the light's bounds (the scissor cuts them). They stay finite rather than at w = 0:
+//   SwiftShader culls every triangle with a w = 0 vertex.
+// Both wind clockwise (y up) when the light must draw them, so light-facing edges are culled.
 precision highp float;
 precision highp int;
 precision highp sampler2D;
 
-// One instance per edge; the edge's number is the global number of its start point.
-layout(location = 0) in uint a_edge;
-
 // Point records: world xy, then the first point and point count of the point's hull.
 uniform sampler2D u_hullPoints;
+// The frame's casters (see FramePlan); this light's start at u_firstCaster.
+uniform sampler2D u_casters;
+uniform int u_firstCaster;
 uniform mat4 u_viewProjection;
 uniform vec2 u_lightPosition;
 uniform float u_lightRadius;
+uniform float u_lightReach;       // the light adds nothing farther from its position
 uniform float u_projectionLength; // well beyond the light's bounds, see ShadowMaskPass
+// Debug wireframe: eight vertices per caster, the quad's four sides as lines.
+uniform bool u_outline;
 
 flat out ivec2 v_hull;
+flat out int v_wholeHull;
 
-vec4 pointRecord(int index) {
+vec4 texelAt(int index) {
   int width = textureSize(u_hullPoints, 0).x;
   return texelFetch(u_hullPoints, ivec2(index % width, index / width), 0);
 }
 
-void main() {
-  int edge = int(a_edge);
-  vec4 start = pointRecord(edge);
-  ivec2 hull = ivec2(start.zw);
-  vec2 end = pointRecord(hull.x + (edge - hull.x + 1) % hull.y).xy;
-  // Corners in fan order: start, end, end projected, start projected.
-  vec2 corner = vec2(gl_VertexID == 1 || gl_VertexID == 2 ? 1.0 : 0.0, gl_VertexID >= 2 ? 1.0 : 0.0);
-  vec2 point = mix(start.xy, end, corner.x);
-  vec2 other = mix(end, start.xy, corner.x);
+float casterAt(int index) {
+  int width = textureSize(u_casters, 0).x;
+  return texelFetch(u_casters, ivec2(index % width, index / width), 0).r;
+}
+
+float cross2(vec2 a, vec2 b) {
+  return a.x * b.y - a.y * b.x;
+}
+
+// Corner 0..3 of an edge quad, in fan order: start, end, end projected, start projected.
+vec2 edgeQuadCorner(int edge, ivec2 hull, int corner) {
+  vec2 start = texelAt(edge).xy;
+  vec2 end = texelAt(hull.x + (edge - hull.x + 1) % hull.y).xy;
+  bool atEnd = corner == 1 || corner == 2;
+  vec2 point = atEnd ? end : start;
+  vec2 other = atEnd ? start : end;
   vec2 fromLight = point - u_lightPosition;
   float distance = max(length(fromLight), 1e-6);
   vec2 direction = fromLight / distance;
-  // The outer tangent from the disk through the point leans away from the edge's other end by asin(r / d).
+  // The inner tangent from the disk through the point leans away from the edge's other end by asin(r / d).
   float sine = min(u_lightRadius / distance, 1.0);
   float cosine = sqrt(1.0 - sine * sine);
-  vec2 along = other - point;
-  float away = -sign(direction.x * along.y - direction.y * along.x) * sine;
+  float away = -sign(cross2(direction, other - point)) * sine;
   vec2 tangent = vec2(direction.x * cosine - direction.y * away, direction.x * away + direction.y * cosine);
-  gl_Position = u_viewProjection * vec4(point + tangent * (corner.y * u_projectionLength), 0.0, 1.0);
+  return point + tangent * (corner >= 2 ? u_projectionLength : 0.0);
+}
+
+// Where the line through `point` along `direction` meets the line at distance `along` from the light on `axis`.
+vec2 atDistance(vec2 point, vec2 direction, vec2 axis, float along) {
+  return point + direction * ((along - dot(point - u_lightPosition, axis)) / dot(direction, axis));
+}
+
+// Corner 0..3 of a convex hull's region, clockwise: near and far on the high (counter-clockwise)
+// tangent, far and near on the low one. FramePlan sends only hulls clear enough of the disk that
+// both tangents lie within 65° of their bisector, so the comparisons and divisions hold.
+vec2 hullRegionCorner(ivec2 hull, int corner) {
+  // Through each hull point run two lines tangent to the disk's far sides, asin(r / d) either side
+  // of the light-to-point direction; the most turned ones over all points are the inner tangents.
+  vec2 highPoint, highDirection, lowPoint, lowDirection;
+  for (int i = 0; i < hull.y; i++) {
+    vec2 point = texelAt(hull.x + i).xy;
+    vec2 direction = normalize(point - u_lightPosition);
+    float sine = min(u_lightRadius / length(point - u_lightPosition), 1.0);
+    float cosine = sqrt(1.0 - sine * sine);
+    vec2 high = vec2(direction.x * cosine - direction.y * sine, direction.x * sine + direction.y * cosine);
+    vec2 low = vec2(direction.x * cosine + direction.y * sine, direction.y * cosine - direction.x * sine);
+    if (i == 0 || cross2(highDirection, high) > 0.0) {
+      highDirection = high;
+      highPoint = point;
+    }
+    if (i == 0 || cross2(lowDirection, low) < 0.0) {
+      lowDirection = low;
+      lowPoint = point;
+    }
+  }
+  vec2 axis = normalize(highDirection + lowDirection);
+  float near = u_lightReach;
+  for (int i = 0; i < hull.y; i++) near = min(near, dot(texelAt(hull.x + i).xy - u_lightPosition, axis));
+  // A hull beyond the reach collapses to a line and draws nothing.
+  float along = corner == 1 || corner == 2 ? u_lightReach : near;
+  return corner <= 1 ? atDistance(highPoint, highDirection, axis, along) : atDistance(lowPoint, lowDirection, axis, along);
+}
+
+void main() {
+  int vertex = gl_VertexID % (u_outline ? 8 : 6);
+  // Triangles (0 1 2) (0 2 3), or the lines (0 1) (1 2) (2 3) (3 0).
+  int corner = u_outline ? ((vertex + 1) / 2) % 4 : (vertex < 3 ? vertex : (vertex == 3 ? 0 : vertex - 2));
+  float caster = casterAt(u_firstCaster + gl_VertexID / (u_outline ? 8 : 6));
+  bool wholeHull = caster < 0.0;
+  int point = int(wholeHull ? -1.0 - caster : caster);
+  ivec2 hull = ivec2(texelAt(point).zw);
+  vec2 world = wholeHull ? hullRegionCorner(hull, corner) : edgeQuadCorner(point, hull, corner);
+  gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
   v_hull = hull;
+  v_wholeHull = wholeHull ? 1 : 0;
 }

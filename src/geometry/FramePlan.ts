@@ -6,6 +6,22 @@ import { isInsidePolygon } from './polygon';
 import { scissorOf } from './scissor';
 import type { HullSlot, ShadowGeometry } from './ShadowGeometry';
 
+/**
+ * A shadow caster is one `casters` entry: `-1 - firstPoint` for a convex hull well clear of the
+ * light disk, whose shadow is one region; otherwise an edge's number (the number of its start
+ * point), for one quad per edge. See shadow-mask.vert.glsl. Floats, uploaded as an R32F texture
+ * (headless-gl refuses R32UI uploads): exact while the hulls have fewer than 2^24 points in all.
+ */
+/** `casters` grows in whole rows of this many entries, so it fills the rows of the texture it is uploaded to. */
+export const CASTER_ROW = 1024;
+
+/**
+ * How far outside a hull's bounding circle, in units of the circle's and the disk's radii together,
+ * the light disk must lie for the hull to be one caster: the inner tangents then lean at most
+ * asin(1 / 1.1) ≈ 65° off their bisector, a bound the shadow-mask vertex stage relies on.
+ */
+const HULL_CASTER_CLEARANCE = 1.1;
+
 /** What the passes need to draw one light: its quad, scissor, and the edges and triangles of the hulls in its range. */
 export class LightDraw {
   light!: Light;
@@ -15,9 +31,11 @@ export class LightDraw {
   readonly bounds = new Float64Array(4);
   /** `[x, y, width, height]` in lightmap pixels. */
   readonly scissor = new Int32Array(4);
-  /** Offset and count, in the plan's `edges`, of the numbers of the edges in range (one shadow quad instance each). */
-  edgeOffset = 0;
-  edgeCount = 0;
+  /** Offset and count, in the plan's `casters`, of the shadow casters in range (one shadow quad each). */
+  casterOffset = 0;
+  casterCount = 0;
+  /** Distance from the light's position beyond which it adds nothing (`Light.reach`). */
+  reach = 0;
   /** Offset and count, in the plan's `indices`, of the triangles of the hulls in range. */
   triangleIndexOffset = 0;
   triangleIndexCount = 0;
@@ -34,13 +52,15 @@ export class FramePlan {
   /** Triangle indices (global point numbers) of the hulls in range, per light. */
   indices = new Uint32Array(1024);
   indexCount = 0;
-  /** Edge numbers (= global point numbers of their start) of the hulls in range, per light. */
-  edges = new Uint32Array(1024);
-  edgeCount = 0;
+  /** Shadow casters (see {@link CASTER_ROW}) of the hulls in range, per light. */
+  casters = new Float32Array(CASTER_ROW);
+  casterCount = 0;
   readonly draws: LightDraw[] = [];
   drawCount = 0;
   /** Slots of the hulls in range of the current light: the first `inRangeCount` entries (never truncated, which would free the backing store). */
   private readonly slotsInRange: HullSlot[] = [];
+  /** The hulls of `slotsInRange`. */
+  private readonly hullsInRange: Hull[] = [];
   private inRangeCount = 0;
   private readonly grid = new HullGrid();
   /** Box around the bounds of every light placed this frame that casts shadows: the grid files only hulls inside it. */
@@ -51,7 +71,7 @@ export class FramePlan {
     viewProjection: ReadonlyMat4, targetWidth: number, targetHeight: number,
   ): void {
     this.indexCount = 0;
-    this.edgeCount = 0;
+    this.casterCount = 0;
     this.drawCount = 0;
     const placed = this.placeLights(lights, viewProjection, targetWidth, targetHeight);
     this.grid.build(geometry.coarseBounds, geometry.castsShadow, hulls.length, this.reach);
@@ -79,6 +99,7 @@ export class FramePlan {
       if (this.draws.length === placed) this.draws.push(new LightDraw());
       const draw = this.draws[placed];
       draw.light = light;
+      draw.reach = light.reach();
       light.writeQuad(draw.quad);
       writeBounds(draw);
       if (!scissorOf(draw.bounds, viewProjection, targetWidth, targetHeight, draw.scissor)) continue;
@@ -101,9 +122,9 @@ export class FramePlan {
     if (light.castsShadows && !this.findHullsInRange(draw, hulls, geometry)) return false;
     const count = this.inRangeCount;
     draw.hullCount = count;
-    draw.edgeOffset = this.edgeCount;
-    for (let i = 0; i < count; i++) this.appendEdges(inRange[i].firstPoint, inRange[i].pointCount);
-    draw.edgeCount = this.edgeCount - draw.edgeOffset;
+    draw.casterOffset = this.casterCount;
+    for (let i = 0; i < count; i++) this.appendCasters(inRange[i], this.hullsInRange[i], light);
+    draw.casterCount = this.casterCount - draw.casterOffset;
     draw.triangleIndexOffset = this.indexCount;
     for (let i = 0; i < count; i++) this.appendTriangles(geometry, inRange[i]);
     draw.triangleIndexCount = this.indexCount - draw.triangleIndexOffset;
@@ -130,8 +151,13 @@ export class FramePlan {
       if (h[0] > b[2] || h[2] < b[0] || h[1] > b[3] || h[3] < b[1]) continue;
       if (h[0] <= lx && lx <= h[2] && h[1] <= ly && ly <= h[3]
         && isInsidePolygon(hull.worldPoints, light.position, 0, slot.pointCount)) return false;
-      if (this.inRangeCount === this.slotsInRange.length) this.slotsInRange.push(slot);
-      else this.slotsInRange[this.inRangeCount] = slot;
+      if (this.inRangeCount === this.slotsInRange.length) {
+        this.slotsInRange.push(slot);
+        this.hullsInRange.push(hull);
+      } else {
+        this.slotsInRange[this.inRangeCount] = slot;
+        this.hullsInRange[this.inRangeCount] = hull;
+      }
       this.inRangeCount++;
     }
     return true;
@@ -146,21 +172,34 @@ export class FramePlan {
     this.indexCount = k;
   }
 
-  private appendEdges(firstEdge: number, edgeCount: number): void {
-    this.edges = ensureCapacity(this.edges, this.edgeCount, edgeCount);
-    const edges = this.edges;
-    let k = this.edgeCount;
-    for (let e = firstEdge, end = firstEdge + edgeCount; e < end; e++) edges[k++] = e;
-    this.edgeCount = k;
+  /** Appends the hull as one caster when it is convex and clear of the disk, else its edges. */
+  private appendCasters(slot: HullSlot, hull: Hull, light: Light): void {
+    this.casters = ensureCapacity(this.casters, this.casterCount, slot.pointCount, CASTER_ROW);
+    const casters = this.casters;
+    if (hull.convex && isClearOfDisk(hull.worldBounds, light.position, light.radius)) {
+      casters[this.casterCount++] = -1 - slot.firstPoint;
+      return;
+    }
+    let k = this.casterCount;
+    for (let e = slot.firstPoint, end = e + slot.pointCount; e < end; e++) casters[k++] = e;
+    this.casterCount = k;
   }
 }
 
-/** `array`, or a grown copy of its first `used` entries, with room for `extra` more. */
-function ensureCapacity(array: Uint32Array<ArrayBuffer>, used: number, extra: number): Uint32Array<ArrayBuffer> {
+/** `array`, or a grown copy of its first `used` entries, with room for `extra` more (and a length a multiple of `granule`). */
+function ensureCapacity<T extends Uint32Array<ArrayBuffer> | Float32Array<ArrayBuffer>>(array: T, used: number, extra: number, granule = 1): T {
   if (used + extra <= array.length) return array;
-  const grown = new Uint32Array(Math.max(used + extra, array.length * 2));
+  const grown = new (array.constructor as new (length: number) => T)(Math.ceil(Math.max(used + extra, array.length * 2) / granule) * granule);
   grown.set(array.subarray(0, used));
   return grown;
+}
+
+/** Whether a disk lies {@link HULL_CASTER_CLEARANCE} times outside the bounding circle of `bounds`. */
+function isClearOfDisk(bounds: Float64Array, centre: readonly [number, number], radius: number): boolean {
+  const halfWidth = (bounds[2] - bounds[0]) / 2, halfHeight = (bounds[3] - bounds[1]) / 2;
+  const dx = bounds[0] + halfWidth - centre[0], dy = bounds[1] + halfHeight - centre[1];
+  const clearance = HULL_CASTER_CLEARANCE * (Math.sqrt(halfWidth * halfWidth + halfHeight * halfHeight) + radius);
+  return dx * dx + dy * dy > clearance * clearance;
 }
 
 function writeBounds(draw: LightDraw): void {

@@ -93,6 +93,18 @@ export function isSimplePolygon(coords: ArrayLike<number>): boolean {
   return true;
 }
 
+/** Whether a simple counter-clockwise polygon is convex: it never turns clockwise. */
+export function isConvexPolygon(coords: ArrayLike<number>): boolean {
+  const count = coords.length >> 1;
+  for (let i = 0; i < count; i++) {
+    const a = (i + count - 1) % count, b = (i + 1) % count;
+    const ax = coords[2 * i] - coords[2 * a], ay = coords[2 * i + 1] - coords[2 * a + 1];
+    const bx = coords[2 * b] - coords[2 * i], by = coords[2 * b + 1] - coords[2 * i + 1];
+    if (ax * by - ay * bx < 0) return false;
+  }
+  return true;
+}
+
 /**
  * Even-odd test of `point` (`[x, y]`) against the polygon of `count` points starting at point
  * `first`. The point comes as an array: two doubles passed to a call that is not inlined are boxed.

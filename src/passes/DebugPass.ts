@@ -2,22 +2,26 @@ import type { ReadonlyMat4 } from 'gl-matrix';
 import type { LightDraw } from '../geometry/FramePlan';
 import { createProgram, type Program } from '../gl/program';
 import type { UnitQuad } from '../gl/UnitQuad';
+import { CasterUniforms } from './CasterUniforms';
 import type { GeometryBuffers } from './GeometryBuffers';
 import { shaderSources } from './shaders';
-import { projectionLength } from './ShadowMaskPass';
+
+/** Vertices per caster in the wireframe: its quad's four sides as lines. */
+const OUTLINE_VERTICES = 8;
 
 /**
  * Debug pass: over the composited image, outlines each drawn light's quad (yellow) and draws its
- * shadow geometry as wireframe (magenta: hull edges and the rays projected from their corners),
- * cut at the light's scissor rectangle.
+ * shadow casters' quads as wireframe (magenta), cut at the light's scissor rectangle.
  */
 export class DebugPass {
   private readonly quadProgram: Program;
   private readonly shadowProgram: Program;
+  private readonly casterUniforms: CasterUniforms;
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly quad: UnitQuad) {
     this.quadProgram = createProgram(gl, 'debug light quads', shaderSources.lightVertex, shaderSources.debugFragment);
     this.shadowProgram = createProgram(gl, 'debug shadow geometry', shaderSources.shadowMaskVertex, shaderSources.debugFragment);
+    this.casterUniforms = new CasterUniforms(gl);
   }
 
   /**
@@ -32,18 +36,13 @@ export class DebugPass {
       const s = draw.scissor;
       gl.scissor(offsetX + Math.floor(s[0] * toTargetX), offsetY + Math.floor(s[1] * toTargetY), Math.ceil(s[2] * toTargetX), Math.ceil(s[3] * toTargetY));
       gl.useProgram(this.shadowProgram.handle);
-      const shadowUniforms = this.shadowProgram.uniforms;
-      gl.uniformMatrix4fv(shadowUniforms.u_viewProjection, false, viewProjection);
-      gl.uniform2f(shadowUniforms.u_lightPosition, draw.light.position[0], draw.light.position[1]);
-      gl.uniform1f(shadowUniforms.u_lightRadius, draw.light.radius);
-      gl.uniform1f(shadowUniforms.u_projectionLength, projectionLength(draw.bounds));
-      gl.uniform4f(shadowUniforms.u_color, 1, 0, 1, 1);
-      gl.uniform1i(shadowUniforms.u_hullPoints, 0);
-      gl.activeTexture(gl.TEXTURE0);
-      gl.bindTexture(gl.TEXTURE_2D, buffers.pointsTexture);
-      buffers.bindEdges(draw);
-      // Each edge quad as a loop: the edge, the rays from its ends and the far side.
-      gl.drawArraysInstanced(gl.LINE_LOOP, 0, 4, draw.edgeCount);
+      this.casterUniforms.set(this.shadowProgram, draw, buffers, viewProjection);
+      gl.uniform1i(this.shadowProgram.uniforms.u_outline, 1);
+      gl.uniform4f(this.shadowProgram.uniforms.u_color, 1, 0, 1, 1);
+      gl.bindVertexArray(buffers.casterVertexArray);
+      // Each caster's quad as its four sides: an edge's quad shows the edge, the rays from its ends
+      // and the far side; a hull's region its nearest line, the two inner tangents and the reach.
+      gl.drawArrays(gl.LINES, 0, OUTLINE_VERTICES * draw.casterCount);
       gl.useProgram(this.quadProgram.handle);
       const quadUniforms = this.quadProgram.uniforms;
       gl.uniformMatrix4fv(quadUniforms.u_viewProjection, false, viewProjection);

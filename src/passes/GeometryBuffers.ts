@@ -1,5 +1,5 @@
 import { POINT_FLOATS, POINT_ROW, type ShadowGeometry } from '../geometry/ShadowGeometry';
-import type { FramePlan, LightDraw } from '../geometry/FramePlan';
+import { CASTER_ROW, type FramePlan } from '../geometry/FramePlan';
 
 /** Width of the hull-points texture, in points: one row per block of point capacity. */
 const POINTS_TEXTURE_WIDTH = POINT_ROW;
@@ -7,37 +7,34 @@ const POINTS_TEXTURE_WIDTH = POINT_ROW;
 /**
  * The shared GPU copy of the hull geometry: the point records (as a vertex buffer for the hull
  * pass and as an RGBA32F texture the shadow-mask pass fetches edges from), and the frame's lists:
- * triangle indices for the hull pass, edge numbers for the instanced shadow quads. Uploads only the
+ * triangle indices for the hull pass, shadow casters (an R32F texture) for the shadow quads. Uploads only the
  * runs of dirty point rows unless the capacity changed: one call pair per run rather than one span
  * from the first to the last dirty row, so two hulls moving far apart in the arrays do not upload
  * everything between them.
  *
- * Shadow quads are instanced (one instance per edge, its corners from `gl_VertexID`): per light the
- * CPU writes and uploads 4 bytes per edge, where four vertices and six indices per edge took 24
- * bytes of indices per light plus 128 bytes of vertices per edge.
+ * Shadow quads have no vertex attributes: the six vertices of caster `i` of a light find it from
+ * `gl_VertexID` in the casters texture, so per light the CPU writes and uploads 4 bytes per caster.
+ * Not instanced: SwiftShader runs each instance as a draw of its own, about 10 µs each (measured
+ * at 20,000 small quads: 216 ms instanced, 27 ms as one draw of triangles).
  */
 export class GeometryBuffers {
-  private readonly edgeVertexArray: WebGLVertexArrayObject;
+  /** A vertex array with no attributes, for the shadow quads. */
+  readonly casterVertexArray: WebGLVertexArrayObject;
   readonly hullVertexArray: WebGLVertexArrayObject;
   readonly pointsTexture: WebGLTexture;
+  readonly castersTexture: WebGLTexture;
   private readonly pointBuffer: WebGLBuffer;
   private readonly indexBuffer: WebGLBuffer;
-  private readonly edgeBuffer: WebGLBuffer;
   private pointCapacity = 0;
   private indexCapacity = 0;
-  private edgeCapacity = 0;
+  private casterCapacity = 0;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
     this.pointBuffer = gl.createBuffer()!;
     this.indexBuffer = gl.createBuffer()!;
-    this.edgeBuffer = gl.createBuffer()!;
     this.pointsTexture = gl.createTexture()!;
-    this.edgeVertexArray = gl.createVertexArray()!;
-    gl.bindVertexArray(this.edgeVertexArray);
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.edgeBuffer);
-    gl.enableVertexAttribArray(0);
-    gl.vertexAttribIPointer(0, 1, gl.UNSIGNED_INT, 0, 0);
-    gl.vertexAttribDivisor(0, 1);
+    this.castersTexture = gl.createTexture()!;
+    this.casterVertexArray = gl.createVertexArray()!;
     this.hullVertexArray = gl.createVertexArray()!;
     gl.bindVertexArray(this.hullVertexArray);
     gl.bindBuffer(gl.ARRAY_BUFFER, this.pointBuffer);
@@ -65,23 +62,21 @@ export class GeometryBuffers {
       gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, plan.indices.byteLength, gl.DYNAMIC_DRAW);
     }
     if (plan.indexCount > 0) gl.bufferSubData(gl.ELEMENT_ARRAY_BUFFER, 0, plan.indices, 0, plan.indexCount);
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.edgeBuffer);
-    if (plan.edgeCount > this.edgeCapacity) {
-      this.edgeCapacity = plan.edges.length;
-      gl.bufferData(gl.ARRAY_BUFFER, plan.edges.byteLength, gl.DYNAMIC_DRAW);
-    }
-    if (plan.edgeCount > 0) gl.bufferSubData(gl.ARRAY_BUFFER, 0, plan.edges, 0, plan.edgeCount);
+    this.uploadCasters(plan);
   }
 
-  /**
-   * Binds the edge vertex array with its instance attribute pointing at `draw`'s edges (WebGL2 has
-   * no base instance), for `drawArraysInstanced(mode, 0, 4, draw.edgeCount)`.
-   */
-  bindEdges(draw: LightDraw): void {
+  /** Uploads the rows of the casters texture that hold the frame's casters, reallocating it when the plan's array grew. */
+  private uploadCasters(plan: FramePlan): void {
     const gl = this.gl;
-    gl.bindVertexArray(this.edgeVertexArray);
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.edgeBuffer);
-    gl.vertexAttribIPointer(0, 1, gl.UNSIGNED_INT, 0, draw.edgeOffset * 4);
+    gl.bindTexture(gl.TEXTURE_2D, this.castersTexture);
+    if (plan.casters.length !== this.casterCapacity) {
+      this.casterCapacity = plan.casters.length;
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.R32F, CASTER_ROW, this.casterCapacity / CASTER_ROW, 0, gl.RED, gl.FLOAT, null);
+    }
+    const rows = Math.ceil(plan.casterCount / CASTER_ROW);
+    if (rows > 0) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, CASTER_ROW, rows, gl.RED, gl.FLOAT, plan.casters, 0);
   }
 
   private allocate(geometry: ShadowGeometry): void {
@@ -127,9 +122,9 @@ export class GeometryBuffers {
     const gl = this.gl;
     gl.deleteBuffer(this.pointBuffer);
     gl.deleteBuffer(this.indexBuffer);
-    gl.deleteBuffer(this.edgeBuffer);
     gl.deleteTexture(this.pointsTexture);
-    gl.deleteVertexArray(this.edgeVertexArray);
+    gl.deleteTexture(this.castersTexture);
+    gl.deleteVertexArray(this.casterVertexArray);
     gl.deleteVertexArray(this.hullVertexArray);
   }
 }

@@ -1,4 +1,4 @@
-import { isSimplePolygon, signedArea2, simplifyPolygon, triangulate } from '../geometry/polygon';
+import { isConvexPolygon, isSimplePolygon, signedArea2, simplifyPolygon, triangulate } from '../geometry/polygon';
 import { assertFinite, copyVec2, type Vec2Like } from './validate';
 
 /** Options of a {@link Hull}; every field has the default shown. */
@@ -30,6 +30,7 @@ export class Hull {
   private _rotation = 0;
   private _enabled = true;
   private _shapeValid = false;
+  private _convex = false;
   /** Cleaned local points, counter-clockwise. */
   private localPoints = new Float64Array(0);
   private localTriangles: readonly number[] = [];
@@ -81,6 +82,7 @@ export class Hull {
     if (this._shapeValid && signedArea2(cleaned) < 0) reversePoints(cleaned);
     this.localPoints = Float64Array.from(cleaned);
     this.localTriangles = this._shapeValid ? triangulate(cleaned) : [];
+    this._convex = this._shapeValid && isConvexPolygon(cleaned);
     const last = (cleaned.length >> 1) - 1;
     this.mirroredTriangles = this.localTriangles.map((index) => last - index);
     this.worldPoints = new Float32Array(cleaned.length);
@@ -148,6 +150,11 @@ export class Hull {
   /** Whether the points form a simple polygon (≥ 3 points, no crossing edges, non-zero area) and the scale is non-zero. */
   get valid(): boolean {
     return this._shapeValid && this._scale[0] !== 0 && this._scale[1] !== 0;
+  }
+
+  /** Whether the hull is valid and convex (convex hulls get the cheaper one-region-per-hull shadow geometry). */
+  get convex(): boolean {
+    return this._convex && this.valid;
   }
 
   /** Number of points (= edges) the renderer uses: the given points without duplicates and collinear points. */

@@ -159,6 +159,15 @@ export abstract class Light {
     out[1] = this._position[1] - ox * out[3] - oy * out[5];
   }
 
+  /**
+   * Distance from `position` beyond which the light adds nothing, so its shadows need reach no
+   * further: `range` for the procedural lights, whose falloff ends there.
+   * @internal
+   */
+  reach(): number {
+    return this._range;
+  }
+
   /** Normalised point of the quad placed at `position`. */
   protected quadPivot(): readonly [number, number] {
     return CENTRE;
@@ -238,7 +247,7 @@ export interface TexturedLightOptions extends LightOptions {
  * A light whose intensity at each pixel comes from a texture (a "light cookie", red channel)
  * stretched over a quad of `size`, with `origin` as its pivot at `position` and turned by
  * `rotation`. No procedural falloff: animate the texture for flicker. Shadows are cast
- * from `position`; `range` bounds the shadows and the culling.
+ * from `position` over the whole quad; `range` sets the default `size`.
  */
 export class TexturedLight extends Light {
   readonly kind = 'textured';
@@ -274,5 +283,13 @@ export class TexturedLight extends Light {
 
   protected override quadPivot(): readonly [number, number] {
     return this.origin;
+  }
+
+  /** The farthest corner of the quad: the cookie has no falloff, so it may light its whole quad. */
+  override reach(): number {
+    const pivot = this.quadPivot();
+    const x = Math.max(pivot[0], 1 - pivot[0]) * this.quadWidth();
+    const y = Math.max(pivot[1], 1 - pivot[1]) * this.quadHeight();
+    return Math.sqrt(x * x + y * y);
   }
 }

@@ -2,7 +2,7 @@ import { mat4 } from 'gl-matrix';
 import { describe, expect, it } from 'vitest';
 import { FramePlan } from '../../src/geometry/FramePlan';
 import { ShadowGeometry } from '../../src/geometry/ShadowGeometry';
-import { Hull, PointLight, type Light } from '../../src/index';
+import { Hull, PointLight, TexturedLight, type Light } from '../../src/index';
 
 const WIDTH = 200, HEIGHT = 100;
 const pixelSpace = mat4.ortho(mat4.create(), 0, WIDTH, HEIGHT, 0, -1, 1);
@@ -79,5 +79,34 @@ describe('FramePlan culling', () => {
     expect(plan([light], [near, far]).draws[0].hullCount).toBe(1);
     light.castsShadows = false;
     expect(plan([light], [near, far]).draws[0].hullCount).toBe(0);
+  });
+});
+
+describe('FramePlan shadow casters', () => {
+  const casters = (framePlan: FramePlan) => {
+    const draw = framePlan.draws[0];
+    return Array.from(framePlan.casters.subarray(draw.casterOffset, draw.casterOffset + draw.casterCount));
+  };
+
+  it('makes a convex hull clear of the light disk one caster, numbered -1 - its first point', () => {
+    const far = new Hull([[80, 40], [90, 40], [90, 50], [80, 50]]);
+    expect(casters(plan([new PointLight({ position: [30, 45], range: 100, radius: 10 })], [far]))).toEqual([-1]);
+  });
+
+  it('gives a concave hull, and a convex one near the disk, one caster per edge', () => {
+    const u = new Hull([[80, 30], [100, 30], [100, 60], [80, 60], [80, 55], [95, 55], [95, 35], [80, 35]]);
+    const near = new Hull([[40, 40], [50, 40], [50, 50], [40, 50]]);
+    const light = new PointLight({ position: [30, 45], range: 100, radius: 10 });
+    expect(casters(plan([light], [u, near]))).toEqual([0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]);
+    light.radius = 1;
+    expect(casters(plan([light], [near]))).toEqual([-1]);
+  });
+
+  it('writes each light its reach: the range, or the farthest corner of a textured quad', () => {
+    const framePlan = plan([new PointLight({ position: [50, 50], range: 40 })], []);
+    expect(framePlan.draws[0].reach).toBe(40);
+    // The plan never reads the cookie texture itself.
+    const cookie = new TexturedLight({ position: [50, 50], range: 10, size: [40, 20], origin: [0, 0.5], texture: {} as WebGLTexture });
+    expect(plan([cookie], []).draws[0].reach).toBeCloseTo(Math.sqrt(40 * 40 + 10 * 10), 9);
   });
 });

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { isInsidePolygon, isSimplePolygon, signedArea2, simplifyPolygon, triangulate } from '../../src/geometry/polygon';
+import { isConvexPolygon, isInsidePolygon, isSimplePolygon, signedArea2, simplifyPolygon, triangulate } from '../../src/geometry/polygon';
 import { Hull } from '../../src/index';
 
 const square = [0, 0, 10, 0, 10, 10, 0, 10];
@@ -79,5 +79,23 @@ describe('Hull validity', () => {
     expect(hull.valid).toBe(false);
     hull.points = [[0, 0], [10, 0], [10, 10], [0, 10]];
     expect(hull.valid).toBe(true);
+  });
+});
+
+describe('convexity', () => {
+  it('tells convex counter-clockwise polygons from concave ones', () => {
+    expect(isConvexPolygon([0, 0, 10, 0, 10, 10, 0, 10])).toBe(true);
+    expect(isConvexPolygon([0, 0, 10, 0, 5, 3, 10, 10, 0, 10])).toBe(false);
+  });
+
+  it('holds for a hull given clockwise, mirrored, or invalid', () => {
+    const hull = new Hull([[0, 10], [10, 10], [10, 0], [0, 0]]);
+    expect(hull.convex).toBe(true);
+    hull.scale = [-1, 1];
+    expect(hull.convex).toBe(true);
+    hull.points = [[0, 0], [10, 0], [5, 3], [10, 10], [0, 10]];
+    expect(hull.convex).toBe(false);
+    hull.points = [[0, 0], [10, 10], [10, 0], [0, 10]];
+    expect(hull.convex).toBe(false);
   });
 });

@@ -1,0 +1,60 @@
+import type { ReadonlyMat4 } from 'gl-matrix';
+import type { LightDraw } from '../geometry/FramePlan';
+import type { Program } from '../gl/program';
+import type { GeometryBuffers } from './GeometryBuffers';
+
+/** Vertices per shadow caster: its quad as two triangles (see shadow-mask.vert.glsl). */
+export const CASTER_VERTICES = 6;
+
+/** Texture units shadow-mask.vert.glsl reads hull points and casters from. */
+const POINTS_UNIT = 0;
+const CASTERS_UNIT = 1;
+
+/**
+ * How far the far corners of an edge's shadow quad are pushed: many times the light's bounds
+ * diagonal, so that even when the two tangents of a long edge diverge widely the quad's far side
+ * stays outside the scissor rectangle.
+ */
+export function projectionLength(bounds: Float64Array): number {
+  const width = bounds[2] - bounds[0], height = bounds[3] - bounds[1];
+  // Not Math.hypot: it is variadic and allocates.
+  return 64 * Math.sqrt(width * width + height * height);
+}
+
+/**
+ * Sets the uniforms and textures of shadow-mask.vert.glsl for one light's casters: for the
+ * shadow-mask pass and the debug wireframe, whose programs share that vertex stage.
+ */
+export class CasterUniforms {
+  // Through reused typed arrays: doubles passed to a GL call one by one are boxed on the heap.
+  // (One array per uniform: headless-gl lacks the srcOffset/srcLength overloads.)
+  private readonly lightPosition = new Float32Array(2);
+  private readonly lightRadius = new Float32Array(1);
+  private readonly lightReach = new Float32Array(1);
+  private readonly projectionLength = new Float32Array(1);
+
+  constructor(private readonly gl: WebGL2RenderingContext) {}
+
+  /** Sets `program`'s caster uniforms for `draw` (the program must be in use) and binds the textures; leaves unit 0 active. */
+  set(program: Program, draw: LightDraw, buffers: GeometryBuffers, viewProjection: ReadonlyMat4): void {
+    const gl = this.gl;
+    const uniforms = program.uniforms;
+    gl.uniformMatrix4fv(uniforms.u_viewProjection, false, viewProjection);
+    this.lightPosition[0] = draw.light.position[0];
+    this.lightPosition[1] = draw.light.position[1];
+    this.lightRadius[0] = draw.light.radius;
+    this.lightReach[0] = draw.reach;
+    this.projectionLength[0] = projectionLength(draw.bounds);
+    gl.uniform2fv(uniforms.u_lightPosition, this.lightPosition);
+    gl.uniform1fv(uniforms.u_lightRadius, this.lightRadius);
+    gl.uniform1fv(uniforms.u_lightReach, this.lightReach);
+    gl.uniform1fv(uniforms.u_projectionLength, this.projectionLength);
+    gl.uniform1i(uniforms.u_firstCaster, draw.casterOffset);
+    gl.uniform1i(uniforms.u_hullPoints, POINTS_UNIT);
+    gl.uniform1i(uniforms.u_casters, CASTERS_UNIT);
+    gl.activeTexture(gl.TEXTURE0 + CASTERS_UNIT);
+    gl.bindTexture(gl.TEXTURE_2D, buffers.castersTexture);
+    gl.activeTexture(gl.TEXTURE0 + POINTS_UNIT);
+    gl.bindTexture(gl.TEXTURE_2D, buffers.pointsTexture);
+  }
+}
