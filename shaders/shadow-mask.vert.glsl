@@ -26,7 +26,6 @@ uniform float u_projectionLength; // well beyond the light's bounds, see ShadowM
 uniform bool u_outline;
 
 flat out ivec2 v_hull;
-flat out int v_wholeHull;
 
 vec4 texelAt(int index) {
   int width = textureSize(u_hullPoints, 0).x;
@@ -107,5 +106,4 @@ void main() {
   vec2 world = wholeHull ? hullRegionCorner(hull, corner) : edgeQuadCorner(point, hull, corner);
   gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
   v_hull = hull;
-  v_wholeHull = wholeHull ? 1 : 0;
 }

@@ -34,6 +34,8 @@ export class LightDraw {
   /** Offset and count, in the plan's `casters`, of the shadow casters in range (one shadow quad each). */
   casterOffset = 0;
   casterCount = 0;
+  /** How many of those casters, first, are whole hulls; the rest are edges. */
+  hullCasterCount = 0;
   /** Distance from the light's position beyond which it adds nothing (`Light.reach`). */
   reach = 0;
   /** Offset and count, in the plan's `indices`, of the triangles of the hulls in range. */
@@ -123,7 +125,13 @@ export class FramePlan {
     const count = this.inRangeCount;
     draw.hullCount = count;
     draw.casterOffset = this.casterCount;
-    for (let i = 0; i < count; i++) this.appendCasters(inRange[i], this.hullsInRange[i], light);
+    for (let i = 0; i < count; i++) {
+      if (castsOneRegion(this.hullsInRange[i], light)) this.appendHullCaster(inRange[i]);
+    }
+    draw.hullCasterCount = this.casterCount - draw.casterOffset;
+    for (let i = 0; i < count; i++) {
+      if (!castsOneRegion(this.hullsInRange[i], light)) this.appendEdgeCasters(inRange[i]);
+    }
     draw.casterCount = this.casterCount - draw.casterOffset;
     draw.triangleIndexOffset = this.indexCount;
     for (let i = 0; i < count; i++) this.appendTriangles(geometry, inRange[i]);
@@ -172,14 +180,14 @@ export class FramePlan {
     this.indexCount = k;
   }
 
-  /** Appends the hull as one caster when it is convex and clear of the disk, else its edges. */
-  private appendCasters(slot: HullSlot, hull: Hull, light: Light): void {
+  private appendHullCaster(slot: HullSlot): void {
+    this.casters = ensureCapacity(this.casters, this.casterCount, 1, CASTER_ROW);
+    this.casters[this.casterCount++] = -1 - slot.firstPoint;
+  }
+
+  private appendEdgeCasters(slot: HullSlot): void {
     this.casters = ensureCapacity(this.casters, this.casterCount, slot.pointCount, CASTER_ROW);
     const casters = this.casters;
-    if (hull.convex && isClearOfDisk(hull.worldBounds, light.position, light.radius)) {
-      casters[this.casterCount++] = -1 - slot.firstPoint;
-      return;
-    }
     let k = this.casterCount;
     for (let e = slot.firstPoint, end = e + slot.pointCount; e < end; e++) casters[k++] = e;
     this.casterCount = k;
@@ -194,11 +202,13 @@ function ensureCapacity<T extends Uint32Array<ArrayBuffer> | Float32Array<ArrayB
   return grown;
 }
 
-/** Whether a disk lies {@link HULL_CASTER_CLEARANCE} times outside the bounding circle of `bounds`. */
-function isClearOfDisk(bounds: Float64Array, centre: readonly [number, number], radius: number): boolean {
+/** Whether the hull's shadow is one region: it is convex and the light disk lies {@link HULL_CASTER_CLEARANCE} times outside its bounding circle. */
+function castsOneRegion(hull: Hull, light: Light): boolean {
+  if (!hull.convex) return false;
+  const bounds = hull.worldBounds, centre = light.position;
   const halfWidth = (bounds[2] - bounds[0]) / 2, halfHeight = (bounds[3] - bounds[1]) / 2;
   const dx = bounds[0] + halfWidth - centre[0], dy = bounds[1] + halfHeight - centre[1];
-  const clearance = HULL_CASTER_CLEARANCE * (Math.sqrt(halfWidth * halfWidth + halfHeight * halfHeight) + radius);
+  const clearance = HULL_CASTER_CLEARANCE * (Math.sqrt(halfWidth * halfWidth + halfHeight * halfHeight) + light.radius);
   return dx * dx + dy * dy > clearance * clearance;
 }
 

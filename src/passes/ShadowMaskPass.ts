@@ -17,11 +17,14 @@ const NOTHING_HIDDEN = new Float32Array(4);
  */
 export class ShadowMaskPass {
   readonly target: RenderTarget;
-  private readonly program: Program;
+  /** For whole convex hulls' regions, and for edge quads: two programs rather than a branch per fragment, which cost SwiftShader 30%. */
+  private readonly hullProgram: Program;
+  private readonly edgesProgram: Program;
   private readonly casterUniforms: CasterUniforms;
 
   constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number) {
-    this.program = createProgram(gl, 'shadow mask', shaderSources.shadowMaskVertex, shaderSources.shadowMaskFragment);
+    this.hullProgram = createProgram(gl, 'shadow mask of hulls', shaderSources.shadowMaskVertex, shaderSources.shadowHullFragment);
+    this.edgesProgram = createProgram(gl, 'shadow mask of edges', shaderSources.shadowMaskVertex, shaderSources.shadowEdgesFragment);
     this.target = new RenderTarget(gl, { format: 'rgba8' }, width, height);
     this.casterUniforms = new CasterUniforms(gl);
   }
@@ -36,13 +39,8 @@ export class ShadowMaskPass {
    */
   render(draw: LightDraw, buffers: GeometryBuffers, viewProjection: ReadonlyMat4, clipToWorld: ReadonlyMat4, mirrored: boolean): void {
     const gl = this.gl;
-    const uniforms = this.program.uniforms;
     this.target.bind();
     gl.clearBufferfv(gl.COLOR, 0, NOTHING_HIDDEN);
-    gl.useProgram(this.program.handle);
-    gl.uniformMatrix4fv(uniforms.u_clipToWorld, false, clipToWorld);
-    gl.uniform2f(uniforms.u_targetSize, this.target.width, this.target.height);
-    this.casterUniforms.set(this.program, draw, buffers, viewProjection);
     gl.enable(gl.BLEND);
     gl.blendEquation(gl.MAX);
     gl.enable(gl.CULL_FACE);
@@ -50,12 +48,25 @@ export class ShadowMaskPass {
     // Casters the light must draw give clockwise quads in world space (y up).
     gl.frontFace(mirrored ? gl.CCW : gl.CW);
     gl.bindVertexArray(buffers.casterVertexArray);
-    gl.drawArrays(gl.TRIANGLES, 0, CASTER_VERTICES * draw.casterCount);
+    const edgeCasters = draw.casterCount - draw.hullCasterCount;
+    if (draw.hullCasterCount > 0) this.drawCasters(this.hullProgram, draw, buffers, viewProjection, clipToWorld, 0, draw.hullCasterCount);
+    if (edgeCasters > 0) this.drawCasters(this.edgesProgram, draw, buffers, viewProjection, clipToWorld, draw.hullCasterCount, edgeCasters);
     gl.disable(gl.CULL_FACE);
   }
 
+  /** Draws `count` of `draw`'s casters from its `first` on with `program`. */
+  private drawCasters(program: Program, draw: LightDraw, buffers: GeometryBuffers, viewProjection: ReadonlyMat4, clipToWorld: ReadonlyMat4, first: number, count: number): void {
+    const gl = this.gl;
+    gl.useProgram(program.handle);
+    gl.uniformMatrix4fv(program.uniforms.u_clipToWorld, false, clipToWorld);
+    gl.uniform2f(program.uniforms.u_targetSize, this.target.width, this.target.height);
+    this.casterUniforms.set(program, draw, buffers, viewProjection);
+    gl.drawArrays(gl.TRIANGLES, first * CASTER_VERTICES, count * CASTER_VERTICES);
+  }
+
   dispose(): void {
-    this.gl.deleteProgram(this.program.handle);
+    this.gl.deleteProgram(this.hullProgram.handle);
+    this.gl.deleteProgram(this.edgesProgram.handle);
     this.target.dispose();
   }
 }

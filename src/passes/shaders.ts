@@ -8,11 +8,13 @@ import lightPointFragment from '../../shaders/light-point.frag.glsl?raw';
 import lightSpotFragment from '../../shaders/light-spot.frag.glsl?raw';
 import lightTexturedFragment from '../../shaders/light-textured.frag.glsl?raw';
 import lightVertex from '../../shaders/light.vert.glsl?raw';
-import shadowMaskFragment from '../../shaders/shadow-mask.frag.glsl?raw';
+import shadowCommon from '../../shaders/chunks/shadow-common.glsl?raw';
+import shadowEdgesFragment from '../../shaders/shadow-edges.frag.glsl?raw';
+import shadowHullFragment from '../../shaders/shadow-hull.frag.glsl?raw';
 import shadowMaskVertex from '../../shaders/shadow-mask.vert.glsl?raw';
 import { resolveIncludes } from '../gl/program';
 
-const chunks = { 'light-common': lightCommon };
+const chunks = { 'light-common': lightCommon, 'shadow-common': shadowCommon };
 
 /** The GLSL sources, inlined at build time, with their chunks resolved. */
 export const shaderSources = {
@@ -25,6 +27,7 @@ export const shaderSources = {
   lightPointFragment: resolveIncludes(lightPointFragment, chunks),
   lightSpotFragment: resolveIncludes(lightSpotFragment, chunks),
   lightTexturedFragment: resolveIncludes(lightTexturedFragment, chunks),
-  shadowMaskFragment,
+  shadowEdgesFragment: resolveIncludes(shadowEdgesFragment, chunks),
+  shadowHullFragment: resolveIncludes(shadowHullFragment, chunks),
   shadowMaskVertex,
 };

@@ -1,0 +1,77 @@
+// Shared by the shadow-mask fragment stages: the light and hull uniforms, the pixel seen from the
+// light, and the disk areas cut off by chords.
+//
+// Seen from the pixel, a hull (convex or not) hides one interval of directions; measured in disk
+// area from one side of the disk it is [low, high]. It is written as R = high when it reaches the
+// first side, G = 1 - low when it reaches the other side, and B = high - low when it touches
+// neither. With MAX blending, R + G + B is then the exact union for hulls that hide the disk from
+// its sides (the common case) and the largest interval for the rest.
+uniform sampler2D u_hullPoints; // one world point per texel (xy)
+uniform vec2 u_lightPosition;
+uniform float u_lightRadius;
+uniform mat4 u_clipToWorld;
+uniform vec2 u_targetSize;
+
+flat in ivec2 v_hull; // the hull's first point and point count
+
+out vec4 o_mask;
+
+const float PI = 3.14159265358979;
+const float TOUCH = 1.0 / 1024.0;
+// Chord heights past either side of the disk, for directions 90° or more off the light.
+const float PAST_HIGH = 2.0;
+const float PAST_LOW = -2.0;
+
+vec2 pixel;
+vec2 axis;      // unit vector from the pixel to the light centre
+float scale;    // distance to the light over its radius
+
+float cross2(vec2 a, vec2 b) {
+  return a.x * b.y - a.y * b.x;
+}
+
+// Fraction of a unit disk lying below the chord at signed height t.
+float diskAreaBelow(float t) {
+  t = clamp(t, -1.0, 1.0);
+  return 0.5 + (asin(t) + t * sqrt(1.0 - t * t)) / PI;
+}
+
+// A ray at angle θ off the axis passes the light centre at distance·sin(θ); over the radius it is
+// the height of the chord that splits the disk.
+float chordHeight(vec2 direction) {
+  float across = cross2(axis, direction);
+  if (dot(axis, direction) <= 0.0) return across >= 0.0 ? PAST_HIGH : PAST_LOW;
+  return scale * across / length(direction);
+}
+
+// The mask of a hull hiding the directions between the chords at heights low and high.
+vec4 maskBetween(float low, float high) {
+  float lowArea = diskAreaBelow(low);
+  float highArea = diskAreaBelow(high);
+  bool fromFirstSide = lowArea <= TOUCH;
+  bool fromOtherSide = highArea >= 1.0 - TOUCH;
+  if (fromFirstSide && fromOtherSide) return vec4(1.0, 0.0, 0.0, 0.0);
+  if (fromFirstSide) return vec4(highArea, 0.0, 0.0, 0.0);
+  if (fromOtherSide) return vec4(0.0, 1.0 - lowArea, 0.0, 0.0);
+  return vec4(0.0, 0.0, highArea - lowArea, 0.0);
+}
+
+vec2 pointOffset(ivec2 texel) {
+  return texelFetch(u_hullPoints, texel, 0).xy - pixel;
+}
+
+// Steps to the next point's texel instead of dividing the index by the width for every point.
+ivec2 nextTexel(ivec2 texel, int width) {
+  texel.x++;
+  return texel.x == width ? ivec2(0, texel.y + 1) : texel;
+}
+
+// Sets pixel, axis and scale for this fragment.
+void seeFromPixel() {
+  vec2 ndc = gl_FragCoord.xy / u_targetSize * 2.0 - 1.0;
+  pixel = (u_clipToWorld * vec4(ndc, 0.0, 1.0)).xy;
+  vec2 toLight = u_lightPosition - pixel;
+  float distance = max(length(toLight), 1e-6);
+  axis = toLight / distance;
+  scale = distance / max(u_lightRadius, 1e-4);
+}

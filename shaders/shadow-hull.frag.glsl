@@ -1,0 +1,32 @@
+#version 300 es
+// Shadow mask of a convex hull's region, fragment stage: writes which part of the light disk the
+// hull hides from the pixel (see the chunk shadow-common for the channels).
+precision highp float;
+precision highp int;
+precision highp sampler2D;
+#include "shadow-common"
+
+// A convex hull seen from outside spans less than 180°, so a cross product orders the directions
+// of all its points (not only those ahead): the two extremes bound its interval exactly, also
+// when it wraps behind the pixel and hides the disk from both sides, clear of its middle.
+vec4 maskOfConvexHull() {
+  int width = textureSize(u_hullPoints, 0).x;
+  ivec2 texel = ivec2(v_hull.x % width, v_hull.x / width);
+  vec2 lowEnd = pointOffset(texel);
+  vec2 highEnd = lowEnd;
+  for (int i = 1; i < v_hull.y; i++) {
+    texel = nextTexel(texel, width);
+    vec2 toPoint = pointOffset(texel);
+    if (cross2(highEnd, toPoint) > 0.0) highEnd = toPoint;
+    if (cross2(lowEnd, toPoint) < 0.0) lowEnd = toPoint;
+  }
+  bool wrapsBehind = cross2(lowEnd, -axis) > 0.0 && cross2(-axis, highEnd) > 0.0;
+  if (!wrapsBehind) return maskBetween(chordHeight(lowEnd), chordHeight(highEnd));
+  // From the first side up to the high end, and from the low end up to the other side.
+  return vec4(diskAreaBelow(chordHeight(highEnd)), 1.0 - diskAreaBelow(chordHeight(lowEnd)), 0.0, 0.0);
+}
+
+void main() {
+  seeFromPixel();
+  o_mask = maskOfConvexHull();
+}
