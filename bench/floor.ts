@@ -43,6 +43,7 @@ export class FillFloor {
     gl.enableVertexAttribArray(0);
     gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
     gl.bindVertexArray(null);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
   }
 
   /** Draws the lights; the world is the target's pixel space (origin top-left, y down). */

@@ -1,9 +1,9 @@
 #version 300 es
 // Shadow mask, vertex stage: turns each shadow caster of the light into a quad (two triangles, six
 // vertices, no attributes) that covers every point where the caster can hide part of the light disk.
-// - A convex hull clear of the disk (caster -1 - its first point) casts one region: between the disk's two inner
-//   tangents through the hull (the outer bounds of its penumbrae), from the hull's nearest point
-//   out to the light's reach.
+// - A convex hull clear of the disk (caster -1 - its first point) casts one region: between the
+//   disk's two inner tangents through the hull (the outer bounds of its penumbrae), from the hull's
+//   nearest point out to the light's reach. In the umbra pass it casts its umbra instead.
 // - Any other hull casts one quad per edge: the edge, its ends pushed along the inner tangents far
 //   beyond the light's bounds (the scissor cuts them). They stay finite rather than at w = 0:
 //   SwiftShader culls every triangle with a w = 0 vertex.
@@ -24,6 +24,8 @@ uniform float u_lightReach;       // the light adds nothing farther from its pos
 uniform float u_projectionLength; // well beyond the light's bounds, see ShadowMaskPass
 // Debug wireframe: eight vertices per caster, the quad's four sides as lines.
 uniform bool u_outline;
+// Umbra pass: a convex hull's umbra instead of its region, nearer the viewer (see ShadowMaskPass).
+uniform bool u_umbra;
 
 flat out ivec2 v_hull;
 
@@ -64,20 +66,29 @@ vec2 atDistance(vec2 point, vec2 direction, vec2 axis, float along) {
   return point + direction * ((along - dot(point - u_lightPosition, axis)) / dot(direction, axis));
 }
 
-// Corner 0..3 of a convex hull's region, clockwise: near and far on the high (counter-clockwise)
-// tangent, far and near on the low one. FramePlan sends only hulls clear enough of the disk that
-// both tangents lie within 65° of their bisector, so the comparisons and divisions hold.
-vec2 hullRegionCorner(ivec2 hull, int corner) {
-  // Through each hull point run two lines tangent to the disk's far sides, asin(r / d) either side
-  // of the light-to-point direction; the most turned ones over all points are the inner tangents.
+// Lines tangent to the disk through a hull point P, asin(r / d) either side of the light-to-P direction.
+vec2 turned(vec2 direction, float sine, float cosine) {
+  return vec2(direction.x * cosine - direction.y * sine, direction.x * sine + direction.y * cosine);
+}
+
+// Corner 0..3 of a convex hull's region or umbra, clockwise: near and far on the high (counter-
+// clockwise) line, far and near on the low one. FramePlan sends only hulls clear enough of the disk
+// that all these lines lie within 65° of the axis, so the comparisons and divisions hold.
+// - Region: between the inner tangents (each touches the disk on the side away from the hull's
+//   touching point), the outer bounds of the penumbrae, from the hull's nearest point to the reach.
+// - Umbra: between the outer tangents (disk and hull on the same side), beyond the hull's farthest
+//   point, up to where they meet or the reach. The outer tangents bound a convex strip that the hull
+//   crosses from side to side, so every segment from the disk to a point past the hull meets it.
+vec2 hullCorner(ivec2 hull, int corner) {
   vec2 highPoint, highDirection, lowPoint, lowDirection;
+  float sideSign = u_umbra ? -1.0 : 1.0;
   for (int i = 0; i < hull.y; i++) {
     vec2 point = texelAt(hull.x + i).xy;
     vec2 direction = normalize(point - u_lightPosition);
     float sine = min(u_lightRadius / length(point - u_lightPosition), 1.0);
     float cosine = sqrt(1.0 - sine * sine);
-    vec2 high = vec2(direction.x * cosine - direction.y * sine, direction.x * sine + direction.y * cosine);
-    vec2 low = vec2(direction.x * cosine + direction.y * sine, direction.y * cosine - direction.x * sine);
+    vec2 high = turned(direction, sideSign * sine, cosine);
+    vec2 low = turned(direction, -sideSign * sine, cosine);
     if (i == 0 || cross2(highDirection, high) > 0.0) {
       highDirection = high;
       highPoint = point;
@@ -88,10 +99,20 @@ vec2 hullRegionCorner(ivec2 hull, int corner) {
     }
   }
   vec2 axis = normalize(highDirection + lowDirection);
-  float near = u_lightReach;
-  for (int i = 0; i < hull.y; i++) near = min(near, dot(texelAt(hull.x + i).xy - u_lightPosition, axis));
-  // A hull beyond the reach collapses to a line and draws nothing.
-  float along = corner == 1 || corner == 2 ? u_lightReach : near;
+  float near = u_umbra ? 0.0 : u_lightReach;
+  for (int i = 0; i < hull.y; i++) {
+    float along = dot(texelAt(hull.x + i).xy - u_lightPosition, axis);
+    near = u_umbra ? max(near, along) : min(near, along);
+  }
+  float far = u_lightReach;
+  // Outer tangents that meet beyond the hull (a disk wider than the hull) end the umbra there.
+  float meeting = cross2(highDirection, lowDirection);
+  if (u_umbra && meeting > 0.0) {
+    vec2 apex = highPoint + highDirection * (cross2(lowPoint - highPoint, lowDirection) / cross2(highDirection, lowDirection));
+    far = min(far, dot(apex - u_lightPosition, axis));
+  }
+  // A region or umbra that ends before it starts collapses to a line and draws nothing.
+  float along = corner == 1 || corner == 2 ? max(far, near) : near;
   return corner <= 1 ? atDistance(highPoint, highDirection, axis, along) : atDistance(lowPoint, lowDirection, axis, along);
 }
 
@@ -103,7 +124,8 @@ void main() {
   bool wholeHull = caster < 0.0;
   int point = int(wholeHull ? -1.0 - caster : caster);
   ivec2 hull = ivec2(texelAt(point).zw);
-  vec2 world = wholeHull ? hullRegionCorner(hull, corner) : edgeQuadCorner(point, hull, corner);
+  vec2 world = wholeHull ? hullCorner(hull, corner) : edgeQuadCorner(point, hull, corner);
   gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
+  gl_Position.z = (u_umbra ? -1.0 : 0.0) * gl_Position.w;
   v_hull = hull;
 }

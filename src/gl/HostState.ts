@@ -7,7 +7,7 @@ const CAPABILITIES = [
  * A snapshot of the context state the renderer touches, taken before it draws and put back
  * afterwards, so that it can share a context with a host engine. Saved: framebuffers (draw and
  * read), viewport, scissor, the enables above, blend equations/factors, colour/depth/stencil write
- * masks, cull face and front face, program, VAO, array/pixel-unpack buffers, unpack flags, active
+ * masks, depth function, cull face and front face, program, VAO, array/pixel-unpack buffers, unpack flags, active
  * texture and the 2D texture and sampler bound on each texture unit the renderer uses.
  *
  * Saved once or twice a frame, so it queries only what the renderer changes: it never sets the blend
@@ -25,6 +25,7 @@ export class HostState {
   private blendFactors = [0, 0, 0, 0];
   private colorMask: boolean[] = [true, true, true, true];
   private depthMask = true;
+  private depthFunc = 0;
   private stencilMask = 0;
   private stencilBackMask = 0;
   private cullFaceMode = 0;
@@ -62,6 +63,7 @@ export class HostState {
     this.blendFactors[3] = gl.getParameter(gl.BLEND_DST_ALPHA);
     this.colorMask = gl.getParameter(gl.COLOR_WRITEMASK);
     this.depthMask = gl.getParameter(gl.DEPTH_WRITEMASK);
+    this.depthFunc = gl.getParameter(gl.DEPTH_FUNC);
     this.stencilMask = gl.getParameter(gl.STENCIL_WRITEMASK);
     this.stencilBackMask = gl.getParameter(gl.STENCIL_BACK_WRITEMASK);
     this.cullFaceMode = gl.getParameter(gl.CULL_FACE_MODE);
@@ -111,6 +113,7 @@ export class HostState {
     gl.blendFuncSeparate(this.blendFactors[0], this.blendFactors[1], this.blendFactors[2], this.blendFactors[3]);
     gl.colorMask(this.colorMask[0], this.colorMask[1], this.colorMask[2], this.colorMask[3]);
     gl.depthMask(this.depthMask);
+    gl.depthFunc(this.depthFunc);
     gl.stencilMaskSeparate(gl.FRONT, this.stencilMask);
     gl.stencilMaskSeparate(gl.BACK, this.stencilBackMask);
     gl.cullFace(this.cullFaceMode);

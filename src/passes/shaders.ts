@@ -12,6 +12,7 @@ import shadowCommon from '../../shaders/chunks/shadow-common.glsl?raw';
 import shadowEdgesFragment from '../../shaders/shadow-edges.frag.glsl?raw';
 import shadowHullFragment from '../../shaders/shadow-hull.frag.glsl?raw';
 import shadowMaskVertex from '../../shaders/shadow-mask.vert.glsl?raw';
+import shadowUmbraFragment from '../../shaders/shadow-umbra.frag.glsl?raw';
 import { resolveIncludes } from '../gl/program';
 
 const chunks = { 'light-common': lightCommon, 'shadow-common': shadowCommon };
@@ -30,4 +31,5 @@ export const shaderSources = {
   shadowEdgesFragment: resolveIncludes(shadowEdgesFragment, chunks),
   shadowHullFragment: resolveIncludes(shadowHullFragment, chunks),
   shadowMaskVertex,
+  shadowUmbraFragment,
 };

@@ -76,6 +76,8 @@ function snapshot(names: Map<unknown, string>): Record<string, unknown> {
     colorMask: parameter(gl.COLOR_WRITEMASK),
     clearColor: parameter(gl.COLOR_CLEAR_VALUE),
     depthTest: gl.isEnabled(gl.DEPTH_TEST),
+    depthFunc: parameter(gl.DEPTH_FUNC),
+    depthMask: parameter(gl.DEPTH_WRITEMASK),
     stencilTest: gl.isEnabled(gl.STENCIL_TEST),
     cullFace: gl.isEnabled(gl.CULL_FACE),
     cullFaceMode: parameter(gl.CULL_FACE_MODE),
@@ -105,6 +107,8 @@ function setDistinctiveState(withVertexArray: boolean): Map<unknown, string> {
   gl.colorMask(true, false, true, false);
   gl.clearColor(0.3, 0.6, 0.9, 0.5);
   gl.enable(gl.DEPTH_TEST);
+  gl.depthFunc(gl.GEQUAL);
+  gl.depthMask(false);
   gl.enable(gl.STENCIL_TEST);
   gl.enable(gl.CULL_FACE);
   gl.cullFace(gl.FRONT);
