@@ -63,8 +63,8 @@ interface Resources {
 /** Clear value of the scene target. */
 const TRANSPARENT = new Float32Array(4);
 
-/** Texture units the passes bind (0..2), saved and restored around every draw. */
-const TEXTURE_UNITS = 3;
+/** Texture units the passes bind (0..3), saved and restored around every draw. */
+const TEXTURE_UNITS = 4;
 
 /**
  * Real-time 2D lights with soft shadows for an existing WebGL2 context.
@@ -327,6 +327,7 @@ export class PenumbraRenderer {
     plan.build(this._lights, this._hulls, this.geometry, viewProjection, this.lightmapWidth, this.lightmapHeight);
     resources.buffers.upload(this.geometry, plan);
     const mirrored = this.updateClipToWorld();
+    resources.shadowMask.beginFrame(resources.buffers, viewProjection, this.clipToWorld);
     resources.light.begin(this._ambient);
     gl.enable(gl.SCISSOR_TEST);
     for (let i = 0; i < plan.drawCount; i++) {
@@ -335,7 +336,7 @@ export class PenumbraRenderer {
       gl.scissor(s[0], s[1], s[2], s[3]);
       const shadowed = draw.hullCount > 0;
       if (shadowed) {
-        resources.shadowMask.render(draw, resources.buffers, viewProjection, this.clipToWorld, mirrored);
+        resources.shadowMask.render(draw, resources.buffers, mirrored);
         resources.hull.render(draw, resources.buffers, viewProjection);
       }
       resources.light.render(draw, viewProjection, shadowed ? resources.shadowMask.target.texture : null);

@@ -63,6 +63,8 @@ export class FramePlan {
   private readonly slotsInRange: HullSlot[] = [];
   /** The hulls of `slotsInRange`. */
   private readonly hullsInRange: Hull[] = [];
+  /** Per hull in range: 1 when it is one caster (see `castsOneRegion`). */
+  private castsOneRegionInRange = new Uint32Array(64);
   private inRangeCount = 0;
   private readonly grid = new HullGrid();
   /** Box around the bounds of every light placed this frame that casts shadows: the grid files only hulls inside it. */
@@ -125,12 +127,14 @@ export class FramePlan {
     const count = this.inRangeCount;
     draw.hullCount = count;
     draw.casterOffset = this.casterCount;
+    const oneRegion = this.castsOneRegionInRange = ensureCapacity(this.castsOneRegionInRange, 0, count);
     for (let i = 0; i < count; i++) {
-      if (castsOneRegion(this.hullsInRange[i], light)) this.appendHullCaster(inRange[i]);
+      oneRegion[i] = castsOneRegion(this.hullsInRange[i], light) ? 1 : 0;
+      if (oneRegion[i]) this.appendHullCaster(inRange[i]);
     }
     draw.hullCasterCount = this.casterCount - draw.casterOffset;
     for (let i = 0; i < count; i++) {
-      if (!castsOneRegion(this.hullsInRange[i], light)) this.appendEdgeCasters(inRange[i]);
+      if (!oneRegion[i]) this.appendEdgeCasters(inRange[i]);
     }
     draw.casterCount = this.casterCount - draw.casterOffset;
     draw.triangleIndexOffset = this.indexCount;

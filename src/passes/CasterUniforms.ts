@@ -6,9 +6,9 @@ import type { GeometryBuffers } from './GeometryBuffers';
 /** Vertices per shadow caster: its quad as two triangles (see shadow-mask.vert.glsl). */
 export const CASTER_VERTICES = 6;
 
-/** Texture units shadow-mask.vert.glsl reads hull points and casters from. */
+/** Texture units of the hull points and casters: no other pass of the light loop binds them. */
 const POINTS_UNIT = 0;
-const CASTERS_UNIT = 1;
+const CASTERS_UNIT = 3;
 
 /**
  * How far the far corners of an edge's shadow quad are pushed: many times the light's bounds
@@ -22,8 +22,9 @@ export function projectionLength(bounds: Float64Array): number {
 }
 
 /**
- * Sets the uniforms and textures of shadow-mask.vert.glsl for one light's casters: for the
- * shadow-mask pass and the debug wireframe, whose programs share that vertex stage.
+ * Sets the textures and uniforms of shadow-mask.vert.glsl: for the shadow-mask pass and the debug
+ * wireframe, whose programs share that vertex stage. What does not change between lights is set
+ * once a frame.
  */
 export class CasterUniforms {
   // Through reused typed arrays: doubles passed to a GL call one by one are boxed on the heap.
@@ -35,11 +36,27 @@ export class CasterUniforms {
 
   constructor(private readonly gl: WebGL2RenderingContext) {}
 
-  /** Sets `program`'s caster uniforms for `draw` (the program must be in use) and binds the textures; leaves unit 0 active. */
-  set(program: Program, draw: LightDraw, buffers: GeometryBuffers, viewProjection: ReadonlyMat4): void {
+  /** Binds the hull points and casters textures to their units; leaves unit 0 active. */
+  bindTextures(buffers: GeometryBuffers): void {
+    const gl = this.gl;
+    gl.activeTexture(gl.TEXTURE0 + CASTERS_UNIT);
+    gl.bindTexture(gl.TEXTURE_2D, buffers.castersTexture);
+    gl.activeTexture(gl.TEXTURE0 + POINTS_UNIT);
+    gl.bindTexture(gl.TEXTURE_2D, buffers.pointsTexture);
+  }
+
+  /** Sets the frame's uniforms of `program`, which must be in use. */
+  setFrame(program: Program, viewProjection: ReadonlyMat4): void {
+    const gl = this.gl;
+    gl.uniformMatrix4fv(program.uniforms.u_viewProjection, false, viewProjection);
+    gl.uniform1i(program.uniforms.u_hullPoints, POINTS_UNIT);
+    gl.uniform1i(program.uniforms.u_casters, CASTERS_UNIT);
+  }
+
+  /** Sets the uniforms of `program` (in use) for `draw`'s light. */
+  setLight(program: Program, draw: LightDraw): void {
     const gl = this.gl;
     const uniforms = program.uniforms;
-    gl.uniformMatrix4fv(uniforms.u_viewProjection, false, viewProjection);
     this.lightPosition[0] = draw.light.position[0];
     this.lightPosition[1] = draw.light.position[1];
     this.lightRadius[0] = draw.light.radius;
@@ -50,11 +67,5 @@ export class CasterUniforms {
     gl.uniform1fv(uniforms.u_lightReach, this.lightReach);
     gl.uniform1fv(uniforms.u_projectionLength, this.projectionLength);
     gl.uniform1i(uniforms.u_firstCaster, draw.casterOffset);
-    gl.uniform1i(uniforms.u_hullPoints, POINTS_UNIT);
-    gl.uniform1i(uniforms.u_casters, CASTERS_UNIT);
-    gl.activeTexture(gl.TEXTURE0 + CASTERS_UNIT);
-    gl.bindTexture(gl.TEXTURE_2D, buffers.castersTexture);
-    gl.activeTexture(gl.TEXTURE0 + POINTS_UNIT);
-    gl.bindTexture(gl.TEXTURE_2D, buffers.pointsTexture);
   }
 }

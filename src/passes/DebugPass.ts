@@ -36,7 +36,9 @@ export class DebugPass {
       const s = draw.scissor;
       gl.scissor(offsetX + Math.floor(s[0] * toTargetX), offsetY + Math.floor(s[1] * toTargetY), Math.ceil(s[2] * toTargetX), Math.ceil(s[3] * toTargetY));
       gl.useProgram(this.shadowProgram.handle);
-      this.casterUniforms.set(this.shadowProgram, draw, buffers, viewProjection);
+      this.casterUniforms.bindTextures(buffers);
+      this.casterUniforms.setFrame(this.shadowProgram, viewProjection);
+      this.casterUniforms.setLight(this.shadowProgram, draw);
       gl.uniform1i(this.shadowProgram.uniforms.u_outline, 1);
       gl.uniform4f(this.shadowProgram.uniforms.u_color, 1, 0, 1, 1);
       gl.bindVertexArray(buffers.casterVertexArray);

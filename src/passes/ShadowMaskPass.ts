@@ -25,12 +25,14 @@ export class ShadowMaskPass {
   private readonly hullProgram: Program;
   private readonly umbraProgram: Program;
   private readonly edgesProgram: Program;
+  private readonly programs: readonly Program[];
   private readonly casterUniforms: CasterUniforms;
 
   constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number) {
     this.hullProgram = createProgram(gl, 'shadow mask of hulls', shaderSources.shadowMaskVertex, shaderSources.shadowHullFragment);
     this.umbraProgram = createProgram(gl, 'shadow mask of umbrae', shaderSources.shadowMaskVertex, shaderSources.shadowUmbraFragment);
     this.edgesProgram = createProgram(gl, 'shadow mask of edges', shaderSources.shadowMaskVertex, shaderSources.shadowEdgesFragment);
+    this.programs = [this.umbraProgram, this.hullProgram, this.edgesProgram];
     this.target = new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, width, height);
     this.casterUniforms = new CasterUniforms(gl);
   }
@@ -43,7 +45,30 @@ export class ShadowMaskPass {
    * Clears the mask inside the current scissor and draws the shadows of `draw`'s hulls.
    * @param mirrored whether `viewProjection` flips orientation (decides which faces are light-facing).
    */
-  render(draw: LightDraw, buffers: GeometryBuffers, viewProjection: ReadonlyMat4, clipToWorld: ReadonlyMat4, mirrored: boolean): void {
+  /**
+   * Once a frame, before the lights: binds the geometry textures and sets what every light shares.
+   * The light loop's other passes leave those texture units alone.
+   */
+  beginFrame(buffers: GeometryBuffers, viewProjection: ReadonlyMat4, clipToWorld: ReadonlyMat4): void {
+    const gl = this.gl;
+    this.casterUniforms.bindTextures(buffers);
+    // Indexed: a for-of over an array literal would allocate every frame.
+    const programs = this.programs;
+    for (let i = 0; i < programs.length; i++) {
+      const program = programs[i];
+      gl.useProgram(program.handle);
+      this.casterUniforms.setFrame(program, viewProjection);
+      gl.uniform1i(program.uniforms.u_umbra, program === this.umbraProgram ? 1 : 0);
+      gl.uniformMatrix4fv(program.uniforms.u_clipToWorld, false, clipToWorld);
+      gl.uniform2f(program.uniforms.u_targetSize, this.target.width, this.target.height);
+    }
+  }
+
+  /**
+   * Clears the mask inside the current scissor and draws the shadows of `draw`'s hulls.
+   * @param mirrored whether the view-projection flips orientation (decides which faces are light-facing).
+   */
+  render(draw: LightDraw, buffers: GeometryBuffers, mirrored: boolean): void {
     const gl = this.gl;
     this.target.bind();
     gl.clearBufferfv(gl.COLOR, 0, NOTHING_HIDDEN);
@@ -60,43 +85,28 @@ export class ShadowMaskPass {
     const hullCasters = draw.hullCasterCount, edgeCasters = draw.casterCount - hullCasters;
     if (hullCasters > 0) {
       gl.depthMask(true);
-      this.useCasterProgram(this.umbraProgram, draw, buffers, viewProjection, true);
-      this.drawCasters(0, hullCasters);
+      this.drawCasters(this.umbraProgram, draw, 0, hullCasters);
       gl.depthMask(false);
-      this.useShadingProgram(this.hullProgram, draw, buffers, viewProjection, clipToWorld);
-      this.drawCasters(0, hullCasters);
+      this.drawCasters(this.hullProgram, draw, 0, hullCasters);
     }
     if (edgeCasters > 0) {
       gl.depthMask(false);
-      this.useShadingProgram(this.edgesProgram, draw, buffers, viewProjection, clipToWorld);
-      this.drawCasters(hullCasters, edgeCasters);
+      this.drawCasters(this.edgesProgram, draw, hullCasters, edgeCasters);
     }
     gl.disable(gl.DEPTH_TEST);
     gl.disable(gl.CULL_FACE);
   }
 
-  private useCasterProgram(program: Program, draw: LightDraw, buffers: GeometryBuffers, viewProjection: ReadonlyMat4, umbra: boolean): void {
-    this.gl.useProgram(program.handle);
-    this.gl.uniform1i(program.uniforms.u_umbra, umbra ? 1 : 0);
-    this.casterUniforms.set(program, draw, buffers, viewProjection);
-  }
-
-  /** Uses a program that computes the hidden part of the disk per pixel (it turns fragments back into world points). */
-  private useShadingProgram(program: Program, draw: LightDraw, buffers: GeometryBuffers, viewProjection: ReadonlyMat4, clipToWorld: ReadonlyMat4): void {
-    this.useCasterProgram(program, draw, buffers, viewProjection, false);
-    this.gl.uniformMatrix4fv(program.uniforms.u_clipToWorld, false, clipToWorld);
-    this.gl.uniform2f(program.uniforms.u_targetSize, this.target.width, this.target.height);
-  }
-
-  /** Draws `count` casters of the light from its `first` on. */
-  private drawCasters(first: number, count: number): void {
-    this.gl.drawArrays(this.gl.TRIANGLES, first * CASTER_VERTICES, count * CASTER_VERTICES);
+  /** Draws `count` of `draw`'s casters from its `first` on with `program`. */
+  private drawCasters(program: Program, draw: LightDraw, first: number, count: number): void {
+    const gl = this.gl;
+    gl.useProgram(program.handle);
+    this.casterUniforms.setLight(program, draw);
+    gl.drawArrays(gl.TRIANGLES, first * CASTER_VERTICES, count * CASTER_VERTICES);
   }
 
   dispose(): void {
-    this.gl.deleteProgram(this.hullProgram.handle);
-    this.gl.deleteProgram(this.umbraProgram.handle);
-    this.gl.deleteProgram(this.edgesProgram.handle);
+    for (const program of this.programs) this.gl.deleteProgram(program.handle);
     this.target.dispose();
   }
 }

@@ -54,7 +54,7 @@ function snapshot(names: Map<unknown, string>): Record<string, unknown> {
   const name = (object: unknown) => (object === null ? null : names.get(object) ?? 'renderer object');
   const active = gl.getParameter(gl.ACTIVE_TEXTURE) as number;
   const textures: unknown[] = [];
-  for (let unit = 0; unit < 3; unit++) {
+  for (let unit = 0; unit < 4; unit++) {
     gl.activeTexture(gl.TEXTURE0 + unit);
     textures.push(name(gl.getParameter(gl.TEXTURE_BINDING_2D)));
   }
@@ -126,7 +126,7 @@ function setDistinctiveState(withVertexArray: boolean): Map<unknown, string> {
   names.set(arrayBuffer, 'host array buffer').set(elementBuffer, 'host element buffer');
   gl.bindBuffer(gl.ARRAY_BUFFER, arrayBuffer);
   gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, elementBuffer);
-  for (let unit = 0; unit < 3; unit++) {
+  for (let unit = 0; unit < 4; unit++) {
     const texture = gl.createTexture();
     names.set(texture, `host texture ${unit}`);
     gl.activeTexture(gl.TEXTURE0 + unit);
