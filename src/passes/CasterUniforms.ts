@@ -11,15 +11,11 @@ const POINTS_UNIT = 0;
 const CASTERS_UNIT = 3;
 
 /**
- * How far the far corners of an edge's shadow quad are pushed: many times the light's bounds
- * diagonal, so that even when the two tangents of a long edge diverge widely the quad's far side
- * stays outside the scissor rectangle.
+ * How far the far corners of an edge's shadow quad are pushed, in light bounds diagonals: far enough
+ * that even when the two tangents of a long edge diverge widely the quad's far side stays outside
+ * the scissor rectangle.
  */
-export function projectionLength(bounds: Float64Array): number {
-  const width = bounds[2] - bounds[0], height = bounds[3] - bounds[1];
-  // Not Math.hypot: it is variadic and allocates.
-  return 64 * Math.sqrt(width * width + height * height);
-}
+const PROJECTION_DIAGONALS = 64;
 
 /**
  * Sets the textures and uniforms of shadow-mask.vert.glsl: for the shadow-mask pass and the debug
@@ -61,7 +57,10 @@ export class CasterUniforms {
     this.lightPosition[1] = draw.light.position[1];
     this.lightRadius[0] = draw.light.radius;
     this.lightReach[0] = draw.reach;
-    this.projectionLength[0] = projectionLength(draw.bounds);
+    // Computed in place: a double returned by a function that is not inlined is boxed on the heap.
+    const bounds = draw.bounds;
+    const width = bounds[2] - bounds[0], height = bounds[3] - bounds[1];
+    this.projectionLength[0] = PROJECTION_DIAGONALS * Math.sqrt(width * width + height * height);
     gl.uniform2fv(uniforms.u_lightPosition, this.lightPosition);
     gl.uniform1fv(uniforms.u_lightRadius, this.lightRadius);
     gl.uniform1fv(uniforms.u_lightReach, this.lightReach);
