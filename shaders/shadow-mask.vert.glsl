@@ -1,10 +1,10 @@
 #version 300 es
 // Shadow mask, vertex stage: turns each shadow caster of the light into a quad (two triangles, six
 // vertices, no attributes) that covers every point where the caster can hide part of the light disk.
-// - A convex hull clear of the disk (caster -1 - its first point) casts one region: between the
-//   disk's two inner tangents through the hull (the outer bounds of its penumbrae), from the hull's
+// - A hull clear of the disk (caster -1 - its first point) casts one region: between the disk's
+//   two inner tangents through the hull (the outer bounds of its penumbrae), from the hull's
 //   nearest point out to the light's reach. In the umbra pass it casts its umbra instead.
-// - Any other hull casts one quad per edge: the edge, its ends pushed along the inner tangents far
+// - A hull close to the disk casts one quad per edge: the edge, its ends pushed along the inner tangents far
 //   beyond the light's bounds (the scissor cuts them). They stay finite rather than at w = 0:
 //   SwiftShader culls every triangle with a w = 0 vertex.
 // Both wind clockwise (y up) when the light must draw them, so light-facing edges are culled.
@@ -71,7 +71,7 @@ vec2 turned(vec2 direction, float sine, float cosine) {
   return vec2(direction.x * cosine - direction.y * sine, direction.x * sine + direction.y * cosine);
 }
 
-// Corner 0..3 of a convex hull's region or umbra, clockwise: near and far on the high (counter-
+// Corner 0..3 of a hull's region or umbra, clockwise: near and far on the high (counter-
 // clockwise) line, far and near on the low one. FramePlan sends only hulls clear enough of the disk
 // that all these lines lie within 65° of the axis, so the comparisons and divisions hold.
 // - Region: between the inner tangents (each touches the disk on the side away from the hull's

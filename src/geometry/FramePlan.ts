@@ -7,11 +7,16 @@ import { scissorOf } from './scissor';
 import type { HullSlot, ShadowGeometry } from './ShadowGeometry';
 
 /**
- * A shadow caster is one `casters` entry: `-1 - firstPoint` for a convex hull well clear of the
- * light disk, whose shadow is one region; otherwise an edge's number (the number of its start
+ * A shadow caster is one `casters` entry: `-1 - firstPoint` for a hull well clear of the light
+ * disk, whose shadow is one region; otherwise an edge's number (the number of its start
  * point), for one quad per edge. See shadow-mask.vert.glsl. Floats, uploaded as an R32F texture
  * (headless-gl refuses R32UI uploads): exact while the hulls have fewer than 2^24 points in all.
  */
+/** How a hull in range casts its shadow. */
+const CONVEX_HULL = 0;
+const CONCAVE_HULL = 1;
+const EDGES = 2;
+
 /** `casters` grows in whole rows of this many entries, so it fills the rows of the texture it is uploaded to. */
 export const CASTER_ROW = 1024;
 
@@ -36,6 +41,8 @@ export class LightDraw {
   casterCount = 0;
   /** How many of those casters, first, are whole hulls; the rest are edges. */
   hullCasterCount = 0;
+  /** How many of the whole hulls, first, are convex. */
+  convexCasterCount = 0;
   /** Distance from the light's position beyond which it adds nothing (`Light.reach`). */
   reach = 0;
   /** Offset and count, in the plan's `indices`, of the triangles of the hulls in range. */
@@ -63,8 +70,8 @@ export class FramePlan {
   private readonly slotsInRange: HullSlot[] = [];
   /** The hulls of `slotsInRange`. */
   private readonly hullsInRange: Hull[] = [];
-  /** Per hull in range: 1 when it is one caster (see `castsOneRegion`). */
-  private castsOneRegionInRange = new Uint32Array(64);
+  /** Per hull in range: how it casts its shadow (`CONVEX_HULL`, `CONCAVE_HULL` or `EDGES`). */
+  private casterKinds = new Uint32Array(64);
   private inRangeCount = 0;
   private readonly grid = new HullGrid();
   /** Box around the bounds of every light placed this frame that casts shadows: the grid files only hulls inside it. */
@@ -127,15 +134,17 @@ export class FramePlan {
     const count = this.inRangeCount;
     draw.hullCount = count;
     draw.casterOffset = this.casterCount;
-    const oneRegion = this.castsOneRegionInRange = ensureCapacity(this.castsOneRegionInRange, 0, count);
+    // Convex whole hulls, then concave whole hulls, then edges: each run has its own fragment stage.
+    const kinds = this.casterKinds = ensureCapacity(this.casterKinds, 0, count);
     for (let i = 0; i < count; i++) {
-      oneRegion[i] = castsOneRegion(this.hullsInRange[i], light) ? 1 : 0;
-      if (oneRegion[i]) this.appendHullCaster(inRange[i]);
+      const hull = this.hullsInRange[i];
+      kinds[i] = !isClearOfDisk(hull, light) ? EDGES : hull.convex ? CONVEX_HULL : CONCAVE_HULL;
     }
+    this.appendCastersOfKind(inRange, count, CONVEX_HULL);
+    draw.convexCasterCount = this.casterCount - draw.casterOffset;
+    this.appendCastersOfKind(inRange, count, CONCAVE_HULL);
     draw.hullCasterCount = this.casterCount - draw.casterOffset;
-    for (let i = 0; i < count; i++) {
-      if (!oneRegion[i]) this.appendEdgeCasters(inRange[i]);
-    }
+    this.appendCastersOfKind(inRange, count, EDGES);
     draw.casterCount = this.casterCount - draw.casterOffset;
     draw.triangleIndexOffset = this.indexCount;
     for (let i = 0; i < count; i++) this.appendTriangles(geometry, inRange[i]);
@@ -184,6 +193,15 @@ export class FramePlan {
     this.indexCount = k;
   }
 
+  private appendCastersOfKind(inRange: readonly HullSlot[], count: number, kind: number): void {
+    const kinds = this.casterKinds;
+    for (let i = 0; i < count; i++) {
+      if (kinds[i] !== kind) continue;
+      if (kind === EDGES) this.appendEdgeCasters(inRange[i]);
+      else this.appendHullCaster(inRange[i]);
+    }
+  }
+
   private appendHullCaster(slot: HullSlot): void {
     this.casters = ensureCapacity(this.casters, this.casterCount, 1, CASTER_ROW);
     this.casters[this.casterCount++] = -1 - slot.firstPoint;
@@ -206,9 +224,8 @@ function ensureCapacity<T extends Uint32Array<ArrayBuffer> | Float32Array<ArrayB
   return grown;
 }
 
-/** Whether the hull's shadow is one region: it is convex and the light disk lies {@link HULL_CASTER_CLEARANCE} times outside its bounding circle. */
-function castsOneRegion(hull: Hull, light: Light): boolean {
-  if (!hull.convex) return false;
+/** Whether the hull's shadow is one region: the light disk lies {@link HULL_CASTER_CLEARANCE} times outside its bounding circle. */
+function isClearOfDisk(hull: Hull, light: Light): boolean {
   const bounds = hull.worldBounds, centre = light.position;
   const halfWidth = (bounds[2] - bounds[0]) / 2, halfHeight = (bounds[3] - bounds[1]) / 2;
   const dx = bounds[0] + halfWidth - centre[0], dy = bounds[1] + halfHeight - centre[1];

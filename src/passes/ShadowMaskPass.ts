@@ -21,8 +21,12 @@ const FARTHEST = 1;
  */
 export class ShadowMaskPass {
   readonly target: RenderTarget;
-  /** For whole convex hulls' regions, and for edge quads: two programs rather than a branch per fragment, which cost SwiftShader 30%. */
+  /**
+   * For the regions of convex and of concave hulls, and for edge quads: a program each rather than a
+   * branch per fragment, which cost SwiftShader 30% (it runs both sides).
+   */
   private readonly hullProgram: Program;
+  private readonly concaveProgram: Program;
   private readonly umbraProgram: Program;
   private readonly edgesProgram: Program;
   private readonly programs: readonly Program[];
@@ -31,8 +35,9 @@ export class ShadowMaskPass {
   constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number) {
     this.hullProgram = createProgram(gl, 'shadow mask of hulls', shaderSources.shadowMaskVertex, shaderSources.shadowHullFragment);
     this.umbraProgram = createProgram(gl, 'shadow mask of umbrae', shaderSources.shadowMaskVertex, shaderSources.shadowUmbraFragment);
+    this.concaveProgram = createProgram(gl, 'shadow mask of concave hulls', shaderSources.shadowMaskVertex, shaderSources.shadowConcaveFragment);
     this.edgesProgram = createProgram(gl, 'shadow mask of edges', shaderSources.shadowMaskVertex, shaderSources.shadowEdgesFragment);
-    this.programs = [this.umbraProgram, this.hullProgram, this.edgesProgram];
+    this.programs = [this.umbraProgram, this.hullProgram, this.concaveProgram, this.edgesProgram];
     this.target = new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, width, height);
     this.casterUniforms = new CasterUniforms(gl);
   }
@@ -82,17 +87,15 @@ export class ShadowMaskPass {
     gl.enable(gl.DEPTH_TEST);
     gl.depthFunc(gl.LESS);
     gl.bindVertexArray(buffers.casterVertexArray);
-    const hullCasters = draw.hullCasterCount, edgeCasters = draw.casterCount - hullCasters;
-    if (hullCasters > 0) {
+    const convex = draw.convexCasterCount, hulls = draw.hullCasterCount, all = draw.casterCount;
+    if (hulls > 0) {
       gl.depthMask(true);
-      this.drawCasters(this.umbraProgram, draw, 0, hullCasters);
-      gl.depthMask(false);
-      this.drawCasters(this.hullProgram, draw, 0, hullCasters);
+      this.drawCasters(this.umbraProgram, draw, 0, hulls);
     }
-    if (edgeCasters > 0) {
-      gl.depthMask(false);
-      this.drawCasters(this.edgesProgram, draw, hullCasters, edgeCasters);
-    }
+    gl.depthMask(false);
+    if (convex > 0) this.drawCasters(this.hullProgram, draw, 0, convex);
+    if (hulls > convex) this.drawCasters(this.concaveProgram, draw, convex, hulls - convex);
+    if (all > hulls) this.drawCasters(this.edgesProgram, draw, hulls, all - hulls);
     gl.disable(gl.DEPTH_TEST);
     gl.disable(gl.CULL_FACE);
   }

@@ -9,6 +9,7 @@ import lightSpotFragment from '../../shaders/light-spot.frag.glsl?raw';
 import lightTexturedFragment from '../../shaders/light-textured.frag.glsl?raw';
 import lightVertex from '../../shaders/light.vert.glsl?raw';
 import shadowCommon from '../../shaders/chunks/shadow-common.glsl?raw';
+import shadowConcaveFragment from '../../shaders/shadow-concave.frag.glsl?raw';
 import shadowEdgesFragment from '../../shaders/shadow-edges.frag.glsl?raw';
 import shadowHullFragment from '../../shaders/shadow-hull.frag.glsl?raw';
 import shadowMaskVertex from '../../shaders/shadow-mask.vert.glsl?raw';
@@ -28,6 +29,7 @@ export const shaderSources = {
   lightPointFragment: resolveIncludes(lightPointFragment, chunks),
   lightSpotFragment: resolveIncludes(lightSpotFragment, chunks),
   lightTexturedFragment: resolveIncludes(lightTexturedFragment, chunks),
+  shadowConcaveFragment: resolveIncludes(shadowConcaveFragment, chunks),
   shadowEdgesFragment: resolveIncludes(shadowEdgesFragment, chunks),
   shadowHullFragment: resolveIncludes(shadowHullFragment, chunks),
   shadowMaskVertex,

@@ -29,6 +29,8 @@ const box = (x: number, y: number, w: number, h: number): Point[] => [[x, y], [x
 
 /** A U opening towards +x (away from a light on its left): its arms cast a concave shadow. */
 const uShape: Point[] = [[70, 35], [100, 35], [100, 45], [80, 45], [80, 75], [100, 75], [100, 85], [70, 85]];
+/** The same U opening towards the light: the pixels in its mouth see the light past its arms. */
+const openU: Point[] = [[70, 35], [100, 35], [100, 85], [70, 85], [70, 75], [90, 75], [90, 45], [70, 45]];
 /** An L: its inner corner faces the light, so a part of the hull hides another part. */
 const lShape: Point[] = [[75, 30], [85, 30], [85, 70], [110, 70], [110, 80], [75, 80]];
 
@@ -41,6 +43,8 @@ export const REFERENCE_SCENES: readonly ReferenceScene[] = [
     light: { position: [30, 60], range: 150, radius: 0 }, hulls: [uShape] },
   { name: 'concave U, soft (r=6)', width: WIDTH, height: HEIGHT,
     light: { position: [30, 60], range: 150, radius: 6 }, hulls: [uShape] },
+  { name: 'U open towards the light, soft (r=6)', width: WIDTH, height: HEIGHT,
+    light: { position: [30, 60], range: 150, radius: 6 }, hulls: [openU] },
   { name: 'concave L, soft (r=6)', width: WIDTH, height: HEIGHT,
     light: { position: [35, 100], range: 150, radius: 6, color: [1, 0.6, 0.3], intensity: 0.8 }, hulls: [lShape] },
   { name: 'two hulls, same-side penumbrae (r=10)', width: WIDTH, height: HEIGHT,

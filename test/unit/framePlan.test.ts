@@ -93,11 +93,16 @@ describe('FramePlan shadow casters', () => {
     expect(casters(plan([new PointLight({ position: [30, 45], range: 100, radius: 10 })], [far]))).toEqual([-1]);
   });
 
-  it('gives a concave hull, and a convex one near the disk, one caster per edge', () => {
+  it('puts convex whole hulls first, then concave ones, then the edges of hulls near the disk', () => {
     const u = new Hull([[80, 30], [100, 30], [100, 60], [80, 60], [80, 55], [95, 55], [95, 35], [80, 35]]);
     const near = new Hull([[40, 40], [50, 40], [50, 50], [40, 50]]);
+    const far = new Hull([[80, 70], [90, 70], [90, 80], [80, 80]]);
     const light = new PointLight({ position: [30, 45], range: 100, radius: 10 });
-    expect(casters(plan([light], [u, near]))).toEqual([0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]);
+    const framePlan = plan([light], [u, near, far]);
+    // Points: u 0–7, near 8–11, far 12–15.
+    expect(casters(framePlan)).toEqual([-13, -1, 8, 9, 10, 11]);
+    expect(framePlan.draws[0].convexCasterCount).toBe(1);
+    expect(framePlan.draws[0].hullCasterCount).toBe(2);
     light.radius = 1;
     expect(casters(plan([light], [near]))).toEqual([-1]);
   });
