@@ -73,7 +73,7 @@ vec2 turned(vec2 direction, float sine, float cosine) {
 
 // Corner 0..3 of a hull's region or umbra, clockwise: near and far on the high (counter-
 // clockwise) line, far and near on the low one. FramePlan sends only hulls clear enough of the disk
-// that all these lines lie within 65° of the axis, so the comparisons and divisions hold.
+// that all these lines lie within 78° of the axis, so the comparisons and divisions hold.
 // - Region: between the inner tangents (each touches the disk on the side away from the hull's
 //   touching point), the outer bounds of the penumbrae, from the hull's nearest point to the reach.
 // - Umbra: between the outer tangents (disk and hull on the same side), beyond the hull's farthest

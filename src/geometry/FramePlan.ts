@@ -21,11 +21,18 @@ const EDGES = 2;
 export const CASTER_ROW = 1024;
 
 /**
- * How far outside a hull's bounding circle, in units of the circle's and the disk's radii together,
- * the light disk must lie for the hull to be one caster: the inner tangents then lean at most
- * asin(1 / 1.1) ≈ 65° off their bisector, a bound the shadow-mask vertex stage relies on.
+ * The widest a hull's shadow region may open either side of its axis for the hull to be one caster:
+ * the shadow-mask vertex stage divides by the cosine of this angle and orders directions by cross
+ * products, which needs them all within a half-plane.
  */
-const HULL_CASTER_CLEARANCE = 1.1;
+const MAX_HALF_ANGLE = (78 / 180) * Math.PI;
+
+/**
+ * A hull whose bounding circle lies this many times its radius and the disk's together from the
+ * light has a region opening at most asin(1 / 1.1) ≈ 65° either side, below the maximum, without
+ * looking at its points.
+ */
+const CLEARANCE_WITHOUT_POINTS = 1.1;
 
 /** What the passes need to draw one light: its quad, scissor, and the edges and triangles of the hulls in its range. */
 export class LightDraw {
@@ -224,13 +231,41 @@ function ensureCapacity<T extends Uint32Array<ArrayBuffer> | Float32Array<ArrayB
   return grown;
 }
 
-/** Whether the hull's shadow is one region: the light disk lies {@link HULL_CASTER_CLEARANCE} times outside its bounding circle. */
+/**
+ * Whether the hull's shadow is one region: the hull is clear of the light disk and the disk's inner
+ * tangents through it open at most {@link MAX_HALF_ANGLE} either side of their bisector.
+ */
 function isClearOfDisk(hull: Hull, light: Light): boolean {
   const bounds = hull.worldBounds, centre = light.position;
   const halfWidth = (bounds[2] - bounds[0]) / 2, halfHeight = (bounds[3] - bounds[1]) / 2;
   const dx = bounds[0] + halfWidth - centre[0], dy = bounds[1] + halfHeight - centre[1];
-  const clearance = HULL_CASTER_CLEARANCE * (Math.sqrt(halfWidth * halfWidth + halfHeight * halfHeight) + light.radius);
-  return dx * dx + dy * dy > clearance * clearance;
+  const clearance = CLEARANCE_WITHOUT_POINTS * (Math.sqrt(halfWidth * halfWidth + halfHeight * halfHeight) + light.radius);
+  return dx * dx + dy * dy > clearance * clearance || hasNarrowShadow(hull, light);
+}
+
+/**
+ * The tangents through each point lean asin(r / d) either side of the direction to it; the spread of
+ * all of them, measured from the first point's direction, is at least the angle the region opens.
+ * A hull that reaches into the disk, or around the light, spreads over 180° and fails.
+ */
+function hasNarrowShadow(hull: Hull, light: Light): boolean {
+  const points = hull.worldPoints, count = hull.edgeCount;
+  const cx = light.position[0], cy = light.position[1], radius = light.radius;
+  let first = 0, low = 0, high = 0;
+  for (let i = 0; i < count; i++) {
+    const dx = points[2 * i] - cx, dy = points[2 * i + 1] - cy;
+    const distance = Math.sqrt(dx * dx + dy * dy);
+    if (distance <= radius) return false;
+    const lean = Math.asin(radius / distance);
+    let angle = Math.atan2(dy, dx);
+    if (i === 0) first = angle;
+    angle -= first;
+    if (angle > Math.PI) angle -= 2 * Math.PI;
+    else if (angle <= -Math.PI) angle += 2 * Math.PI;
+    if (angle - lean < low) low = angle - lean;
+    if (angle + lean > high) high = angle + lean;
+  }
+  return high - low <= 2 * MAX_HALF_ANGLE;
 }
 
 function writeBounds(draw: LightDraw): void {

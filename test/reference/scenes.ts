@@ -59,9 +59,12 @@ export const REFERENCE_SCENES: readonly ReferenceScene[] = [
   // face is a back face, so the pixels just below the wall lose part of the disk.
   { name: 'wall grazing the disk (r=10)', width: WIDTH, height: HEIGHT,
     light: { position: [40, 60], range: 150, radius: 10 }, hulls: [box(60, 48, 80, 6)] },
-  // Too close to the disk for one region per hull: a convex hull that falls back to one quad per edge.
+  // Close to the disk: a region that opens wide (about 67° either side).
   { name: 'box close to the disk (r=10)', width: WIDTH, height: HEIGHT,
     light: { position: [40, 60], range: 140, radius: 10 }, hulls: [box(55, 50, 10, 20)] },
+  // Closer still (80° either side): too wide for one region, a convex hull cast as one quad per edge.
+  { name: 'box very close to the disk (r=10)', width: WIDTH, height: HEIGHT,
+    light: { position: [40, 60], range: 140, radius: 10 }, hulls: [box(52, 50, 10, 20)] },
   { name: 'three hulls, hard (r=0)', width: WIDTH, height: HEIGHT,
     // Off the pixel grid: from a light on it, rows of pixel centres line up exactly with a hull corner,
     // where a grazing segment is neither clearly lit nor clearly hidden.

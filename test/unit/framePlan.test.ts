@@ -107,6 +107,14 @@ describe('FramePlan shadow casters', () => {
     expect(casters(plan([light], [near]))).toEqual([-1]);
   });
 
+  it('makes a hull near the disk one caster while its region opens at most 78° either side', () => {
+    const light = new PointLight({ position: [40, 60], range: 100, radius: 10 });
+    const box = (x: number) => new Hull([[x, 50], [x + 10, 50], [x + 10, 70], [x, 70]]);
+    // Tangents through the near corners lean 33.7° off 33.7° (67° each side), then 39.8° off 39.8° (80°).
+    expect(casters(plan([light], [box(55)]))).toEqual([-1]);
+    expect(casters(plan([light], [box(52)]))).toEqual([0, 1, 2, 3]);
+  });
+
   it('writes each light its reach: the range, or the farthest corner of a textured quad', () => {
     const framePlan = plan([new PointLight({ position: [50, 50], range: 40 })], []);
     expect(framePlan.draws[0].reach).toBe(40);
