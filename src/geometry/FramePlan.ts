@@ -140,19 +140,7 @@ export class FramePlan {
     if (light.castsShadows && !this.findHullsInRange(draw, hulls, geometry)) return false;
     const count = this.inRangeCount;
     draw.hullCount = count;
-    draw.casterOffset = this.casterCount;
-    // Convex whole hulls, then concave whole hulls, then edges: each run has its own fragment stage.
-    const kinds = this.casterKinds = ensureCapacity(this.casterKinds, 0, count);
-    for (let i = 0; i < count; i++) {
-      const hull = this.hullsInRange[i];
-      kinds[i] = !isClearOfDisk(hull, light) ? EDGES : hull.convex ? CONVEX_HULL : CONCAVE_HULL;
-    }
-    this.appendCastersOfKind(inRange, count, CONVEX_HULL);
-    draw.convexCasterCount = this.casterCount - draw.casterOffset;
-    this.appendCastersOfKind(inRange, count, CONCAVE_HULL);
-    draw.hullCasterCount = this.casterCount - draw.casterOffset;
-    this.appendCastersOfKind(inRange, count, EDGES);
-    draw.casterCount = this.casterCount - draw.casterOffset;
+    this.appendCasters(draw, count);
     draw.triangleIndexOffset = this.indexCount;
     for (let i = 0; i < count; i++) this.appendTriangles(geometry, inRange[i]);
     draw.triangleIndexCount = this.indexCount - draw.triangleIndexOffset;
@@ -200,26 +188,42 @@ export class FramePlan {
     this.indexCount = k;
   }
 
-  private appendCastersOfKind(inRange: readonly HullSlot[], count: number, kind: number): void {
-    const kinds = this.casterKinds;
+  /**
+   * Appends the casters of the hulls in range in three runs, each with its own fragment stage:
+   * convex whole hulls, concave whole hulls, then the edges of the hulls close to the disk. Counts
+   * first, then writes each caster at its run's cursor, in one pass.
+   */
+  private appendCasters(draw: LightDraw, count: number): void {
+    const light = draw.light, inRange = this.slotsInRange;
+    const kinds = this.casterKinds = ensureCapacity(this.casterKinds, 0, count);
+    let convex = 0, concave = 0, edges = 0;
     for (let i = 0; i < count; i++) {
-      if (kinds[i] !== kind) continue;
-      if (kind === EDGES) this.appendEdgeCasters(inRange[i]);
-      else this.appendHullCaster(inRange[i]);
+      const hull = this.hullsInRange[i];
+      if (!isClearOfDisk(hull, light)) {
+        kinds[i] = EDGES;
+        edges += inRange[i].pointCount;
+      } else if (hull.convex) {
+        kinds[i] = CONVEX_HULL;
+        convex++;
+      } else {
+        kinds[i] = CONCAVE_HULL;
+        concave++;
+      }
     }
-  }
-
-  private appendHullCaster(slot: HullSlot): void {
-    this.casters = ensureCapacity(this.casters, this.casterCount, 1, CASTER_ROW);
-    this.casters[this.casterCount++] = -1 - slot.firstPoint;
-  }
-
-  private appendEdgeCasters(slot: HullSlot): void {
-    this.casters = ensureCapacity(this.casters, this.casterCount, slot.pointCount, CASTER_ROW);
-    const casters = this.casters;
-    let k = this.casterCount;
-    for (let e = slot.firstPoint, end = e + slot.pointCount; e < end; e++) casters[k++] = e;
-    this.casterCount = k;
+    const first = this.casterCount;
+    const casters = this.casters = ensureCapacity(this.casters, first, convex + concave + edges, CASTER_ROW);
+    let convexAt = first, concaveAt = first + convex, edgeAt = first + convex + concave;
+    for (let i = 0; i < count; i++) {
+      const slot = inRange[i];
+      if (kinds[i] === CONVEX_HULL) casters[convexAt++] = -1 - slot.firstPoint;
+      else if (kinds[i] === CONCAVE_HULL) casters[concaveAt++] = -1 - slot.firstPoint;
+      else for (let e = slot.firstPoint, end = e + slot.pointCount; e < end; e++) casters[edgeAt++] = e;
+    }
+    this.casterCount = edgeAt;
+    draw.casterOffset = first;
+    draw.convexCasterCount = convex;
+    draw.hullCasterCount = convex + concave;
+    draw.casterCount = edgeAt - first;
   }
 }
 
