@@ -77,6 +77,8 @@ export class ShadowMaskPass {
     const gl = this.gl;
     this.target.bind();
     gl.clearBufferfv(gl.COLOR, 0, NOTHING_HIDDEN);
+    // Clears obey the write masks: the last light left depth writes off.
+    gl.depthMask(true);
     gl.clearBufferfi(gl.DEPTH_STENCIL, 0, FARTHEST, 0);
     gl.enable(gl.BLEND);
     gl.blendEquation(gl.MAX);
@@ -88,10 +90,7 @@ export class ShadowMaskPass {
     gl.depthFunc(gl.LESS);
     gl.bindVertexArray(buffers.casterVertexArray);
     const convex = draw.convexCasterCount, hulls = draw.hullCasterCount, all = draw.casterCount;
-    if (hulls > 0) {
-      gl.depthMask(true);
-      this.drawCasters(this.umbraProgram, draw, 0, hulls);
-    }
+    if (hulls > 0) this.drawCasters(this.umbraProgram, draw, 0, hulls);
     gl.depthMask(false);
     if (convex > 0) this.drawCasters(this.hullProgram, draw, 0, convex);
     if (hulls > convex) this.drawCasters(this.concaveProgram, draw, convex, hulls - convex);

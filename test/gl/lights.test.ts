@@ -143,3 +143,30 @@ describe('shadow types', () => {
     expect(illuminated.at(30, 32)[0]).toBeCloseTo(solid.at(30, 32)[0], 3);
   });
 });
+
+describe('several lights', () => {
+  it('shadows each light on its own: the lightmap of two lights is the sum of each alone', () => {
+    setUp();
+    // Both lights put the hull's umbra on the same pixels: the second must not see the first's.
+    renderer.addHull(new Hull([[40, 26], [46, 26], [46, 40], [40, 40]]));
+    const first = new PointLight({ position: [10, 30], range: 90, radius: 3 });
+    const second = new PointLight({ position: [10, 36], range: 90, radius: 3 });
+    renderer.addLight(first);
+    const alone = renderLightmap(gl, renderer, W, H);
+    renderer.removeLight(first);
+    renderer.addLight(second);
+    const secondAlone = renderLightmap(gl, renderer, W, H);
+    renderer.addLight(first);
+    const both = renderLightmap(gl, renderer, W, H);
+    let worst = 0, shadowed = 0;
+    for (let y = 0; y < H; y++) {
+      for (let x = 0; x < W; x++) {
+        const sum = alone.at(x, y)[0] + secondAlone.at(x, y)[0];
+        worst = Math.max(worst, Math.abs(both.at(x, y)[0] - sum));
+        if (alone.at(x, y)[0] === 0 && secondAlone.at(x, y)[0] === 0 && x > 46) shadowed++;
+      }
+    }
+    expect(shadowed).toBeGreaterThan(100); // the two umbrae overlap
+    expect(worst).toBeLessThan(2 * CLOSE);
+  });
+});
