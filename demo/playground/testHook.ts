@@ -23,7 +23,7 @@ export interface PlaygroundTestHook {
   readPixel(x: number, y: number): [number, number, number];
   /** `gl.getError()` after a frame: 0 when WebGL reported nothing. */
   glError(): number;
-  /** The renderer's stats of the last frame. */
+  /** The renderer's stats of a frame drawn now (the last animation frame may predate a change). */
   rendererStats(): FrameStats;
   /** The overlay's figures (fps, mean CPU time per frame, counts). */
   overlayFigures(): OverlayFigures;
@@ -68,7 +68,10 @@ export function installTestHook(parts: TestHookParts): void {
       parts.frame();
       return gl.getError();
     },
-    rendererStats: () => ({ ...playground.renderer.stats }),
+    rendererStats() {
+      parts.frame();
+      return { ...playground.renderer.stats };
+    },
     overlayFigures: () => ({ ...stats.figures }),
   };
 }
