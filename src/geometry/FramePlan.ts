@@ -34,7 +34,7 @@ const MAX_HALF_ANGLE = (78 / 180) * Math.PI;
  */
 const CLEARANCE_WITHOUT_POINTS = 1.1;
 
-/** What the passes need to draw one light: its quad, scissor, and the edges and triangles of the hulls in its range. */
+/** What the passes need to draw one light: its quad, scissor, and the shadow casters and triangles of the hulls in its range. */
 export class LightDraw {
   light!: Light;
   /** `[cornerX, cornerY, axisXx, axisXy, axisYx, axisYy]`, see `Light.writeQuad`. */

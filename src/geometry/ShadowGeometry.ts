@@ -3,7 +3,7 @@ import type { Hull } from '../scene/Hull';
 /**
  * Floats per point: world x, y, then the first point and point count of its hull. Edge i runs from
  * point i to the next point of its hull, so one record per point is all the shadow pass reads: it
- * draws each edge as an instance that fetches its record (and the next point) by the edge number.
+ * finds a caster's records (an edge's start and the next point, or all of a hull's points) by number.
  */
 export const POINT_FLOATS = 4;
 
