@@ -4,9 +4,9 @@
 // - A hull clear of the disk (caster -1 - its first point) casts one region: between the disk's
 //   two inner tangents through the hull (the outer bounds of its penumbrae), from the hull's
 //   nearest point out to the light's reach. In the umbra pass it casts its umbra instead.
-// - A hull close to the disk casts one quad per edge: the edge, its ends pushed along the inner tangents far
-//   beyond the light's bounds (the scissor cuts them). They stay finite rather than at w = 0:
-//   SwiftShader culls every triangle with a w = 0 vertex.
+// - A hull close to the disk casts one quad per edge: the edge, its ends pushed along the inner
+//   tangents far beyond the light's bounds (the scissor cuts them). They stay finite rather than at
+//   w = 0: SwiftShader culls every triangle with a w = 0 vertex.
 // Both wind clockwise (y up) when the light must draw them, so light-facing edges are culled.
 precision highp float;
 precision highp int;
@@ -21,10 +21,10 @@ uniform mat4 u_viewProjection;
 uniform vec2 u_lightPosition;
 uniform float u_lightRadius;
 uniform float u_lightReach;       // the light adds nothing farther from its position
-uniform float u_projectionLength; // well beyond the light's bounds, see ShadowMaskPass
+uniform float u_projectionLength; // well beyond the light's bounds, see CasterUniforms
 // Debug wireframe: eight vertices per caster, the quad's four sides as lines.
 uniform bool u_outline;
-// Umbra pass: a convex hull's umbra instead of its region, nearer the viewer (see ShadowMaskPass).
+// Umbra pass: a hull's umbra instead of its region, nearer the viewer (see ShadowMaskPass).
 uniform bool u_umbra;
 
 flat out ivec2 v_hull;
@@ -43,6 +43,11 @@ float cross2(vec2 a, vec2 b) {
   return a.x * b.y - a.y * b.x;
 }
 
+// `direction` turned counter-clockwise by the angle of that sine and cosine.
+vec2 turned(vec2 direction, float sine, float cosine) {
+  return vec2(direction.x * cosine - direction.y * sine, direction.x * sine + direction.y * cosine);
+}
+
 // Corner 0..3 of an edge quad, in fan order: start, end, end projected, start projected.
 vec2 edgeQuadCorner(int edge, ivec2 hull, int corner) {
   vec2 start = texelAt(edge).xy;
@@ -56,19 +61,13 @@ vec2 edgeQuadCorner(int edge, ivec2 hull, int corner) {
   // The inner tangent from the disk through the point leans away from the edge's other end by asin(r / d).
   float sine = min(u_lightRadius / distance, 1.0);
   float cosine = sqrt(1.0 - sine * sine);
-  float away = -sign(cross2(direction, other - point)) * sine;
-  vec2 tangent = vec2(direction.x * cosine - direction.y * away, direction.x * away + direction.y * cosine);
+  vec2 tangent = turned(direction, -sign(cross2(direction, other - point)) * sine, cosine);
   return point + tangent * (corner >= 2 ? u_projectionLength : 0.0);
 }
 
 // Where the line through `point` along `direction` meets the line at distance `along` from the light on `axis`.
 vec2 atDistance(vec2 point, vec2 direction, vec2 axis, float along) {
   return point + direction * ((along - dot(point - u_lightPosition, axis)) / dot(direction, axis));
-}
-
-// Lines tangent to the disk through a hull point P, asin(r / d) either side of the light-to-P direction.
-vec2 turned(vec2 direction, float sine, float cosine) {
-  return vec2(direction.x * cosine - direction.y * sine, direction.x * sine + direction.y * cosine);
 }
 
 // Corner 0..3 of a hull's region or umbra, clockwise: near and far on the high (counter-
@@ -82,10 +81,12 @@ vec2 turned(vec2 direction, float sine, float cosine) {
 vec2 hullCorner(ivec2 hull, int corner) {
   vec2 highPoint, highDirection, lowPoint, lowDirection;
   float sideSign = u_umbra ? -1.0 : 1.0;
+  // Through each point, the tangents to the disk lean asin(r / d) either side of the direction to it.
   for (int i = 0; i < hull.y; i++) {
     vec2 point = texelAt(hull.x + i).xy;
-    vec2 direction = normalize(point - u_lightPosition);
-    float sine = min(u_lightRadius / length(point - u_lightPosition), 1.0);
+    float distance = length(point - u_lightPosition);
+    vec2 direction = (point - u_lightPosition) / distance;
+    float sine = min(u_lightRadius / distance, 1.0);
     float cosine = sqrt(1.0 - sine * sine);
     vec2 high = turned(direction, sideSign * sine, cosine);
     vec2 low = turned(direction, -sideSign * sine, cosine);

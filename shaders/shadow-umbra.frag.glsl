@@ -1,5 +1,5 @@
 #version 300 es
-// Shadow mask of a convex hull's umbra, fragment stage: the whole disk is hidden there. Also writes
+// Shadow mask of a hull's umbra, fragment stage: the whole disk is hidden there. Also writes
 // depth (nearer than the other shadow quads), so their costly fragments are skipped there.
 precision mediump float;
 

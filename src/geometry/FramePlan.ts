@@ -6,12 +6,6 @@ import { isInsidePolygon } from './polygon';
 import { scissorOf } from './scissor';
 import type { HullSlot, ShadowGeometry } from './ShadowGeometry';
 
-/**
- * A shadow caster is one `casters` entry: `-1 - firstPoint` for a hull well clear of the light
- * disk, whose shadow is one region; otherwise an edge's number (the number of its start
- * point), for one quad per edge. See shadow-mask.vert.glsl. Floats, uploaded as an R32F texture
- * (headless-gl refuses R32UI uploads): exact while the hulls have fewer than 2^24 points in all.
- */
 /** How a hull in range casts its shadow. */
 const CONVEX_HULL = 0;
 const CONCAVE_HULL = 1;
@@ -68,7 +62,12 @@ export class FramePlan {
   /** Triangle indices (global point numbers) of the hulls in range, per light. */
   indices = new Uint32Array(1024);
   indexCount = 0;
-  /** Shadow casters (see {@link CASTER_ROW}) of the hulls in range, per light. */
+  /**
+   * Shadow casters of the hulls in range, per light. A caster is `-1 - firstPoint` for a hull clear
+   * of the light disk, whose shadow is one region, or else an edge's number (the number of its start
+   * point), for one quad per edge; see shadow-mask.vert.glsl. Floats, uploaded as an R32F texture
+   * (headless-gl refuses R32UI uploads): exact while the hulls have fewer than 2^24 points in all.
+   */
   casters = new Float32Array(CASTER_ROW);
   casterCount = 0;
   readonly draws: LightDraw[] = [];

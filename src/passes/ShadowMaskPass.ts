@@ -30,6 +30,8 @@ export class ShadowMaskPass {
   private readonly umbraProgram: Program;
   private readonly edgesProgram: Program;
   private readonly programs: readonly Program[];
+  /** The programs that compute the hidden part of the disk per pixel (all but the umbra's). */
+  private readonly shadingPrograms: readonly Program[];
   private readonly casterUniforms: CasterUniforms;
 
   constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number) {
@@ -37,7 +39,8 @@ export class ShadowMaskPass {
     this.umbraProgram = createProgram(gl, 'shadow mask of umbrae', shaderSources.shadowMaskVertex, shaderSources.shadowUmbraFragment);
     this.concaveProgram = createProgram(gl, 'shadow mask of concave hulls', shaderSources.shadowMaskVertex, shaderSources.shadowConcaveFragment);
     this.edgesProgram = createProgram(gl, 'shadow mask of edges', shaderSources.shadowMaskVertex, shaderSources.shadowEdgesFragment);
-    this.programs = [this.umbraProgram, this.hullProgram, this.concaveProgram, this.edgesProgram];
+    this.shadingPrograms = [this.hullProgram, this.concaveProgram, this.edgesProgram];
+    this.programs = [this.umbraProgram, ...this.shadingPrograms];
     this.target = new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, width, height);
     this.casterUniforms = new CasterUniforms(gl);
   }
@@ -47,23 +50,22 @@ export class ShadowMaskPass {
   }
 
   /**
-   * Clears the mask inside the current scissor and draws the shadows of `draw`'s hulls.
-   * @param mirrored whether `viewProjection` flips orientation (decides which faces are light-facing).
-   */
-  /**
    * Once a frame, before the lights: binds the geometry textures and sets what every light shares.
    * The light loop's other passes leave those texture units alone.
    */
   beginFrame(buffers: GeometryBuffers, viewProjection: ReadonlyMat4, clipToWorld: ReadonlyMat4): void {
     const gl = this.gl;
     this.casterUniforms.bindTextures(buffers);
-    // Indexed: a for-of over an array literal would allocate every frame.
-    const programs = this.programs;
-    for (let i = 0; i < programs.length; i++) {
-      const program = programs[i];
+    gl.useProgram(this.umbraProgram.handle);
+    this.casterUniforms.setFrame(this.umbraProgram, viewProjection);
+    gl.uniform1i(this.umbraProgram.uniforms.u_umbra, 1);
+    // Indexed: a for-of allocates an iterator every frame.
+    const shading = this.shadingPrograms;
+    for (let i = 0; i < shading.length; i++) {
+      const program = shading[i];
       gl.useProgram(program.handle);
       this.casterUniforms.setFrame(program, viewProjection);
-      gl.uniform1i(program.uniforms.u_umbra, program === this.umbraProgram ? 1 : 0);
+      gl.uniform1i(program.uniforms.u_umbra, 0);
       gl.uniformMatrix4fv(program.uniforms.u_clipToWorld, false, clipToWorld);
       gl.uniform2f(program.uniforms.u_targetSize, this.target.width, this.target.height);
     }
