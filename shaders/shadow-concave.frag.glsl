@@ -13,8 +13,8 @@ const float TURN = 6.28318530717959;
 vec4 maskOfDirections(float low, float high, float centre, float halfWidth) {
   float from = max(low, centre - halfWidth);
   float to = min(high, centre + halfWidth);
-  if (from >= to) return vec4(0.0);
-  return maskBetween(scale * sin(from - centre), scale * sin(to - centre));
+  vec4 mask = maskBetween(scale * sin(from - centre), scale * sin(to - centre));
+  return from < to ? mask : vec4(0.0);
 }
 
 // Walking the outline, the direction to the points turns back and forth; the extremes of the
@@ -37,7 +37,7 @@ vec4 maskOfAnyHullRegion() {
     previous = toPoint;
   }
   float centre = atan(cross2(first, axis), dot(first, axis));
-  float halfWidth = asin(min(1.0 / scale, 1.0));
+  float halfWidth = fastAsin(min(1.0 / scale, 1.0));
   // The interval is under a full turn and the disk under half of one: the disk meets it at most
   // twice, once from each side, in the light's direction or a turn either way.
   return max(maskOfDirections(lowest, highest, centre, halfWidth),

@@ -31,8 +31,8 @@ vec4 maskOfAnyHull() {
     if (cross2(lowest, toPoint) < 0.0) lowest = toPoint;
   }
   // A hull wholly behind the pixel hides nothing: every segment to the disk leaves ahead.
-  if (!anyAhead) return vec4(0.0);
-  return maskBetween(lowBehind ? PAST_LOW : chordHeight(lowest), highBehind ? PAST_HIGH : chordHeight(highest));
+  vec4 mask = maskBetween(lowBehind ? PAST_LOW : chordHeight(lowest), highBehind ? PAST_HIGH : chordHeight(highest));
+  return anyAhead ? mask : vec4(0.0);
 }
 
 void main() {

@@ -21,9 +21,7 @@ vec4 maskOfConvexHull() {
     if (cross2(lowEnd, toPoint) < 0.0) lowEnd = toPoint;
   }
   bool wrapsBehind = cross2(lowEnd, -axis) > 0.0 && cross2(-axis, highEnd) > 0.0;
-  if (!wrapsBehind) return maskBetween(chordHeight(lowEnd), chordHeight(highEnd));
-  // From the first side up to the high end, and from the low end up to the other side.
-  return vec4(diskAreaBelow(chordHeight(highEnd)), 1.0 - diskAreaBelow(chordHeight(lowEnd)), 0.0, 0.0);
+  return maskOfAreas(diskAreaBelow(chordHeight(lowEnd)), diskAreaBelow(chordHeight(highEnd)), wrapsBehind);
 }
 
 void main() {

@@ -30,30 +30,44 @@ float cross2(vec2 a, vec2 b) {
   return a.x * b.y - a.y * b.x;
 }
 
+// asin within 5e-5 (Abramowitz & Stegun 4.4.45): SwiftShader's own asin cost as much as the rest
+// of the area.
+float fastAsin(float x) {
+  float a = abs(x);
+  float fromRightAngle = sqrt(1.0 - a) * (1.5707288 + a * (-0.2121144 + a * (0.0742610 + a * -0.0187293)));
+  return sign(x) * (PI / 2.0 - fromRightAngle);
+}
+
 // Fraction of a unit disk lying below the chord at signed height t.
 float diskAreaBelow(float t) {
   t = clamp(t, -1.0, 1.0);
-  return 0.5 + (asin(t) + t * sqrt(1.0 - t * t)) / PI;
+  return 0.5 + (fastAsin(t) + t * sqrt(1.0 - t * t)) * (1.0 / PI);
 }
 
 // A ray at angle θ off the axis passes the light centre at distance·sin(θ); over the radius it is
 // the height of the chord that splits the disk.
 float chordHeight(vec2 direction) {
   float across = cross2(axis, direction);
-  if (dot(axis, direction) <= 0.0) return across >= 0.0 ? PAST_HIGH : PAST_LOW;
-  return scale * across / length(direction);
+  float ahead = scale * across * inversesqrt(dot(direction, direction));
+  return dot(axis, direction) > 0.0 ? ahead : (across >= 0.0 ? PAST_HIGH : PAST_LOW);
+}
+
+// The mask of a hull hiding the part of the disk between the areas low and high measured from its
+// first side, or (wrapping behind the pixel) all but that part. Selects, not branches: SwiftShader
+// runs both sides of a branch.
+vec4 maskOfAreas(float lowArea, float highArea, bool wraps) {
+  bool fromFirstSide = wraps || lowArea <= TOUCH;
+  bool fromOtherSide = wraps || highArea >= 1.0 - TOUCH;
+  bool whole = fromFirstSide && fromOtherSide && !wraps;
+  return vec4(fromFirstSide ? (whole ? 1.0 : highArea) : 0.0,
+              fromOtherSide && !whole ? 1.0 - lowArea : 0.0,
+              fromFirstSide || fromOtherSide ? 0.0 : highArea - lowArea,
+              0.0);
 }
 
 // The mask of a hull hiding the directions between the chords at heights low and high.
 vec4 maskBetween(float low, float high) {
-  float lowArea = diskAreaBelow(low);
-  float highArea = diskAreaBelow(high);
-  bool fromFirstSide = lowArea <= TOUCH;
-  bool fromOtherSide = highArea >= 1.0 - TOUCH;
-  if (fromFirstSide && fromOtherSide) return vec4(1.0, 0.0, 0.0, 0.0);
-  if (fromFirstSide) return vec4(highArea, 0.0, 0.0, 0.0);
-  if (fromOtherSide) return vec4(0.0, 1.0 - lowArea, 0.0, 0.0);
-  return vec4(0.0, 0.0, highArea - lowArea, 0.0);
+  return maskOfAreas(diskAreaBelow(low), diskAreaBelow(high), false);
 }
 
 vec2 pointOffset(ivec2 texel) {
