@@ -8,6 +8,17 @@ precision highp sampler2D;
 
 const float TURN = 6.28318530717959;
 
+// atan(y, x) within 1e-5: SwiftShader's own costs several times more, once per point.
+float fastAtan(float y, float x) {
+  float ax = abs(x), ay = abs(y);
+  float ratio = min(ax, ay) / max(max(ax, ay), 1e-30);
+  float square = ratio * ratio;
+  float angle = ratio + ratio * square * (-0.327622764 + square * (0.15931422 + square * -0.0464964749));
+  angle = ay > ax ? PI / 2.0 - angle : angle;
+  angle = x < 0.0 ? PI - angle : angle;
+  return y < 0.0 ? -angle : angle;
+}
+
 // The part of the disk hidden by the directions [low, high], measured like `centre` (the light's
 // direction), when they overlap the disk's angular width around it.
 vec4 maskOfDirections(float low, float high, float centre, float halfWidth) {
@@ -20,23 +31,24 @@ vec4 maskOfDirections(float low, float high, float centre, float halfWidth) {
 // Walking the outline, the direction to the points turns back and forth; the extremes of the
 // accumulated turn bound the one interval of directions the hull covers, also when it spans more
 // than 180° (from inside a cavity) and wraps behind the pixel. Measured from the first point.
+vec2 previous;
+float turn;
+float lowest;
+float highest;
+
+void visitPoint(vec2 toPoint) {
+  turn += fastAtan(cross2(previous, toPoint), dot(previous, toPoint));
+  lowest = min(lowest, turn);
+  highest = max(highest, turn);
+  previous = toPoint;
+}
+
 vec4 maskOfAnyHullRegion() {
-  int width = textureSize(u_hullPoints, 0).x;
-  ivec2 texel = ivec2(v_hull.x % width, v_hull.x / width);
-  vec2 first = pointOffset(texel);
-  vec2 previous = first;
-  float turn = 0.0;
-  float lowest = 0.0;
-  float highest = 0.0;
-  for (int i = 1; i < v_hull.y; i++) {
-    texel = nextTexel(texel, width);
-    vec2 toPoint = pointOffset(texel);
-    turn += atan(cross2(previous, toPoint), dot(previous, toPoint));
-    lowest = min(lowest, turn);
-    highest = max(highest, turn);
-    previous = toPoint;
-  }
-  float centre = atan(cross2(first, axis), dot(first, axis));
+  vec2 first = firstPointOffset();
+  previous = first;
+  turn = lowest = highest = 0.0;
+  visitHullPoints();
+  float centre = fastAtan(cross2(first, axis), dot(first, axis));
   float halfWidth = fastAsin(min(1.0 / scale, 1.0));
   // The interval is under a full turn and the disk under half of one: the disk meets it at most
   // twice, once from each side, in the light's direction or a turn either way.

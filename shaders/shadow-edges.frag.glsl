@@ -9,27 +9,27 @@ precision highp sampler2D;
 // Any hull, convex or not, seen from the pixel. Points ahead of the pixel (towards the light) lie in
 // one half-plane, so a cross product orders their angles: no square root or division per point.
 // Points behind the pixel stand for directions past ±90°, beyond any chord of the disk.
+vec2 highest;
+vec2 lowest;
+bool highBehind;
+bool lowBehind;
+bool anyAhead;
+
+void visitPoint(vec2 toPoint) {
+  float across = cross2(axis, toPoint);
+  bool ahead = dot(axis, toPoint) > 0.0;
+  highBehind = highBehind || (!ahead && across >= 0.0);
+  lowBehind = lowBehind || (!ahead && across < 0.0);
+  anyAhead = anyAhead || ahead;
+  if (ahead && cross2(highest, toPoint) > 0.0) highest = toPoint;
+  if (ahead && cross2(lowest, toPoint) < 0.0) lowest = toPoint;
+}
+
 vec4 maskOfAnyHull() {
-  vec2 highest = vec2(axis.y, -axis.x); // -90°: below every point ahead
-  vec2 lowest = vec2(-axis.y, axis.x);  // +90°: above every point ahead
-  bool highBehind = false;
-  bool lowBehind = false;
-  bool anyAhead = false;
-  int width = textureSize(u_hullPoints, 0).x;
-  ivec2 texel = ivec2(v_hull.x % width, v_hull.x / width);
-  for (int i = 0; i < v_hull.y; i++) {
-    vec2 toPoint = pointOffset(texel);
-    texel = nextTexel(texel, width);
-    float across = cross2(axis, toPoint);
-    if (dot(axis, toPoint) <= 0.0) {
-      highBehind = highBehind || across >= 0.0;
-      lowBehind = lowBehind || across < 0.0;
-      continue;
-    }
-    anyAhead = true;
-    if (cross2(highest, toPoint) > 0.0) highest = toPoint;
-    if (cross2(lowest, toPoint) < 0.0) lowest = toPoint;
-  }
+  highest = vec2(axis.y, -axis.x); // -90°: below every point ahead
+  lowest = vec2(-axis.y, axis.x);  // +90°: above every point ahead
+  highBehind = lowBehind = anyAhead = false;
+  visitHullPoints();
   // A hull wholly behind the pixel hides nothing: every segment to the disk leaves ahead.
   vec4 mask = maskBetween(lowBehind ? PAST_LOW : chordHeight(lowest), highBehind ? PAST_HIGH : chordHeight(highest));
   return anyAhead ? mask : vec4(0.0);

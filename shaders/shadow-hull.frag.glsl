@@ -9,17 +9,17 @@ precision highp sampler2D;
 // A convex hull seen from outside spans less than 180°, so a cross product orders the directions
 // of all its points (not only those ahead): the two extremes bound its interval exactly, also
 // when it wraps behind the pixel and hides the disk from both sides, clear of its middle.
+vec2 lowEnd;
+vec2 highEnd;
+
+void visitPoint(vec2 toPoint) {
+  if (cross2(highEnd, toPoint) > 0.0) highEnd = toPoint;
+  if (cross2(lowEnd, toPoint) < 0.0) lowEnd = toPoint;
+}
+
 vec4 maskOfConvexHull() {
-  int width = textureSize(u_hullPoints, 0).x;
-  ivec2 texel = ivec2(v_hull.x % width, v_hull.x / width);
-  vec2 lowEnd = pointOffset(texel);
-  vec2 highEnd = lowEnd;
-  for (int i = 1; i < v_hull.y; i++) {
-    texel = nextTexel(texel, width);
-    vec2 toPoint = pointOffset(texel);
-    if (cross2(highEnd, toPoint) > 0.0) highEnd = toPoint;
-    if (cross2(lowEnd, toPoint) < 0.0) lowEnd = toPoint;
-  }
+  lowEnd = highEnd = firstPointOffset();
+  visitHullPoints();
   bool wrapsBehind = cross2(lowEnd, -axis) > 0.0 && cross2(-axis, highEnd) > 0.0;
   return maskOfAreas(diskAreaBelow(chordHeight(lowEnd)), diskAreaBelow(chordHeight(highEnd)), wrapsBehind);
 }

@@ -29,6 +29,12 @@ uniform bool u_umbra;
 
 flat out ivec2 v_hull;
 
+#ifdef POINTS_IN_VARYINGS
+// For the stages of small hulls: their points, two per vector, padded with the last point. Fetched
+// once per vertex here rather than once per fragment, which cost SwiftShader a third of the stage.
+flat out vec4 v_points[SMALL_HULL_POINTS / 2];
+#endif
+
 vec4 texelAt(int index) {
   int width = textureSize(u_hullPoints, 0).x;
   return texelFetch(u_hullPoints, ivec2(index % width, index / width), 0);
@@ -129,4 +135,9 @@ void main() {
   gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
   gl_Position.z = (u_umbra ? -1.0 : 0.0) * gl_Position.w;
   v_hull = hull;
+#ifdef POINTS_IN_VARYINGS
+  for (int i = 0; i < SMALL_HULL_POINTS / 2; i++) {
+    v_points[i] = vec4(texelAt(hull.x + min(2 * i, hull.y - 1)).xy, texelAt(hull.x + min(2 * i + 1, hull.y - 1)).xy);
+  }
+#endif
 }

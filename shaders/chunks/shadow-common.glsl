@@ -6,13 +6,10 @@
 // first side, G = 1 - low when it reaches the other side, and B = high - low when it touches
 // neither. With MAX blending, R + G + B is then the exact union for hulls that hide the disk from
 // its sides (the common case) and the largest interval for the rest.
-uniform sampler2D u_hullPoints; // one world point per texel (xy)
 uniform vec2 u_lightPosition;
 uniform float u_lightRadius;
 uniform mat4 u_clipToWorld;
 uniform vec2 u_targetSize;
-
-flat in ivec2 v_hull; // the hull's first point and point count
 
 out vec4 o_mask;
 
@@ -70,15 +67,56 @@ vec4 maskBetween(float low, float high) {
   return maskOfAreas(diskAreaBelow(low), diskAreaBelow(high), false);
 }
 
-vec2 pointOffset(ivec2 texel) {
-  return texelFetch(u_hullPoints, texel, 0).xy - pixel;
+// Each stage defines what it does with the offset from the pixel to one of the hull's points.
+void visitPoint(vec2 toPoint);
+
+#ifdef POINTS_IN_VARYINGS
+#if SMALL_HULL_POINTS != 8
+#error visitHullPoints visits eight points
+#endif
+// A small hull's points, two per vector, padded with its last point (see shadow-mask.vert.glsl).
+flat in vec4 v_points[SMALL_HULL_POINTS / 2];
+
+vec2 firstPointOffset() {
+  return v_points[0].xy - pixel;
 }
 
-// Steps to the next point's texel instead of dividing the index by the width for every point.
-ivec2 nextTexel(ivec2 texel, int width) {
-  texel.x++;
-  return texel.x == width ? ivec2(0, texel.y + 1) : texel;
+// Visits every point in order, the padding too: repeating the last point changes no stage's result.
+// Unrolled by hand: in a loop, SwiftShader indexes the varyings in memory, slower than fetching.
+void visitHullPoints() {
+  visitPoint(v_points[0].xy - pixel);
+  visitPoint(v_points[0].zw - pixel);
+  visitPoint(v_points[1].xy - pixel);
+  visitPoint(v_points[1].zw - pixel);
+  visitPoint(v_points[2].xy - pixel);
+  visitPoint(v_points[2].zw - pixel);
+  visitPoint(v_points[3].xy - pixel);
+  visitPoint(v_points[3].zw - pixel);
 }
+#else
+uniform sampler2D u_hullPoints; // one world point per texel (xy)
+flat in ivec2 v_hull;           // the hull's first point and point count
+
+ivec2 firstTexel() {
+  int width = textureSize(u_hullPoints, 0).x;
+  return ivec2(v_hull.x % width, v_hull.x / width);
+}
+
+vec2 firstPointOffset() {
+  return texelFetch(u_hullPoints, firstTexel(), 0).xy - pixel;
+}
+
+// Visits every point in order. Steps to the next texel rather than dividing each index by the width.
+void visitHullPoints() {
+  int width = textureSize(u_hullPoints, 0).x;
+  ivec2 texel = firstTexel();
+  for (int i = 0; i < v_hull.y; i++) {
+    visitPoint(texelFetch(u_hullPoints, texel, 0).xy - pixel);
+    texel.x++;
+    if (texel.x == width) texel = ivec2(0, texel.y + 1);
+  }
+}
+#endif
 
 // Sets pixel, axis and scale for this fragment.
 void seeFromPixel() {

@@ -6,10 +6,27 @@ import { isInsidePolygon } from './polygon';
 import { scissorOf } from './scissor';
 import type { HullSlot, ShadowGeometry } from './ShadowGeometry';
 
-/** How a hull in range casts its shadow. */
-const CONVEX_HULL = 0;
-const CONCAVE_HULL = 1;
-const EDGES = 2;
+/**
+ * The runs of shadow casters each light draws, in this order, each with a fragment stage of its own
+ * (SwiftShader runs both sides of a per-fragment branch). Whole hulls come first, so that their
+ * umbrae are one draw. A small hull has at most {@link SMALL_HULL_POINTS} points.
+ */
+export const CasterRun = {
+  SmallConvexHulls: 0,
+  ConvexHulls: 1,
+  SmallConcaveHulls: 2,
+  ConcaveHulls: 3,
+  SmallHullEdges: 4,
+  HullEdges: 5,
+} as const;
+export type CasterRun = (typeof CasterRun)[keyof typeof CasterRun];
+export const CASTER_RUN_COUNT = 6;
+
+/**
+ * Hulls with at most this many points are "small": the shadow-mask vertex stage passes their points
+ * to the fragment stage in varyings instead of each fragment fetching them.
+ */
+export const SMALL_HULL_POINTS = 8;
 
 /** `casters` grows in whole rows of this many entries, so it fills the rows of the texture it is uploaded to. */
 export const CASTER_ROW = 1024;
@@ -40,10 +57,11 @@ export class LightDraw {
   /** Offset and count, in the plan's `casters`, of the shadow casters in range (one shadow quad each). */
   casterOffset = 0;
   casterCount = 0;
-  /** How many of those casters, first, are whole hulls; the rest are edges. */
-  hullCasterCount = 0;
-  /** How many of the whole hulls, first, are convex. */
-  convexCasterCount = 0;
+  /**
+   * Where each {@link CasterRun} of those casters ends, counted from `casterOffset`: run `r` holds
+   * the casters from `runEnds[r - 1]` (0 for the first) up to `runEnds[r]`.
+   */
+  readonly runEnds = new Uint32Array(CASTER_RUN_COUNT);
   /** Distance from the light's position beyond which it adds nothing (`Light.reach`). */
   reach = 0;
   /** Offset and count, in the plan's `indices`, of the triangles of the hulls in range. */
@@ -51,6 +69,11 @@ export class LightDraw {
   triangleIndexCount = 0;
   /** Number of hulls in range that shadow this light. */
   hullCount = 0;
+
+  /** How many casters, first, are whole hulls (regions with an umbra); the rest are edges. */
+  get wholeHullCasterCount(): number {
+    return this.runEnds[CasterRun.SmallHullEdges - 1];
+  }
 }
 
 /**
@@ -76,8 +99,10 @@ export class FramePlan {
   private readonly slotsInRange: HullSlot[] = [];
   /** The hulls of `slotsInRange`. */
   private readonly hullsInRange: Hull[] = [];
-  /** Per hull in range: how it casts its shadow (`CONVEX_HULL`, `CONCAVE_HULL` or `EDGES`). */
-  private casterKinds = new Uint32Array(64);
+  /** Per hull in range: the {@link CasterRun} of its casters. */
+  private casterRuns = new Uint8Array(64);
+  /** Per run: its caster count, then where its next caster goes. */
+  private readonly runCursors = new Uint32Array(CASTER_RUN_COUNT);
   private inRangeCount = 0;
   private readonly grid = new HullGrid();
   /** Box around the bounds of every light placed this frame that casts shadows: the grid files only hulls inside it. */
@@ -188,50 +213,52 @@ export class FramePlan {
   }
 
   /**
-   * Appends the casters of the hulls in range in three runs, each with its own fragment stage:
-   * convex whole hulls, concave whole hulls, then the edges of the hulls close to the disk. Counts
-   * first, then writes each caster at its run's cursor, in one pass.
+   * Appends the casters of the hulls in range, run by run (see {@link CasterRun}). Counts first,
+   * then writes each caster at its run's cursor, in one pass.
    */
   private appendCasters(draw: LightDraw, count: number): void {
     const light = draw.light, inRange = this.slotsInRange;
-    const kinds = this.casterKinds = ensureCapacity(this.casterKinds, 0, count);
-    let convex = 0, concave = 0, edges = 0;
+    const runs = this.casterRuns = ensureCapacity(this.casterRuns, 0, count);
+    const cursors = this.runCursors.fill(0);
     for (let i = 0; i < count; i++) {
-      const hull = this.hullsInRange[i];
-      if (!isClearOfDisk(hull, light)) {
-        kinds[i] = EDGES;
-        edges += inRange[i].pointCount;
-      } else if (hull.convex) {
-        kinds[i] = CONVEX_HULL;
-        convex++;
-      } else {
-        kinds[i] = CONCAVE_HULL;
-        concave++;
-      }
+      const hull = this.hullsInRange[i], pointCount = inRange[i].pointCount;
+      const run = casterRunOf(hull, pointCount, light);
+      runs[i] = run;
+      cursors[run] += run >= CasterRun.SmallHullEdges ? pointCount : 1;
     }
     const first = this.casterCount;
-    const casters = this.casters = ensureCapacity(this.casters, first, convex + concave + edges, CASTER_ROW);
-    let convexAt = first, concaveAt = first + convex, edgeAt = first + convex + concave;
-    for (let i = 0; i < count; i++) {
-      const slot = inRange[i];
-      if (kinds[i] === CONVEX_HULL) casters[convexAt++] = -1 - slot.firstPoint;
-      else if (kinds[i] === CONCAVE_HULL) casters[concaveAt++] = -1 - slot.firstPoint;
-      else for (let e = slot.firstPoint, end = e + slot.pointCount; e < end; e++) casters[edgeAt++] = e;
+    let end = 0;
+    for (let run = 0; run < CASTER_RUN_COUNT; run++) {
+      const runCount = cursors[run];
+      cursors[run] = first + end;
+      end += runCount;
+      draw.runEnds[run] = end;
     }
-    this.casterCount = edgeAt;
+    const casters = this.casters = ensureCapacity(this.casters, first, end, CASTER_ROW);
+    for (let i = 0; i < count; i++) {
+      const slot = inRange[i], run = runs[i];
+      if (run < CasterRun.SmallHullEdges) casters[cursors[run]++] = -1 - slot.firstPoint;
+      else for (let e = slot.firstPoint, last = e + slot.pointCount; e < last; e++) casters[cursors[run]++] = e;
+    }
+    this.casterCount = first + end;
     draw.casterOffset = first;
-    draw.convexCasterCount = convex;
-    draw.hullCasterCount = convex + concave;
-    draw.casterCount = edgeAt - first;
+    draw.casterCount = end;
   }
 }
 
 /** `array`, or a grown copy of its first `used` entries, with room for `extra` more (and a length a multiple of `granule`). */
-function ensureCapacity<T extends Uint32Array<ArrayBuffer> | Float32Array<ArrayBuffer>>(array: T, used: number, extra: number, granule = 1): T {
+function ensureCapacity<T extends Uint8Array<ArrayBuffer> | Uint32Array<ArrayBuffer> | Float32Array<ArrayBuffer>>(array: T, used: number, extra: number, granule = 1): T {
   if (used + extra <= array.length) return array;
   const grown = new (array.constructor as new (length: number) => T)(Math.ceil(Math.max(used + extra, array.length * 2) / granule) * granule);
   grown.set(array.subarray(0, used));
   return grown;
+}
+
+/** How a hull in range casts its shadow: one region (convex or concave), or one quad per edge; from a small hull or not. */
+function casterRunOf(hull: Hull, pointCount: number, light: Light): CasterRun {
+  const large = pointCount > SMALL_HULL_POINTS ? 1 : 0;
+  if (!isClearOfDisk(hull, light)) return (CasterRun.SmallHullEdges + large) as CasterRun;
+  return ((hull.convex ? CasterRun.SmallConvexHulls : CasterRun.SmallConcaveHulls) + large) as CasterRun;
 }
 
 /**

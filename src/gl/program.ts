@@ -65,6 +65,13 @@ function uniformLocations(gl: WebGL2RenderingContext, program: WebGLProgram): Re
   return uniforms;
 }
 
+/** `source` with a `#define name value` line for each entry, after its `#version` line. */
+export function withDefines(source: string, defines: Readonly<Record<string, string | number>>): string {
+  const lines = Object.entries(defines).map(([name, value]) => `#define ${name} ${value}`.trimEnd()).join('\n');
+  const versionEnd = source.startsWith('#version') ? source.indexOf('\n') + 1 : 0;
+  return `${source.slice(0, versionEnd)}${lines}\n${source.slice(versionEnd)}`;
+}
+
 /** Replaces `#include "name"` lines with the named chunk. */
 export function resolveIncludes(source: string, chunks: Readonly<Record<string, string>>): string {
   return source.replace(/^#include\s+"([\w-]+)"\s*$/gm, (_, name: string) => {

@@ -20,7 +20,7 @@ export class DebugPass {
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly quad: UnitQuad) {
     this.quadProgram = createProgram(gl, 'debug light quads', shaderSources.lightVertex, shaderSources.debugFragment);
-    this.shadowProgram = createProgram(gl, 'debug shadow geometry', shaderSources.shadowMaskVertex, shaderSources.debugFragment);
+    this.shadowProgram = createProgram(gl, 'debug shadow geometry', shaderSources.shadowMaskVertex.anyHulls, shaderSources.debugFragment);
     this.casterUniforms = new CasterUniforms(gl);
   }
 

@@ -1,19 +1,36 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
-import type { LightDraw } from '../geometry/FramePlan';
+import { CASTER_RUN_COUNT, CasterRun, type LightDraw } from '../geometry/FramePlan';
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget } from '../gl/RenderTarget';
 import { CASTER_VERTICES, CasterUniforms } from './CasterUniforms';
 import type { GeometryBuffers } from './GeometryBuffers';
-import { shaderSources } from './shaders';
+import { shaderSources, type ShadowStageSources } from './shaders';
 
 /** The cleared mask: no part of the disk hidden. */
 const NOTHING_HIDDEN = new Float32Array(4);
 /** The cleared depth: umbrae are drawn nearer, and the other shadow quads behind them fail the depth test. */
 const FARTHEST = 1;
 
+interface RunStage {
+  name: string;
+  fragment: ShadowStageSources;
+  /** Whether the program is the small hulls' build (points in varyings). */
+  smallHulls: boolean;
+}
+
+/** The fragment stage of each run of casters. */
+const RUN_STAGES: Record<CasterRun, RunStage> = {
+  [CasterRun.SmallConvexHulls]: { name: 'small convex hulls', fragment: shaderSources.shadowHullFragment, smallHulls: true },
+  [CasterRun.ConvexHulls]: { name: 'convex hulls', fragment: shaderSources.shadowHullFragment, smallHulls: false },
+  [CasterRun.SmallConcaveHulls]: { name: 'small concave hulls', fragment: shaderSources.shadowConcaveFragment, smallHulls: true },
+  [CasterRun.ConcaveHulls]: { name: 'concave hulls', fragment: shaderSources.shadowConcaveFragment, smallHulls: false },
+  [CasterRun.SmallHullEdges]: { name: 'edges of small hulls', fragment: shaderSources.shadowEdgesFragment, smallHulls: true },
+  [CasterRun.HullEdges]: { name: 'edges', fragment: shaderSources.shadowEdgesFragment, smallHulls: false },
+};
+
 /**
  * Shadow mask pass: per light, writes into its own RGBA8 target how much of the light disk the
- * hulls in range hide from each pixel (see shadow-mask.frag.glsl), then lets the hull pass mark
+ * hulls in range hide from each pixel (see the chunk shadow-common), then lets the hull pass mark
  * the hulls' insides. Each shadow caster is one quad (shadow-mask.vert.glsl); light-facing edges
  * are culled by the rasterizer. The umbrae of the whole-hull casters are drawn first, cheaply and
  * with depth, so that the costly shadow fragments behind them (of any caster) are skipped by the
@@ -21,26 +38,21 @@ const FARTHEST = 1;
  */
 export class ShadowMaskPass {
   readonly target: RenderTarget;
-  /**
-   * For the regions of convex and of concave hulls, and for edge quads: a program each rather than a
-   * branch per fragment, which cost SwiftShader 30% (it runs both sides).
-   */
-  private readonly hullProgram: Program;
-  private readonly concaveProgram: Program;
   private readonly umbraProgram: Program;
-  private readonly edgesProgram: Program;
-  private readonly programs: readonly Program[];
-  /** The programs that compute the hidden part of the disk per pixel (all but the umbra's). */
+  /** Per `CasterRun`: the program that computes the hidden part of the disk per pixel. */
   private readonly shadingPrograms: readonly Program[];
   private readonly casterUniforms: CasterUniforms;
 
   constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number) {
-    this.hullProgram = createProgram(gl, 'shadow mask of hulls', shaderSources.shadowMaskVertex, shaderSources.shadowHullFragment);
-    this.umbraProgram = createProgram(gl, 'shadow mask of umbrae', shaderSources.shadowMaskVertex, shaderSources.shadowUmbraFragment);
-    this.concaveProgram = createProgram(gl, 'shadow mask of concave hulls', shaderSources.shadowMaskVertex, shaderSources.shadowConcaveFragment);
-    this.edgesProgram = createProgram(gl, 'shadow mask of edges', shaderSources.shadowMaskVertex, shaderSources.shadowEdgesFragment);
-    this.shadingPrograms = [this.hullProgram, this.concaveProgram, this.edgesProgram];
-    this.programs = [this.umbraProgram, ...this.shadingPrograms];
+    const vertex = shaderSources.shadowMaskVertex;
+    this.umbraProgram = createProgram(gl, 'shadow mask of umbrae', vertex.anyHulls, shaderSources.shadowUmbraFragment);
+    const shading: Program[] = [];
+    for (let run = 0; run < CASTER_RUN_COUNT; run++) {
+      const { name, fragment, smallHulls } = RUN_STAGES[run as CasterRun];
+      const build = smallHulls ? 'smallHulls' : 'anyHulls';
+      shading.push(createProgram(gl, `shadow mask of ${name}`, vertex[build], fragment[build]));
+    }
+    this.shadingPrograms = shading;
     this.target = new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, width, height);
     this.casterUniforms = new CasterUniforms(gl);
   }
@@ -91,12 +103,13 @@ export class ShadowMaskPass {
     gl.enable(gl.DEPTH_TEST);
     gl.depthFunc(gl.LESS);
     gl.bindVertexArray(buffers.casterVertexArray);
-    const convex = draw.convexCasterCount, hulls = draw.hullCasterCount, all = draw.casterCount;
-    if (hulls > 0) this.drawCasters(this.umbraProgram, draw, 0, hulls);
+    const wholeHulls = draw.wholeHullCasterCount;
+    if (wholeHulls > 0) this.drawCasters(this.umbraProgram, draw, 0, wholeHulls);
     gl.depthMask(false);
-    if (convex > 0) this.drawCasters(this.hullProgram, draw, 0, convex);
-    if (hulls > convex) this.drawCasters(this.concaveProgram, draw, convex, hulls - convex);
-    if (all > hulls) this.drawCasters(this.edgesProgram, draw, hulls, all - hulls);
+    const ends = draw.runEnds;
+    for (let run = 0, start = 0; run < CASTER_RUN_COUNT; start = ends[run++]) {
+      if (ends[run] > start) this.drawCasters(this.shadingPrograms[run], draw, start, ends[run] - start);
+    }
     gl.disable(gl.DEPTH_TEST);
     gl.disable(gl.CULL_FACE);
   }
@@ -110,7 +123,8 @@ export class ShadowMaskPass {
   }
 
   dispose(): void {
-    for (const program of this.programs) this.gl.deleteProgram(program.handle);
+    this.gl.deleteProgram(this.umbraProgram.handle);
+    for (const program of this.shadingPrograms) this.gl.deleteProgram(program.handle);
     this.target.dispose();
   }
 }

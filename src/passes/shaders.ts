@@ -14,9 +14,28 @@ import shadowEdgesFragment from '../../shaders/shadow-edges.frag.glsl?raw';
 import shadowHullFragment from '../../shaders/shadow-hull.frag.glsl?raw';
 import shadowMaskVertex from '../../shaders/shadow-mask.vert.glsl?raw';
 import shadowUmbraFragment from '../../shaders/shadow-umbra.frag.glsl?raw';
-import { resolveIncludes } from '../gl/program';
+import { SMALL_HULL_POINTS } from '../geometry/FramePlan';
+import { resolveIncludes, withDefines } from '../gl/program';
 
 const chunks = { 'light-common': lightCommon, 'shadow-common': shadowCommon };
+
+/**
+ * A shadow-mask stage built twice: for casters of any hull, which the stages read from the points
+ * texture, and for small hulls (at most `SMALL_HULL_POINTS` points), whose points the vertex stage
+ * passes in varyings. The pair of a program must be of the same build.
+ */
+export interface ShadowStageSources {
+  readonly anyHulls: string;
+  readonly smallHulls: string;
+}
+
+function shadowStage(source: string): ShadowStageSources {
+  const resolved = resolveIncludes(source, chunks);
+  return {
+    anyHulls: withDefines(resolved, { SMALL_HULL_POINTS }),
+    smallHulls: withDefines(resolved, { SMALL_HULL_POINTS, POINTS_IN_VARYINGS: '' }),
+  };
+}
 
 /** The GLSL sources, inlined at build time, with their chunks resolved. */
 export const shaderSources = {
@@ -29,9 +48,9 @@ export const shaderSources = {
   lightPointFragment: resolveIncludes(lightPointFragment, chunks),
   lightSpotFragment: resolveIncludes(lightSpotFragment, chunks),
   lightTexturedFragment: resolveIncludes(lightTexturedFragment, chunks),
-  shadowConcaveFragment: resolveIncludes(shadowConcaveFragment, chunks),
-  shadowEdgesFragment: resolveIncludes(shadowEdgesFragment, chunks),
-  shadowHullFragment: resolveIncludes(shadowHullFragment, chunks),
-  shadowMaskVertex,
+  shadowConcaveFragment: shadowStage(shadowConcaveFragment),
+  shadowEdgesFragment: shadowStage(shadowEdgesFragment),
+  shadowHullFragment: shadowStage(shadowHullFragment),
+  shadowMaskVertex: shadowStage(shadowMaskVertex),
   shadowUmbraFragment,
 };

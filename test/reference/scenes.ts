@@ -34,6 +34,12 @@ const openU: Point[] = [[70, 35], [100, 35], [100, 85], [70, 85], [70, 75], [90,
 /** An L: its inner corner faces the light, so a part of the hull hides another part. */
 const lShape: Point[] = [[75, 30], [85, 30], [85, 70], [110, 70], [110, 80], [75, 80]];
 
+/** A regular polygon of `count` points: more than SMALL_HULL_POINTS (8) takes the stages that fetch points. */
+const roundHull = (x: number, y: number, radius: number, count: number): Point[] =>
+  Array.from({ length: count }, (_, i) => [x + radius * Math.cos((2 * Math.PI * i) / count), y + radius * Math.sin((2 * Math.PI * i) / count)]);
+/** A comb of three teeth pointing away from a light on its left: 12 points, concave. */
+const comb: Point[] = [[70, 30], [80, 30], [80, 45], [100, 45], [100, 55], [80, 55], [80, 65], [100, 65], [100, 75], [80, 75], [80, 90], [70, 90]];
+
 export const REFERENCE_SCENES: readonly ReferenceScene[] = [
   { name: 'convex, hard (r=0)', width: WIDTH, height: HEIGHT,
     light: { position: [40, 60], range: 140, radius: 0 }, hulls: [box(70, 45, 16, 30)] },
@@ -65,6 +71,13 @@ export const REFERENCE_SCENES: readonly ReferenceScene[] = [
   // Closer still (80° either side): too wide for one region, a convex hull cast as one quad per edge.
   { name: 'box very close to the disk (r=10)', width: WIDTH, height: HEIGHT,
     light: { position: [40, 60], range: 140, radius: 10 }, hulls: [box(52, 50, 10, 20)] },
+  // Hulls of more than eight points: their stages read the points from the texture, not varyings.
+  { name: 'round pillar of 16 points (r=8)', width: WIDTH, height: HEIGHT,
+    light: { position: [40, 60], range: 140, radius: 8 }, hulls: [roundHull(85, 62, 12, 16)] },
+  { name: 'comb of 12 points (r=6)', width: WIDTH, height: HEIGHT,
+    light: { position: [30, 60], range: 150, radius: 6 }, hulls: [comb] },
+  { name: 'round pillar of 12 points close to the disk (r=10)', width: WIDTH, height: HEIGHT,
+    light: { position: [40, 60], range: 140, radius: 10 }, hulls: [roundHull(62, 60, 10, 12)] },
   { name: 'three hulls, hard (r=0)', width: WIDTH, height: HEIGHT,
     // Off the pixel grid: from a light on it, rows of pixel centres line up exactly with a hull corner,
     // where a grazing segment is neither clearly lit nor clearly hidden.
