@@ -28,6 +28,8 @@ uniform bool u_outline;
 uniform bool u_umbra;
 
 flat out ivec2 v_hull;
+// World position: the shading stages interpolate it rather than invert the view-projection per pixel.
+out vec2 v_world;
 
 #ifdef POINTS_IN_VARYINGS
 // For the stages of small hulls: their points, two per vector, padded with the last point. Fetched
@@ -133,6 +135,7 @@ void main() {
   ivec2 hull = ivec2(texelAt(point).zw);
   vec2 world = wholeHull ? hullCorner(hull, corner) : edgeQuadCorner(point, hull, corner);
   gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
+  v_world = world;
   gl_Position.z = (u_umbra ? -1.0 : 0.0) * gl_Position.w;
   v_hull = hull;
 #ifdef POINTS_IN_VARYINGS

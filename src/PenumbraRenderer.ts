@@ -89,7 +89,6 @@ export class PenumbraRenderer {
   private readonly _hulls: Hull[] = [];
   private readonly _ambient: [number, number, number] = [0.2, 0.2, 0.2];
   private readonly _viewProjection = mat4.create();
-  private readonly clipToWorld = mat4.create();
   private customViewProjection = false;
   private readonly geometry = new ShadowGeometry();
   private readonly plan = new FramePlan();
@@ -326,8 +325,10 @@ export class PenumbraRenderer {
     this.geometry.update(this._hulls);
     plan.build(this._lights, this._hulls, this.geometry, viewProjection, this.lightmapWidth, this.lightmapHeight);
     resources.buffers.upload(this.geometry, plan);
-    const mirrored = this.updateClipToWorld();
-    resources.shadowMask.beginFrame(resources.buffers, viewProjection, this.clipToWorld);
+    const m = viewProjection;
+    // A view-projection that flips orientation turns the light-facing edges' quads the other way.
+    const mirrored = m[0] * m[5] - m[1] * m[4] < 0;
+    resources.shadowMask.beginFrame(resources.buffers, viewProjection);
     resources.light.begin(this._ambient);
     gl.enable(gl.SCISSOR_TEST);
     for (let i = 0; i < plan.drawCount; i++) {
@@ -351,26 +352,6 @@ export class PenumbraRenderer {
     stats.hulls = this._hulls.length;
     stats.edges = this.geometry.validEdgeCount;
     stats.cpuTime = cpuTime;
-  }
-
-  /**
-   * Inverts the view-projection's 2D affine part into `clipToWorld` (the shadow pass turns
-   * fragment positions back into world points); returns whether it mirrors orientation.
-   */
-  private updateClipToWorld(): boolean {
-    const m = this._viewProjection;
-    const det = m[0] * m[5] - m[1] * m[4];
-    const out = this.clipToWorld;
-    mat4.identity(out);
-    if (det !== 0) {
-      out[0] = m[5] / det;
-      out[1] = -m[1] / det;
-      out[4] = -m[4] / det;
-      out[5] = m[0] / det;
-      out[12] = -(out[0] * m[12] + out[4] * m[13]);
-      out[13] = -(out[1] * m[12] + out[5] * m[13]);
-    }
-    return det < 0;
   }
 
   private bindCompositeTarget(): void {

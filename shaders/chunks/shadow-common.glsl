@@ -8,8 +8,8 @@
 // its sides (the common case) and the largest interval for the rest.
 uniform vec2 u_lightPosition;
 uniform float u_lightRadius;
-uniform mat4 u_clipToWorld;
-uniform vec2 u_targetSize;
+
+in vec2 v_world; // the pixel's world position, interpolated across the caster's quad
 
 out vec4 o_mask;
 
@@ -120,10 +120,9 @@ void visitHullPoints() {
 
 // Sets pixel, axis and scale for this fragment.
 void seeFromPixel() {
-  vec2 ndc = gl_FragCoord.xy / u_targetSize * 2.0 - 1.0;
-  pixel = (u_clipToWorld * vec4(ndc, 0.0, 1.0)).xy;
+  pixel = v_world;
   vec2 toLight = u_lightPosition - pixel;
-  float distance = max(length(toLight), 1e-6);
-  axis = toLight / distance;
-  scale = distance / max(u_lightRadius, 1e-4);
+  float inverseDistance = inversesqrt(max(dot(toLight, toLight), 1e-12));
+  axis = toLight * inverseDistance;
+  scale = 1.0 / (inverseDistance * max(u_lightRadius, 1e-4));
 }

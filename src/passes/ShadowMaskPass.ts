@@ -65,7 +65,7 @@ export class ShadowMaskPass {
    * Once a frame, before the lights: binds the geometry textures and sets what every light shares.
    * The light loop's other passes leave those texture units alone.
    */
-  beginFrame(buffers: GeometryBuffers, viewProjection: ReadonlyMat4, clipToWorld: ReadonlyMat4): void {
+  beginFrame(buffers: GeometryBuffers, viewProjection: ReadonlyMat4): void {
     const gl = this.gl;
     this.casterUniforms.bindTextures(buffers);
     gl.useProgram(this.umbraProgram.handle);
@@ -78,8 +78,6 @@ export class ShadowMaskPass {
       gl.useProgram(program.handle);
       this.casterUniforms.setFrame(program, viewProjection);
       gl.uniform1i(program.uniforms.u_umbra, 0);
-      gl.uniformMatrix4fv(program.uniforms.u_clipToWorld, false, clipToWorld);
-      gl.uniform2f(program.uniforms.u_targetSize, this.target.width, this.target.height);
     }
   }
 

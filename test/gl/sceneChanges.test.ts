@@ -144,7 +144,9 @@ describe('transforms', () => {
     const projection = mat4.ortho(mat4.create(), 0, W, H, 0, -1, 1);
     renderer.viewProjection = mat4.translate(mat4.create(), projection, [-12, -5, 0]);
     const moved = frame();
-    expect(maxDifference(moved, still, 12, 5)).toBeLessThan(0.002);
+    // Up to one step of the 8-bit shadow mask: the pixels' world positions are interpolated across
+    // the moved shadow quads, and a rounding difference can tip a penumbra value to the next step.
+    expect(maxDifference(moved, still, 12, 5)).toBeLessThanOrEqual(1 / 255);
     expect(maxDifference(moved, still)).toBeGreaterThan(0.1);
     renderer.viewProjection = null;
     expect(maxDifference(frame(), still)).toBe(0);
