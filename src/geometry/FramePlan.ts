@@ -4,7 +4,7 @@ import type { Light } from '../scene/lights';
 import { HullGrid } from './HullGrid';
 import { isInsidePolygon } from './polygon';
 import { scissorOf } from './scissor';
-import type { HullSlot, ShadowGeometry } from './ShadowGeometry';
+import type { ShadowGeometry } from './ShadowGeometry';
 
 /**
  * The runs of shadow casters each light draws, in this order, each with a fragment stage of its own
@@ -95,10 +95,8 @@ export class FramePlan {
   casterCount = 0;
   readonly draws: LightDraw[] = [];
   drawCount = 0;
-  /** Slots of the hulls in range of the current light: the first `inRangeCount` entries (never truncated, which would free the backing store). */
-  private readonly slotsInRange: HullSlot[] = [];
-  /** The hulls of `slotsInRange`. */
-  private readonly hullsInRange: Hull[] = [];
+  /** Indices of the hulls in range of the current light: the first `inRangeCount` entries. */
+  private hullsInRange = new Int32Array(64);
   /** Per hull in range: the {@link CasterRun} of its casters. */
   private casterRuns = new Uint8Array(64);
   /** Per run: its caster count, then where its next caster goes. */
@@ -159,12 +157,11 @@ export class FramePlan {
   /** Appends the index lists of the hulls in range; false when the light centre is inside a hull. */
   private collectHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
     const light = draw.light;
-    const inRange = this.slotsInRange;
     this.inRangeCount = 0;
     if (light.castsShadows && !this.findHullsInRange(draw, hulls, geometry)) return false;
-    const count = this.inRangeCount;
+    const count = this.inRangeCount, inRange = this.hullsInRange;
     draw.hullCount = count;
-    this.appendCasters(draw, count);
+    this.appendCasters(draw, hulls, geometry);
     draw.triangleIndexOffset = this.indexCount;
     for (let i = 0; i < count; i++) this.appendTriangles(geometry, inRange[i]);
     draw.triangleIndexCount = this.indexCount - draw.triangleIndexOffset;
@@ -172,9 +169,10 @@ export class FramePlan {
   }
 
   /**
-   * Fills `slotsInRange` with the hulls whose exact bounds overlap the light's, transforming each
+   * Fills `hullsInRange` with the hulls whose exact bounds overlap the light's, transforming each
    * candidate the grid finds by its coarse bounds first (see `ShadowGeometry.prepare`), so every
-   * change reaches the light this frame; false when the light centre is inside one of them.
+   * change reaches the light this frame; false when the light centre is inside one of them. Reads
+   * the geometry's flat arrays, not the hulls: this runs for every hull in every light's range.
    */
   private findHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
     const light = draw.light;
@@ -182,33 +180,28 @@ export class FramePlan {
     const b = draw.bounds;
     const grid = this.grid;
     const count = grid.search(b);
+    this.hullsInRange = ensureCapacity(this.hullsInRange, 0, count);
+    const inRange = this.hullsInRange, bounds = geometry.worldBounds;
     for (let i = 0; i < count; i++) {
       const index = grid.found[i];
-      const hull = hulls[index];
-      if (light.ignoredHulls.size > 0 && light.ignoredHulls.has(hull)) continue;
-      const slot = geometry.prepare(index);
-      const h = hull.worldBounds;
-      if (h[0] > b[2] || h[2] < b[0] || h[1] > b[3] || h[3] < b[1]) continue;
-      if (h[0] <= lx && lx <= h[2] && h[1] <= ly && ly <= h[3]
-        && isInsidePolygon(hull.worldPoints, light.position, 0, slot.pointCount)) return false;
-      if (this.inRangeCount === this.slotsInRange.length) {
-        this.slotsInRange.push(slot);
-        this.hullsInRange.push(hull);
-      } else {
-        this.slotsInRange[this.inRangeCount] = slot;
-        this.hullsInRange[this.inRangeCount] = hull;
-      }
-      this.inRangeCount++;
+      if (light.ignoredHulls.size > 0 && light.ignoredHulls.has(hulls[index])) continue;
+      geometry.prepare(index);
+      const k = 4 * index;
+      if (bounds[k] > b[2] || bounds[k + 2] < b[0] || bounds[k + 1] > b[3] || bounds[k + 3] < b[1]) continue;
+      if (bounds[k] <= lx && lx <= bounds[k + 2] && bounds[k + 1] <= ly && ly <= bounds[k + 3]
+        && isInsidePolygon(hulls[index].worldPoints, light.position)) return false;
+      inRange[this.inRangeCount++] = index;
     }
     return true;
   }
 
-  private appendTriangles(geometry: ShadowGeometry, slot: HullSlot): void {
-    this.indices = ensureCapacity(this.indices, this.indexCount, slot.triangleIndexCount);
+  private appendTriangles(geometry: ShadowGeometry, index: number): void {
+    const count = geometry.triangleIndexCounts[index];
+    this.indices = ensureCapacity(this.indices, this.indexCount, count);
     const source = geometry.triangleIndices;
     const indices = this.indices;
     let k = this.indexCount;
-    for (let i = slot.firstTriangleIndex, end = i + slot.triangleIndexCount; i < end; i++) indices[k++] = source[i];
+    for (let i = geometry.firstTriangleIndices[index], end = i + count; i < end; i++) indices[k++] = source[i];
     this.indexCount = k;
   }
 
@@ -216,15 +209,14 @@ export class FramePlan {
    * Appends the casters of the hulls in range, run by run (see {@link CasterRun}). Counts first,
    * then writes each caster at its run's cursor, in one pass.
    */
-  private appendCasters(draw: LightDraw, count: number): void {
-    const light = draw.light, inRange = this.slotsInRange;
+  private appendCasters(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): void {
+    const light = draw.light, inRange = this.hullsInRange, count = this.inRangeCount;
     const runs = this.casterRuns = ensureCapacity(this.casterRuns, 0, count);
     const cursors = this.runCursors.fill(0);
     for (let i = 0; i < count; i++) {
-      const hull = this.hullsInRange[i], pointCount = inRange[i].pointCount;
-      const run = casterRunOf(hull, pointCount, light);
+      const run = casterRunOf(geometry, hulls, inRange[i], light);
       runs[i] = run;
-      cursors[run] += run >= CasterRun.SmallHullEdges ? pointCount : 1;
+      cursors[run] += run >= CasterRun.SmallHullEdges ? geometry.pointCounts[inRange[i]] : 1;
     }
     const first = this.casterCount;
     let end = 0;
@@ -236,9 +228,9 @@ export class FramePlan {
     }
     const casters = this.casters = ensureCapacity(this.casters, first, end, CASTER_ROW);
     for (let i = 0; i < count; i++) {
-      const slot = inRange[i], run = runs[i];
-      if (run < CasterRun.SmallHullEdges) casters[cursors[run]++] = -1 - slot.firstPoint;
-      else for (let e = slot.firstPoint, last = e + slot.pointCount; e < last; e++) casters[cursors[run]++] = e;
+      const run = runs[i], firstPoint = geometry.firstPoints[inRange[i]];
+      if (run < CasterRun.SmallHullEdges) casters[cursors[run]++] = -1 - firstPoint;
+      else for (let e = firstPoint, last = e + geometry.pointCounts[inRange[i]]; e < last; e++) casters[cursors[run]++] = e;
     }
     this.casterCount = first + end;
     draw.casterOffset = first;
@@ -247,30 +239,37 @@ export class FramePlan {
 }
 
 /** `array`, or a grown copy of its first `used` entries, with room for `extra` more (and a length a multiple of `granule`). */
-function ensureCapacity<T extends Uint8Array<ArrayBuffer> | Uint32Array<ArrayBuffer> | Float32Array<ArrayBuffer>>(array: T, used: number, extra: number, granule = 1): T {
+function ensureCapacity<T extends Uint8Array<ArrayBuffer> | Int32Array<ArrayBuffer> | Uint32Array<ArrayBuffer> | Float32Array<ArrayBuffer>>(array: T, used: number, extra: number, granule = 1): T {
   if (used + extra <= array.length) return array;
   const grown = new (array.constructor as new (length: number) => T)(Math.ceil(Math.max(used + extra, array.length * 2) / granule) * granule);
   grown.set(array.subarray(0, used));
   return grown;
 }
 
-/** How a hull in range casts its shadow: one region (convex or concave), or one quad per edge; from a small hull or not. */
-function casterRunOf(hull: Hull, pointCount: number, light: Light): CasterRun {
-  const large = pointCount > SMALL_HULL_POINTS ? 1 : 0;
-  if (!isClearOfDisk(hull, light)) return (CasterRun.SmallHullEdges + large) as CasterRun;
-  return ((hull.convex ? CasterRun.SmallConvexHulls : CasterRun.SmallConcaveHulls) + large) as CasterRun;
+/**
+ * How the hull at `index` casts its shadow, from a small hull or not: one region (convex or
+ * concave) while the disk's inner tangents through it open at most {@link MAX_HALF_ANGLE} either
+ * side, which its bounds show for most hulls and its points for the rest; else one quad per edge.
+ */
+function casterRunOf(geometry: ShadowGeometry, hulls: readonly Hull[], index: number, light: Light): CasterRun {
+  const large = geometry.pointCounts[index] > SMALL_HULL_POINTS ? 1 : 0;
+  if (!isClearOfDisk(geometry.worldBounds, index, light) && !hasNarrowShadow(hulls[index], light)) {
+    return (CasterRun.SmallHullEdges + large) as CasterRun;
+  }
+  return ((geometry.convex[index] === 1 ? CasterRun.SmallConvexHulls : CasterRun.SmallConcaveHulls) + large) as CasterRun;
 }
 
 /**
- * Whether the hull's shadow is one region: the hull is clear of the light disk and the disk's inner
- * tangents through it open at most {@link MAX_HALF_ANGLE} either side of their bisector.
+ * Whether a hull is clear enough of the light disk, by its bounds alone, for its shadow to be one
+ * region: its bounding circle lies {@link CLEARANCE_WITHOUT_POINTS} times its radius and the disk's
+ * together from the light.
  */
-function isClearOfDisk(hull: Hull, light: Light): boolean {
-  const bounds = hull.worldBounds, centre = light.position;
-  const halfWidth = (bounds[2] - bounds[0]) / 2, halfHeight = (bounds[3] - bounds[1]) / 2;
-  const dx = bounds[0] + halfWidth - centre[0], dy = bounds[1] + halfHeight - centre[1];
+function isClearOfDisk(worldBounds: Float64Array, index: number, light: Light): boolean {
+  const k = 4 * index, centre = light.position;
+  const halfWidth = (worldBounds[k + 2] - worldBounds[k]) / 2, halfHeight = (worldBounds[k + 3] - worldBounds[k + 1]) / 2;
+  const dx = worldBounds[k] + halfWidth - centre[0], dy = worldBounds[k + 1] + halfHeight - centre[1];
   const clearance = CLEARANCE_WITHOUT_POINTS * (Math.sqrt(halfWidth * halfWidth + halfHeight * halfHeight) + light.radius);
-  return dx * dx + dy * dy > clearance * clearance || hasNarrowShadow(hull, light);
+  return dx * dx + dy * dy > clearance * clearance;
 }
 
 /**

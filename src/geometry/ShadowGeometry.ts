@@ -10,18 +10,6 @@ export const POINT_FLOATS = 4;
 /** Point capacity grows in whole rows of this many points, so the records fill a texture's rows exactly. */
 export const POINT_ROW = 1024;
 
-/** Where one hull's data sits in the shared arrays. */
-export interface HullSlot {
-  /** First point (= first edge) of the hull in `points`. */
-  firstPoint: number;
-  pointCount: number;
-  /** First index of the hull's triangles in `triangleIndices`. */
-  firstTriangleIndex: number;
-  triangleIndexCount: number;
-  /** `hull.version` when the slot was last written. */
-  version: number;
-}
-
 /**
  * The world-space data of every hull, packed for the GPU and independent of any light:
  * - `points`: each hull's world points, contiguous per hull, as {@link POINT_FLOATS} records that
@@ -46,19 +34,28 @@ export class ShadowGeometry {
   coarseBounds = new Float64Array(0);
   /** Per hull: 1 when it is enabled and valid (it may shadow a light). */
   castsShadow = new Uint8Array(0);
+  /** Per hull: 1 when it is convex (and valid). */
+  convex = new Uint8Array(0);
+  /** Per hull: where its data sits in `points` (first point = first edge) and `triangleIndices`. */
+  firstPoints = new Int32Array(0);
+  pointCounts = new Int32Array(0);
+  firstTriangleIndices = new Int32Array(0);
+  triangleIndexCounts = new Int32Array(0);
+  /** Per hull, its exact world bounds `[minX, minY, maxX, maxY]` at `4 × index`, as of its last {@link ShadowGeometry.prepare}. */
+  worldBounds = new Float64Array(0);
   /** Edges of all valid hulls. */
   validEdgeCount = 0;
-  private slots: HullSlot[] = [];
   private layoutHulls: Hull[] = [];
-  /** Per hull: `hull.version` when `coarseBounds` and `castsShadow` were last refreshed. */
+  /** Per hull: `hull.version` when `coarseBounds`, `castsShadow` and `convex` were last refreshed. */
   private refreshedVersions = new Float64Array(0);
+  /** Per hull: `hull.version` when its points, triangles and `worldBounds` were last written. */
+  private preparedVersions = new Float64Array(0);
   /** Per hull: its edges counted in `validEdgeCount`. */
   private countedEdges = new Int32Array(0);
 
   /** Forgets the layout so the next update rewrites and re-uploads everything (e.g. after a context loss). */
   invalidate(): void {
     this.layoutHulls = [];
-    this.slots = [];
   }
 
   /**
@@ -77,18 +74,18 @@ export class ShadowGeometry {
   }
 
   /**
-   * The slot of the hull at `index` in the last update's list, its world points and data brought
-   * up to date first (and their rows marked dirty) if the hull changed since it was last written.
+   * Brings the world points, triangles and `worldBounds` of the hull at `index` in the last update's
+   * list up to date (and marks their point rows dirty) if the hull changed since they were written.
+   * Flat arrays only when it did not: the planner calls this for every hull in every light's range.
    */
-  prepare(index: number): HullSlot {
+  prepare(index: number): void {
+    if (this.preparedVersions[index] === this.refreshedVersions[index]) return;
+    this.preparedVersions[index] = this.refreshedVersions[index];
     const hull = this.layoutHulls[index];
-    const slot = this.slots[index];
-    if (slot.version === hull.version) return slot;
     hull.updateWorld();
-    slot.version = hull.version;
-    this.writeHull(hull, slot);
-    this.dirtyRows.fill(1, Math.floor(slot.firstPoint / POINT_ROW), Math.floor((slot.firstPoint + slot.pointCount - 1) / POINT_ROW) + 1);
-    return slot;
+    this.writeHull(hull, index);
+    const first = this.firstPoints[index];
+    this.dirtyRows.fill(1, Math.floor(first / POINT_ROW), Math.floor((first + this.pointCounts[index] - 1) / POINT_ROW) + 1);
   }
 
   /** Refreshes the flat arrays of changed hulls; false when the list or a hull's shape no longer fits the layout. */
@@ -98,8 +95,7 @@ export class ShadowGeometry {
       const hull = hulls[i];
       if (hull !== layout[i]) return false;
       if (hull.version === this.refreshedVersions[i]) continue;
-      const slot = this.slots[i];
-      if (slot.pointCount !== hull.edgeCount || slot.triangleIndexCount !== hull.worldTriangles.length) return false;
+      if (this.pointCounts[i] !== hull.edgeCount || this.triangleIndexCounts[i] !== hull.worldTriangles.length) return false;
       this.refreshHull(hull, i);
     }
     return true;
@@ -114,6 +110,7 @@ export class ShadowGeometry {
     to[4 * index + 2] = from[2];
     to[4 * index + 3] = from[3];
     this.castsShadow[index] = hull.enabled && hull.valid ? 1 : 0;
+    this.convex[index] = hull.convex ? 1 : 0;
     const edges = hull.valid ? hull.edgeCount : 0;
     this.validEdgeCount += edges - this.countedEdges[index];
     this.countedEdges[index] = edges;
@@ -121,20 +118,18 @@ export class ShadowGeometry {
 
   private layOut(hulls: readonly Hull[]): void {
     this.layoutHulls = hulls.slice();
-    this.slots = [];
+    this.allocatePerHull(hulls.length);
     let points = 0, triangleIndices = 0;
-    for (const hull of hulls) {
-      const slot: HullSlot = {
-        firstPoint: points, pointCount: hull.edgeCount,
-        firstTriangleIndex: triangleIndices, triangleIndexCount: hull.worldTriangles.length, version: -1,
-      };
-      this.slots.push(slot);
-      points += slot.pointCount;
-      triangleIndices += slot.triangleIndexCount;
+    for (let i = 0; i < hulls.length; i++) {
+      this.firstPoints[i] = points;
+      this.pointCounts[i] = hulls[i].edgeCount;
+      this.firstTriangleIndices[i] = triangleIndices;
+      this.triangleIndexCounts[i] = hulls[i].worldTriangles.length;
+      points += this.pointCounts[i];
+      triangleIndices += this.triangleIndexCounts[i];
     }
     this.pointCount = points;
     this.triangleIndexCount = triangleIndices;
-    this.allocatePerHull(hulls.length);
     if (this.points.length < points * POINT_FLOATS) {
       const wanted = Math.max(points, Math.ceil(this.points.length / POINT_FLOATS * 1.5));
       this.points = new Float32Array(Math.ceil(wanted / POINT_ROW) * POINT_ROW * POINT_FLOATS);
@@ -150,25 +145,36 @@ export class ShadowGeometry {
     if (this.castsShadow.length < count) {
       const capacity = Math.ceil(count * 1.5);
       this.coarseBounds = new Float64Array(4 * capacity);
+      this.worldBounds = new Float64Array(4 * capacity);
       this.castsShadow = new Uint8Array(capacity);
+      this.convex = new Uint8Array(capacity);
+      this.firstPoints = new Int32Array(capacity);
+      this.pointCounts = new Int32Array(capacity);
+      this.firstTriangleIndices = new Int32Array(capacity);
+      this.triangleIndexCounts = new Int32Array(capacity);
       this.refreshedVersions = new Float64Array(capacity);
+      this.preparedVersions = new Float64Array(capacity);
       this.countedEdges = new Int32Array(capacity);
     }
     this.refreshedVersions.fill(-1);
+    this.preparedVersions.fill(-2);
     this.countedEdges.fill(0);
     this.validEdgeCount = 0;
   }
 
-  private writeHull(hull: Hull, slot: HullSlot): void {
+  private writeHull(hull: Hull, index: number): void {
     const world = hull.worldPoints;
     const points = this.points;
-    for (let i = 0, k = slot.firstPoint * POINT_FLOATS; i < slot.pointCount; i++, k += POINT_FLOATS) {
+    const first = this.firstPoints[index], count = this.pointCounts[index];
+    for (let i = 0, k = first * POINT_FLOATS; i < count; i++, k += POINT_FLOATS) {
       points[k] = world[2 * i];
       points[k + 1] = world[2 * i + 1];
-      points[k + 2] = slot.firstPoint;
-      points[k + 3] = slot.pointCount;
+      points[k + 2] = first;
+      points[k + 3] = count;
     }
-    const triangles = hull.worldTriangles;
-    for (let k = 0; k < triangles.length; k++) this.triangleIndices[slot.firstTriangleIndex + k] = slot.firstPoint + triangles[k];
+    const triangles = hull.worldTriangles, firstIndex = this.firstTriangleIndices[index];
+    for (let k = 0; k < triangles.length; k++) this.triangleIndices[firstIndex + k] = first + triangles[k];
+    const from = hull.worldBounds, to = this.worldBounds;
+    for (let k = 0; k < 4; k++) to[4 * index + k] = from[k];
   }
 }
