@@ -31,10 +31,10 @@ flat out ivec2 v_hull;
 // World position: the shading stages interpolate it rather than invert the view-projection per pixel.
 out vec2 v_world;
 
-#ifdef POINTS_IN_VARYINGS
+#ifdef VARYING_POINTS
 // For the stages of small hulls: their points, two per vector, padded with the last point. Fetched
 // once per vertex here rather than once per fragment, which cost SwiftShader a third of the stage.
-flat out vec4 v_points[SMALL_HULL_POINTS / 2];
+flat out vec4 v_points[VARYING_POINTS / 2];
 #endif
 
 vec4 texelAt(int index) {
@@ -138,8 +138,8 @@ void main() {
   v_world = world;
   gl_Position.z = (u_umbra ? -1.0 : 0.0) * gl_Position.w;
   v_hull = hull;
-#ifdef POINTS_IN_VARYINGS
-  for (int i = 0; i < SMALL_HULL_POINTS / 2; i++) {
+#ifdef VARYING_POINTS
+  for (int i = 0; i < VARYING_POINTS / 2; i++) {
     v_points[i] = vec4(texelAt(hull.x + min(2 * i, hull.y - 1)).xy, texelAt(hull.x + min(2 * i + 1, hull.y - 1)).xy);
   }
 #endif

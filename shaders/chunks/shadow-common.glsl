@@ -1,11 +1,13 @@
-// Shared by the shadow-mask fragment stages: the light and hull uniforms, the pixel seen from the
-// light, and the disk areas cut off by chords.
+// Shared by the shadow-mask fragment stages: the light uniforms, the hull's points (in varyings for
+// the builds with VARYING_POINTS, else from the points texture), the pixel seen from the light,
+// and the disk areas cut off by chords.
 //
 // Seen from the pixel, a hull (convex or not) hides one interval of directions; measured in disk
 // area from one side of the disk it is [low, high]. It is written as R = high when it reaches the
 // first side, G = 1 - low when it reaches the other side, and B = high - low when it touches
 // neither. With MAX blending, R + G + B is then the exact union for hulls that hide the disk from
-// its sides (the common case) and the largest interval for the rest.
+// its sides (the common case). Of several middle slices only the largest counts, and a middle
+// slice is added whole even where a hull hiding a side covers part of it.
 uniform vec2 u_lightPosition;
 uniform float u_lightRadius;
 
@@ -70,12 +72,12 @@ vec4 maskBetween(float low, float high) {
 // Each stage defines what it does with the offset from the pixel to one of the hull's points.
 void visitPoint(vec2 toPoint);
 
-#ifdef POINTS_IN_VARYINGS
-#if SMALL_HULL_POINTS != 8
-#error visitHullPoints visits eight points
+#ifdef VARYING_POINTS
+#if VARYING_POINTS != 4 && VARYING_POINTS != 8
+#error visitHullPoints visits four or eight points
 #endif
-// A small hull's points, two per vector, padded with its last point (see shadow-mask.vert.glsl).
-flat in vec4 v_points[SMALL_HULL_POINTS / 2];
+// The hull's points, two per vector, padded with its last point (see shadow-mask.vert.glsl).
+flat in vec4 v_points[VARYING_POINTS / 2];
 
 vec2 firstPointOffset() {
   return v_points[0].xy - pixel;
@@ -88,10 +90,12 @@ void visitHullPoints() {
   visitPoint(v_points[0].zw - pixel);
   visitPoint(v_points[1].xy - pixel);
   visitPoint(v_points[1].zw - pixel);
+#if VARYING_POINTS == 8
   visitPoint(v_points[2].xy - pixel);
   visitPoint(v_points[2].zw - pixel);
   visitPoint(v_points[3].xy - pixel);
   visitPoint(v_points[3].zw - pixel);
+#endif
 }
 #else
 uniform sampler2D u_hullPoints; // one world point per texel (xy)

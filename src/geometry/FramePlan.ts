@@ -7,26 +7,26 @@ import { scissorOf } from './scissor';
 import type { ShadowGeometry } from './ShadowGeometry';
 
 /**
- * The runs of shadow casters each light draws, in this order, each with a fragment stage of its own
- * (SwiftShader runs both sides of a per-fragment branch). Whole hulls come first, so that their
- * umbrae are one draw. A small hull has at most {@link SMALL_HULL_POINTS} points.
+ * Point counts up to which a hull's points reach the shadow fragment stages in flat varyings (the
+ * vertex stage fetches them once per vertex) instead of a texel fetch per point per fragment. A
+ * stage visits as many points as its class holds, so boxes and triangles have a class of their own.
  */
-export const CasterRun = {
-  SmallConvexHulls: 0,
-  ConvexHulls: 1,
-  SmallConcaveHulls: 2,
-  ConcaveHulls: 3,
-  SmallHullEdges: 4,
-  HullEdges: 5,
-} as const;
-export type CasterRun = (typeof CasterRun)[keyof typeof CasterRun];
-export const CASTER_RUN_COUNT = 6;
+export const VARYING_POINT_COUNTS = [4, 8] as const;
+/** One size class per entry of {@link VARYING_POINT_COUNTS}, then this one, for hulls of any size. */
+export const ANY_SIZE_CLASS = VARYING_POINT_COUNTS.length;
+export const SIZE_CLASS_COUNT = ANY_SIZE_CLASS + 1;
+
+/** How a hull in range casts its shadow: one region (convex or concave) or one quad per edge. */
+export const CasterKind = { ConvexHull: 0, ConcaveHull: 1, Edges: 2 } as const;
+export type CasterKind = (typeof CasterKind)[keyof typeof CasterKind];
 
 /**
- * Hulls with at most this many points are "small": the shadow-mask vertex stage passes their points
- * to the fragment stage in varyings instead of each fragment fetching them.
+ * Each light's casters come in runs, each drawn with a fragment stage of its own (SwiftShader runs
+ * both sides of a per-fragment branch): run `kind × SIZE_CLASS_COUNT + sizeClass`, in that order.
+ * Whole hulls come first, so that their umbrae are one draw.
  */
-export const SMALL_HULL_POINTS = 8;
+export const CASTER_RUN_COUNT = 3 * SIZE_CLASS_COUNT;
+const FIRST_EDGE_RUN = CasterKind.Edges * SIZE_CLASS_COUNT;
 
 /** `casters` grows in whole rows of this many entries, so it fills the rows of the texture it is uploaded to. */
 export const CASTER_ROW = 1024;
@@ -58,7 +58,7 @@ export class LightDraw {
   casterOffset = 0;
   casterCount = 0;
   /**
-   * Where each {@link CasterRun} of those casters ends, counted from `casterOffset`: run `r` holds
+   * Where each run of those casters ends (see {@link CASTER_RUN_COUNT}), counted from `casterOffset`: run `r` holds
    * the casters from `runEnds[r - 1]` (0 for the first) up to `runEnds[r]`.
    */
   readonly runEnds = new Uint32Array(CASTER_RUN_COUNT);
@@ -72,7 +72,7 @@ export class LightDraw {
 
   /** How many casters, first, are whole hulls (regions with an umbra); the rest are edges. */
   get wholeHullCasterCount(): number {
-    return this.runEnds[CasterRun.SmallHullEdges - 1];
+    return this.runEnds[FIRST_EDGE_RUN - 1];
   }
 }
 
@@ -97,7 +97,7 @@ export class FramePlan {
   drawCount = 0;
   /** Indices of the hulls in range of the current light: the first `inRangeCount` entries. */
   private hullsInRange = new Int32Array(64);
-  /** Per hull in range: the {@link CasterRun} of its casters. */
+  /** Per hull in range: the run of its casters. */
   private casterRuns = new Uint8Array(64);
   /** Per run: its caster count, then where its next caster goes. */
   private readonly runCursors = new Uint32Array(CASTER_RUN_COUNT);
@@ -206,7 +206,7 @@ export class FramePlan {
   }
 
   /**
-   * Appends the casters of the hulls in range, run by run (see {@link CasterRun}). Counts first,
+   * Appends the casters of the hulls in range, run by run (see {@link CASTER_RUN_COUNT}). Counts first,
    * then writes each caster at its run's cursor, in one pass.
    */
   private appendCasters(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): void {
@@ -216,7 +216,7 @@ export class FramePlan {
     for (let i = 0; i < count; i++) {
       const run = casterRunOf(geometry, hulls, inRange[i], light);
       runs[i] = run;
-      cursors[run] += run >= CasterRun.SmallHullEdges ? geometry.pointCounts[inRange[i]] : 1;
+      cursors[run] += run >= FIRST_EDGE_RUN ? geometry.pointCounts[inRange[i]] : 1;
     }
     const first = this.casterCount;
     let end = 0;
@@ -229,7 +229,7 @@ export class FramePlan {
     const casters = this.casters = ensureCapacity(this.casters, first, end, CASTER_ROW);
     for (let i = 0; i < count; i++) {
       const run = runs[i], firstPoint = geometry.firstPoints[inRange[i]];
-      if (run < CasterRun.SmallHullEdges) casters[cursors[run]++] = -1 - firstPoint;
+      if (run < FIRST_EDGE_RUN) casters[cursors[run]++] = -1 - firstPoint;
       else for (let e = firstPoint, last = e + geometry.pointCounts[inRange[i]]; e < last; e++) casters[cursors[run]++] = e;
     }
     this.casterCount = first + end;
@@ -247,16 +247,22 @@ function ensureCapacity<T extends Uint8Array<ArrayBuffer> | Int32Array<ArrayBuff
 }
 
 /**
- * How the hull at `index` casts its shadow, from a small hull or not: one region (convex or
- * concave) while the disk's inner tangents through it open at most {@link MAX_HALF_ANGLE} either
- * side, which its bounds show for most hulls and its points for the rest; else one quad per edge.
+ * The run of the hull at `index`: its kind, one region (convex or concave) while the disk's inner
+ * tangents through it open at most {@link MAX_HALF_ANGLE} either side, which its bounds show for
+ * most hulls and its points for the rest, else one quad per edge; and its size class.
  */
-function casterRunOf(geometry: ShadowGeometry, hulls: readonly Hull[], index: number, light: Light): CasterRun {
-  const large = geometry.pointCounts[index] > SMALL_HULL_POINTS ? 1 : 0;
-  if (!isClearOfDisk(geometry.worldBounds, index, light) && !hasNarrowShadow(hulls[index], light)) {
-    return (CasterRun.SmallHullEdges + large) as CasterRun;
-  }
-  return ((geometry.convex[index] === 1 ? CasterRun.SmallConvexHulls : CasterRun.SmallConcaveHulls) + large) as CasterRun;
+function casterRunOf(geometry: ShadowGeometry, hulls: readonly Hull[], index: number, light: Light): number {
+  const kind = !isClearOfDisk(geometry.worldBounds, index, light) && !hasNarrowShadow(hulls[index], light)
+    ? CasterKind.Edges
+    : geometry.convex[index] === 1 ? CasterKind.ConvexHull : CasterKind.ConcaveHull;
+  return kind * SIZE_CLASS_COUNT + sizeClassOf(geometry.pointCounts[index]);
+}
+
+/** The first size class that holds `pointCount` points. */
+export function sizeClassOf(pointCount: number): number {
+  let sizeClass = 0;
+  while (sizeClass < ANY_SIZE_CLASS && pointCount > VARYING_POINT_COUNTS[sizeClass]) sizeClass++;
+  return sizeClass;
 }
 
 /**

@@ -1,5 +1,5 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
-import type { LightDraw } from '../geometry/FramePlan';
+import { ANY_SIZE_CLASS, type LightDraw } from '../geometry/FramePlan';
 import { createProgram, type Program } from '../gl/program';
 import type { UnitQuad } from '../gl/UnitQuad';
 import { CasterUniforms } from './CasterUniforms';
@@ -20,7 +20,7 @@ export class DebugPass {
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly quad: UnitQuad) {
     this.quadProgram = createProgram(gl, 'debug light quads', shaderSources.lightVertex, shaderSources.debugFragment);
-    this.shadowProgram = createProgram(gl, 'debug shadow geometry', shaderSources.shadowMaskVertex.anyHulls, shaderSources.debugFragment);
+    this.shadowProgram = createProgram(gl, 'debug shadow geometry', shaderSources.shadowMaskVertex[ANY_SIZE_CLASS], shaderSources.debugFragment);
     this.casterUniforms = new CasterUniforms(gl);
   }
 

@@ -1,31 +1,21 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
-import { CASTER_RUN_COUNT, CasterRun, type LightDraw } from '../geometry/FramePlan';
+import { ANY_SIZE_CLASS, CASTER_RUN_COUNT, CasterKind, SIZE_CLASS_COUNT, VARYING_POINT_COUNTS, type LightDraw } from '../geometry/FramePlan';
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget } from '../gl/RenderTarget';
 import { CASTER_VERTICES, CasterUniforms } from './CasterUniforms';
 import type { GeometryBuffers } from './GeometryBuffers';
-import { shaderSources, type ShadowStageSources } from './shaders';
+import { shaderSources } from './shaders';
 
 /** The cleared mask: no part of the disk hidden. */
 const NOTHING_HIDDEN = new Float32Array(4);
 /** The cleared depth: umbrae are drawn nearer, and the other shadow quads behind them fail the depth test. */
 const FARTHEST = 1;
 
-interface RunStage {
-  name: string;
-  fragment: ShadowStageSources;
-  /** Whether the program is the small hulls' build (points in varyings). */
-  smallHulls: boolean;
-}
-
-/** The fragment stage of each run of casters. */
-const RUN_STAGES: Record<CasterRun, RunStage> = {
-  [CasterRun.SmallConvexHulls]: { name: 'small convex hulls', fragment: shaderSources.shadowHullFragment, smallHulls: true },
-  [CasterRun.ConvexHulls]: { name: 'convex hulls', fragment: shaderSources.shadowHullFragment, smallHulls: false },
-  [CasterRun.SmallConcaveHulls]: { name: 'small concave hulls', fragment: shaderSources.shadowConcaveFragment, smallHulls: true },
-  [CasterRun.ConcaveHulls]: { name: 'concave hulls', fragment: shaderSources.shadowConcaveFragment, smallHulls: false },
-  [CasterRun.SmallHullEdges]: { name: 'edges of small hulls', fragment: shaderSources.shadowEdgesFragment, smallHulls: true },
-  [CasterRun.HullEdges]: { name: 'edges', fragment: shaderSources.shadowEdgesFragment, smallHulls: false },
+/** The fragment stage of each kind of caster, one build per size class. */
+const KIND_STAGES: Record<CasterKind, { name: string; fragment: readonly string[] }> = {
+  [CasterKind.ConvexHull]: { name: 'convex hulls', fragment: shaderSources.shadowHullFragment },
+  [CasterKind.ConcaveHull]: { name: 'concave hulls', fragment: shaderSources.shadowConcaveFragment },
+  [CasterKind.Edges]: { name: 'edges', fragment: shaderSources.shadowEdgesFragment },
 };
 
 /**
@@ -39,18 +29,19 @@ const RUN_STAGES: Record<CasterRun, RunStage> = {
 export class ShadowMaskPass {
   readonly target: RenderTarget;
   private readonly umbraProgram: Program;
-  /** Per `CasterRun`: the program that computes the hidden part of the disk per pixel. */
+  /** Per run of casters (see `CASTER_RUN_COUNT`): the program that computes the hidden part of the disk per pixel. */
   private readonly shadingPrograms: readonly Program[];
   private readonly casterUniforms: CasterUniforms;
 
   constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number) {
     const vertex = shaderSources.shadowMaskVertex;
-    this.umbraProgram = createProgram(gl, 'shadow mask of umbrae', vertex.anyHulls, shaderSources.shadowUmbraFragment);
+    this.umbraProgram = createProgram(gl, 'shadow mask of umbrae', vertex[ANY_SIZE_CLASS], shaderSources.shadowUmbraFragment);
     const shading: Program[] = [];
     for (let run = 0; run < CASTER_RUN_COUNT; run++) {
-      const { name, fragment, smallHulls } = RUN_STAGES[run as CasterRun];
-      const build = smallHulls ? 'smallHulls' : 'anyHulls';
-      shading.push(createProgram(gl, `shadow mask of ${name}`, vertex[build], fragment[build]));
+      const { name, fragment } = KIND_STAGES[Math.floor(run / SIZE_CLASS_COUNT) as CasterKind];
+      const sizeClass = run % SIZE_CLASS_COUNT;
+      const size = sizeClass < ANY_SIZE_CLASS ? `of up to ${VARYING_POINT_COUNTS[sizeClass]} points` : 'of any size';
+      shading.push(createProgram(gl, `shadow mask of ${name} ${size}`, vertex[sizeClass], fragment[sizeClass]));
     }
     this.shadingPrograms = shading;
     this.target = new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, width, height);

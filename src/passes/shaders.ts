@@ -14,27 +14,19 @@ import shadowEdgesFragment from '../../shaders/shadow-edges.frag.glsl?raw';
 import shadowHullFragment from '../../shaders/shadow-hull.frag.glsl?raw';
 import shadowMaskVertex from '../../shaders/shadow-mask.vert.glsl?raw';
 import shadowUmbraFragment from '../../shaders/shadow-umbra.frag.glsl?raw';
-import { SMALL_HULL_POINTS } from '../geometry/FramePlan';
+import { VARYING_POINT_COUNTS } from '../geometry/FramePlan';
 import { resolveIncludes, withDefines } from '../gl/program';
 
 const chunks = { 'light-common': lightCommon, 'shadow-common': shadowCommon };
 
 /**
- * A shadow-mask stage built twice: for casters of any hull, which the stages read from the points
- * texture, and for small hulls (at most `SMALL_HULL_POINTS` points), whose points the vertex stage
- * passes in varyings. The pair of a program must be of the same build.
+ * A shadow-mask stage built once per size class (see `VARYING_POINT_COUNTS`): with the hull's points
+ * in `VARYING_POINTS` varyings, then, for hulls of any size, read from the points texture. Both
+ * stages of a program must be of the same class.
  */
-export interface ShadowStageSources {
-  readonly anyHulls: string;
-  readonly smallHulls: string;
-}
-
-function shadowStage(source: string): ShadowStageSources {
+function shadowStage(source: string): readonly string[] {
   const resolved = resolveIncludes(source, chunks);
-  return {
-    anyHulls: withDefines(resolved, { SMALL_HULL_POINTS }),
-    smallHulls: withDefines(resolved, { SMALL_HULL_POINTS, POINTS_IN_VARYINGS: '' }),
-  };
+  return [...VARYING_POINT_COUNTS.map((count) => withDefines(resolved, { VARYING_POINTS: count })), resolved];
 }
 
 /** The GLSL sources, inlined at build time, with their chunks resolved. */

@@ -34,7 +34,7 @@ const openU: Point[] = [[70, 35], [100, 35], [100, 85], [70, 85], [70, 75], [90,
 /** An L: its inner corner faces the light, so a part of the hull hides another part. */
 const lShape: Point[] = [[75, 30], [85, 30], [85, 70], [110, 70], [110, 80], [75, 80]];
 
-/** A regular polygon of `count` points: more than SMALL_HULL_POINTS (8) takes the stages that fetch points. */
+/** A regular polygon of `count` points: more than eight (`VARYING_POINT_COUNTS`) takes the stages that fetch points. */
 const roundHull = (x: number, y: number, radius: number, count: number): Point[] =>
   Array.from({ length: count }, (_, i) => [x + radius * Math.cos((2 * Math.PI * i) / count), y + radius * Math.sin((2 * Math.PI * i) / count)]);
 /** A comb of three teeth pointing away from a light on its left: 12 points, concave. */

@@ -1,6 +1,6 @@
 import { mat4 } from 'gl-matrix';
 import { describe, expect, it } from 'vitest';
-import { FramePlan, SMALL_HULL_POINTS } from '../../src/geometry/FramePlan';
+import { FramePlan, sizeClassOf } from '../../src/geometry/FramePlan';
 import { ShadowGeometry } from '../../src/geometry/ShadowGeometry';
 import { Hull, PointLight, TexturedLight, type Light } from '../../src/index';
 
@@ -101,24 +101,23 @@ describe('FramePlan shadow casters', () => {
     const framePlan = plan([light], [u, near, far]);
     // Points: u 0–7, near 8–11, far 12–15.
     expect(casters(framePlan)).toEqual([-13, -1, 8, 9, 10, 11]);
-    // Runs: small convex, convex, small concave, concave, edges of small hulls, edges.
-    expect(Array.from(framePlan.draws[0].runEnds)).toEqual([1, 1, 2, 2, 6, 6]);
+    // Runs: convex, concave, edges, each of up to 4 points, up to 8, any size.
+    expect(Array.from(framePlan.draws[0].runEnds)).toEqual([1, 1, 1, 1, 2, 2, 6, 6, 6]);
     expect(framePlan.draws[0].wholeHullCasterCount).toBe(2);
     light.radius = 1;
     expect(casters(plan([light], [near]))).toEqual([-1]);
   });
 
-  it('runs the hulls of more than SMALL_HULL_POINTS points after the small ones of their kind', () => {
+  it('sorts the hulls of each kind by size class: up to 4 points, up to 8, more', () => {
+    expect([3, 4, 5, 8, 9, 100].map(sizeClassOf)).toEqual([0, 0, 1, 1, 2, 2]);
     const light = new PointLight({ position: [0, 0], range: 200, radius: 5 });
     const polygon = (count: number, x: number, y: number) => new Hull(Array.from({ length: count }, (_, i): [number, number] =>
       [x + 10 * Math.cos((2 * Math.PI * i) / count), y + 10 * Math.sin((2 * Math.PI * i) / count)]));
-    const round = polygon(SMALL_HULL_POINTS + 1, 100, 0);
-    const square = polygon(4, 0, 100);
-    const nearRound = polygon(SMALL_HULL_POINTS + 2, 12, 0);
-    const framePlan = plan([light], [round, nearRound, square]);
-    // Points: round 0–8, nearRound 9–18, square 19–22.
-    expect(casters(framePlan)).toEqual([-20, -1, ...Array.from({ length: SMALL_HULL_POINTS + 2 }, (_, i) => 9 + i)]);
-    expect(Array.from(framePlan.draws[0].runEnds)).toEqual([1, 2, 2, 2, 2, 12]);
+    const round = polygon(9, 100, 0), nearRound = polygon(10, 12, 0), square = polygon(4, 0, 100), hexagon = polygon(6, 100, 100);
+    const framePlan = plan([light], [round, nearRound, square, hexagon]);
+    // Points: round 0–8, nearRound 9–18, square 19–22, hexagon 23–28.
+    expect(casters(framePlan)).toEqual([-20, -24, -1, ...Array.from({ length: 10 }, (_, i) => 9 + i)]);
+    expect(Array.from(framePlan.draws[0].runEnds)).toEqual([1, 2, 3, 3, 3, 3, 3, 3, 13]);
   });
 
   it('makes a hull near the disk one caster while its region opens at most 78° either side', () => {
