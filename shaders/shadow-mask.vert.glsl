@@ -3,11 +3,12 @@
 // vertices, no attributes) that covers every point where the caster can hide part of the light disk.
 // - A hull clear of the disk (caster -1 - its first point) casts one region: between the disk's
 //   two inner tangents through the hull (the outer bounds of its penumbrae), from the hull's
-//   nearest point out to the light's reach. In the umbra pass it casts its umbra instead.
+//   nearest point out to the light's reach. In the umbra pass it casts its umbra instead, and for
+//   the cavity stage of a concave hull its bounding box.
 // - A hull close to the disk casts one quad per edge: the edge, its ends pushed along the inner
 //   tangents far beyond the light's bounds (the scissor cuts them). They stay finite rather than at
 //   w = 0: SwiftShader culls every triangle with a w = 0 vertex.
-// Both wind clockwise (y up) when the light must draw them, so light-facing edges are culled.
+// All wind clockwise (y up) when the light must draw them, so light-facing edges are culled.
 precision highp float;
 precision highp int;
 precision highp sampler2D;
@@ -24,8 +25,12 @@ uniform float u_lightReach;       // the light adds nothing farther from its pos
 uniform float u_projectionLength; // well beyond the light's bounds, see CasterUniforms
 // Debug wireframe: eight vertices per caster, the quad's four sides as lines.
 uniform bool u_outline;
-// Umbra pass: a hull's umbra instead of its region, nearer the viewer (see ShadowMaskPass).
-uniform bool u_umbra;
+// What a whole-hull caster draws: its region; its umbra, nearer the viewer (see ShadowMaskPass);
+// or its bounding box (for the cavity stage).
+uniform int u_shape;
+const int REGION = 0;
+const int UMBRA = 1;
+const int BOUNDS = 2;
 
 flat out ivec2 v_hull;
 // World position: the shading stages interpolate it rather than invert the view-projection per pixel.
@@ -87,8 +92,9 @@ vec2 atDistance(vec2 point, vec2 direction, vec2 axis, float along) {
 //   point, up to where they meet or the reach. The outer tangents bound a convex strip that the hull
 //   crosses from side to side, so every segment from the disk to a point past the hull meets it.
 vec2 hullCorner(ivec2 hull, int corner) {
+  bool umbra = u_shape == UMBRA;
   vec2 highPoint, highDirection, lowPoint, lowDirection;
-  float sideSign = u_umbra ? -1.0 : 1.0;
+  float sideSign = umbra ? -1.0 : 1.0;
   // Through each point, the tangents to the disk lean asin(r / d) either side of the direction to it.
   for (int i = 0; i < hull.y; i++) {
     vec2 point = texelAt(hull.x + i).xy;
@@ -108,21 +114,37 @@ vec2 hullCorner(ivec2 hull, int corner) {
     }
   }
   vec2 axis = normalize(highDirection + lowDirection);
-  float near = u_umbra ? 0.0 : u_lightReach;
+  float near = umbra ? 0.0 : u_lightReach;
   for (int i = 0; i < hull.y; i++) {
     float along = dot(texelAt(hull.x + i).xy - u_lightPosition, axis);
-    near = u_umbra ? max(near, along) : min(near, along);
+    near = umbra ? max(near, along) : min(near, along);
   }
   float far = u_lightReach;
   // Outer tangents that meet beyond the hull (a disk wider than the hull) end the umbra there.
   float meeting = cross2(highDirection, lowDirection);
-  if (u_umbra && meeting > 0.0) {
+  if (umbra && meeting > 0.0) {
     vec2 apex = highPoint + highDirection * (cross2(lowPoint - highPoint, lowDirection) / cross2(highDirection, lowDirection));
     far = min(far, dot(apex - u_lightPosition, axis));
   }
   // A region or umbra that ends before it starts collapses to a line and draws nothing.
   float along = corner == 1 || corner == 2 ? max(far, near) : near;
   return corner <= 1 ? atDistance(highPoint, highDirection, axis, along) : atDistance(lowPoint, lowDirection, axis, along);
+}
+
+// Corner 0..3 of the hull's bounding box, clockwise (y up) like the other quads.
+vec2 boundsCorner(ivec2 hull, int corner) {
+  vec2 low = texelAt(hull.x).xy;
+  vec2 high = low;
+  for (int i = 1; i < hull.y; i++) {
+    vec2 point = texelAt(hull.x + i).xy;
+    low = min(low, point);
+    high = max(high, point);
+  }
+  return vec2(corner <= 1 ? low.x : high.x, corner == 0 || corner == 3 ? low.y : high.y);
+}
+
+vec2 wholeHullCorner(ivec2 hull, int corner) {
+  return u_shape == BOUNDS ? boundsCorner(hull, corner) : hullCorner(hull, corner);
 }
 
 void main() {
@@ -133,10 +155,10 @@ void main() {
   bool wholeHull = caster < 0.0;
   int point = int(wholeHull ? -1.0 - caster : caster);
   ivec2 hull = ivec2(texelAt(point).zw);
-  vec2 world = wholeHull ? hullCorner(hull, corner) : edgeQuadCorner(point, hull, corner);
+  vec2 world = wholeHull ? wholeHullCorner(hull, corner) : edgeQuadCorner(point, hull, corner);
   gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
   v_world = world;
-  gl_Position.z = (u_umbra ? -1.0 : 0.0) * gl_Position.w;
+  gl_Position.z = (u_shape == UMBRA ? -1.0 : 0.0) * gl_Position.w;
   v_hull = hull;
 #ifdef VARYING_POINTS
   for (int i = 0; i < VARYING_POINTS / 2; i++) {

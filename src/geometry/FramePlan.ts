@@ -16,16 +16,21 @@ export const VARYING_POINT_COUNTS = [4, 8] as const;
 export const ANY_SIZE_CLASS = VARYING_POINT_COUNTS.length;
 export const SIZE_CLASS_COUNT = ANY_SIZE_CLASS + 1;
 
-/** How a hull in range casts its shadow: one region (convex or concave) or one quad per edge. */
-export const CasterKind = { ConvexHull: 0, ConcaveHull: 1, Edges: 2 } as const;
+/**
+ * How a hull in range casts its shadow: one region (convex or concave), or one quad per edge. A
+ * concave hull's region leaves out the inside of the convex hull of its points, where its cavities
+ * are: a caster of its own covers that, with the hull's bounding box.
+ */
+export const CasterKind = { ConvexHull: 0, ConcaveHull: 1, ConcaveCavities: 2, Edges: 3 } as const;
 export type CasterKind = (typeof CasterKind)[keyof typeof CasterKind];
 
 /**
  * Each light's casters come in runs, each drawn with a fragment stage of its own (SwiftShader runs
  * both sides of a per-fragment branch): run `kind × SIZE_CLASS_COUNT + sizeClass`, in that order.
- * Whole hulls come first, so that their umbrae are one draw.
+ * The regions come first, so that their umbrae are one draw.
  */
-export const CASTER_RUN_COUNT = 3 * SIZE_CLASS_COUNT;
+export const CASTER_RUN_COUNT = 4 * SIZE_CLASS_COUNT;
+const FIRST_CAVITY_RUN = CasterKind.ConcaveCavities * SIZE_CLASS_COUNT;
 const FIRST_EDGE_RUN = CasterKind.Edges * SIZE_CLASS_COUNT;
 
 /** `casters` grows in whole rows of this many entries, so it fills the rows of the texture it is uploaded to. */
@@ -70,9 +75,9 @@ export class LightDraw {
   /** Number of hulls in range that shadow this light. */
   hullCount = 0;
 
-  /** How many casters, first, are whole hulls (regions with an umbra); the rest are edges. */
-  get wholeHullCasterCount(): number {
-    return this.runEnds[FIRST_EDGE_RUN - 1];
+  /** How many casters, first, are regions (which also cast an umbra); cavities and edges follow. */
+  get regionCasterCount(): number {
+    return this.runEnds[FIRST_CAVITY_RUN - 1];
   }
 }
 
@@ -217,6 +222,7 @@ export class FramePlan {
       const run = casterRunOf(geometry, hulls, inRange[i], light);
       runs[i] = run;
       cursors[run] += run >= FIRST_EDGE_RUN ? geometry.pointCounts[inRange[i]] : 1;
+      if (isConcaveRegion(run)) cursors[cavityRunOf(run)]++;
     }
     const first = this.casterCount;
     let end = 0;
@@ -230,7 +236,8 @@ export class FramePlan {
     for (let i = 0; i < count; i++) {
       const run = runs[i], firstPoint = geometry.firstPoints[inRange[i]];
       if (run < FIRST_EDGE_RUN) casters[cursors[run]++] = -1 - firstPoint;
-      else for (let e = firstPoint, last = e + geometry.pointCounts[inRange[i]]; e < last; e++) casters[cursors[run]++] = e;
+      if (isConcaveRegion(run)) casters[cursors[cavityRunOf(run)]++] = -1 - firstPoint;
+      if (run >= FIRST_EDGE_RUN) for (let e = firstPoint, last = e + geometry.pointCounts[inRange[i]]; e < last; e++) casters[cursors[run]++] = e;
     }
     this.casterCount = first + end;
     draw.casterOffset = first;
@@ -256,6 +263,15 @@ function casterRunOf(geometry: ShadowGeometry, hulls: readonly Hull[], index: nu
     ? CasterKind.Edges
     : geometry.convex[index] === 1 ? CasterKind.ConvexHull : CasterKind.ConcaveHull;
   return kind * SIZE_CLASS_COUNT + sizeClassOf(geometry.pointCounts[index]);
+}
+
+function isConcaveRegion(run: number): boolean {
+  return Math.floor(run / SIZE_CLASS_COUNT) === CasterKind.ConcaveHull;
+}
+
+/** The cavity run of the same size class as the concave region run `run`. */
+function cavityRunOf(run: number): number {
+  return run + (CasterKind.ConcaveCavities - CasterKind.ConcaveHull) * SIZE_CLASS_COUNT;
 }
 
 /** The first size class that holds `pointCount` points. */

@@ -11,11 +11,15 @@ const NOTHING_HIDDEN = new Float32Array(4);
 /** The cleared depth: umbrae are drawn nearer, and the other shadow quads behind them fail the depth test. */
 const FARTHEST = 1;
 
-/** The fragment stage of each kind of caster, one build per size class. */
-const KIND_STAGES: Record<CasterKind, { name: string; fragment: readonly string[] }> = {
-  [CasterKind.ConvexHull]: { name: 'convex hulls', fragment: shaderSources.shadowHullFragment },
-  [CasterKind.ConcaveHull]: { name: 'concave hulls', fragment: shaderSources.shadowConcaveFragment },
-  [CasterKind.Edges]: { name: 'edges', fragment: shaderSources.shadowEdgesFragment },
+/** What the vertex stage draws for a whole-hull caster (`u_shape` in shadow-mask.vert.glsl); edges ignore it. */
+const CasterShape = { Region: 0, Umbra: 1, Bounds: 2 } as const;
+
+/** The fragment stage of each kind of caster, one build per size class, and its quads' shape. */
+const KIND_STAGES: Record<CasterKind, { name: string; fragment: readonly string[]; shape: number }> = {
+  [CasterKind.ConvexHull]: { name: 'convex hulls', fragment: shaderSources.shadowHullFragment, shape: CasterShape.Region },
+  [CasterKind.ConcaveHull]: { name: 'concave hulls', fragment: shaderSources.shadowConcaveFragment, shape: CasterShape.Region },
+  [CasterKind.ConcaveCavities]: { name: 'cavities', fragment: shaderSources.shadowCavityFragment, shape: CasterShape.Bounds },
+  [CasterKind.Edges]: { name: 'edges', fragment: shaderSources.shadowEdgesFragment, shape: CasterShape.Region },
 };
 
 /**
@@ -35,17 +39,25 @@ export class ShadowMaskPass {
 
   constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number) {
     const vertex = shaderSources.shadowMaskVertex;
-    this.umbraProgram = createProgram(gl, 'shadow mask of umbrae', vertex[ANY_SIZE_CLASS], shaderSources.shadowUmbraFragment);
+    this.umbraProgram = this.createShadowProgram('umbrae', vertex[ANY_SIZE_CLASS], shaderSources.shadowUmbraFragment, CasterShape.Umbra);
     const shading: Program[] = [];
     for (let run = 0; run < CASTER_RUN_COUNT; run++) {
-      const { name, fragment } = KIND_STAGES[Math.floor(run / SIZE_CLASS_COUNT) as CasterKind];
+      const { name, fragment, shape } = KIND_STAGES[Math.floor(run / SIZE_CLASS_COUNT) as CasterKind];
       const sizeClass = run % SIZE_CLASS_COUNT;
       const size = sizeClass < ANY_SIZE_CLASS ? `of up to ${VARYING_POINT_COUNTS[sizeClass]} points` : 'of any size';
-      shading.push(createProgram(gl, `shadow mask of ${name} ${size}`, vertex[sizeClass], fragment[sizeClass]));
+      shading.push(this.createShadowProgram(`${name} ${size}`, vertex[sizeClass], fragment[sizeClass], shape));
     }
     this.shadingPrograms = shading;
     this.target = new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, width, height);
     this.casterUniforms = new CasterUniforms(gl);
+  }
+
+  /** Links a program of the pass and sets its caster shape, which a program keeps for its lifetime. */
+  private createShadowProgram(name: string, vertexSource: string, fragmentSource: string, shape: number): Program {
+    const program = createProgram(this.gl, `shadow mask of ${name}`, vertexSource, fragmentSource);
+    this.gl.useProgram(program.handle);
+    this.gl.uniform1i(program.uniforms.u_shape, shape);
+    return program;
   }
 
   resize(width: number, height: number): void {
@@ -61,14 +73,12 @@ export class ShadowMaskPass {
     this.casterUniforms.bindTextures(buffers);
     gl.useProgram(this.umbraProgram.handle);
     this.casterUniforms.setFrame(this.umbraProgram, viewProjection);
-    gl.uniform1i(this.umbraProgram.uniforms.u_umbra, 1);
     // Indexed: a for-of allocates an iterator every frame.
     const shading = this.shadingPrograms;
     for (let i = 0; i < shading.length; i++) {
       const program = shading[i];
       gl.useProgram(program.handle);
       this.casterUniforms.setFrame(program, viewProjection);
-      gl.uniform1i(program.uniforms.u_umbra, 0);
     }
   }
 
@@ -92,8 +102,8 @@ export class ShadowMaskPass {
     gl.enable(gl.DEPTH_TEST);
     gl.depthFunc(gl.LESS);
     gl.bindVertexArray(buffers.casterVertexArray);
-    const wholeHulls = draw.wholeHullCasterCount;
-    if (wholeHulls > 0) this.drawCasters(this.umbraProgram, draw, 0, wholeHulls);
+    const regions = draw.regionCasterCount;
+    if (regions > 0) this.drawCasters(this.umbraProgram, draw, 0, regions);
     gl.depthMask(false);
     const ends = draw.runEnds;
     for (let run = 0, start = 0; run < CASTER_RUN_COUNT; start = ends[run++]) {

@@ -9,7 +9,7 @@ import lightSpotFragment from '../../shaders/light-spot.frag.glsl?raw';
 import lightTexturedFragment from '../../shaders/light-textured.frag.glsl?raw';
 import lightVertex from '../../shaders/light.vert.glsl?raw';
 import shadowCommon from '../../shaders/chunks/shadow-common.glsl?raw';
-import shadowConcaveFragment from '../../shaders/shadow-concave.frag.glsl?raw';
+import shadowCavityFragment from '../../shaders/shadow-cavity.frag.glsl?raw';
 import shadowEdgesFragment from '../../shaders/shadow-edges.frag.glsl?raw';
 import shadowHullFragment from '../../shaders/shadow-hull.frag.glsl?raw';
 import shadowMaskVertex from '../../shaders/shadow-mask.vert.glsl?raw';
@@ -24,9 +24,9 @@ const chunks = { 'light-common': lightCommon, 'shadow-common': shadowCommon };
  * in `VARYING_POINTS` varyings, then, for hulls of any size, read from the points texture. Both
  * stages of a program must be of the same class.
  */
-function shadowStage(source: string): readonly string[] {
+function shadowStage(source: string, defines: Readonly<Record<string, string>> = {}): readonly string[] {
   const resolved = resolveIncludes(source, chunks);
-  return [...VARYING_POINT_COUNTS.map((count) => withDefines(resolved, { VARYING_POINTS: count })), resolved];
+  return [...VARYING_POINT_COUNTS.map((count) => withDefines(resolved, { ...defines, VARYING_POINTS: count })), withDefines(resolved, defines)];
 }
 
 /** The GLSL sources, inlined at build time, with their chunks resolved. */
@@ -40,7 +40,8 @@ export const shaderSources = {
   lightPointFragment: resolveIncludes(lightPointFragment, chunks),
   lightSpotFragment: resolveIncludes(lightSpotFragment, chunks),
   lightTexturedFragment: resolveIncludes(lightTexturedFragment, chunks),
-  shadowConcaveFragment: shadowStage(shadowConcaveFragment),
+  shadowCavityFragment: shadowStage(shadowCavityFragment),
+  shadowConcaveFragment: shadowStage(shadowHullFragment, { CONCAVE_HULL: '' }),
   shadowEdgesFragment: shadowStage(shadowEdgesFragment),
   shadowHullFragment: shadowStage(shadowHullFragment),
   shadowMaskVertex: shadowStage(shadowMaskVertex),

@@ -93,17 +93,17 @@ describe('FramePlan shadow casters', () => {
     expect(casters(plan([new PointLight({ position: [30, 45], range: 100, radius: 10 })], [far]))).toEqual([-1]);
   });
 
-  it('puts convex whole hulls first, then concave ones, then the edges of hulls near the disk', () => {
+  it('puts convex regions first, then concave ones, then their cavities, then the edges of hulls near the disk', () => {
     const u = new Hull([[80, 30], [100, 30], [100, 60], [80, 60], [80, 55], [95, 55], [95, 35], [80, 35]]);
     const near = new Hull([[40, 40], [50, 40], [50, 50], [40, 50]]);
     const far = new Hull([[80, 70], [90, 70], [90, 80], [80, 80]]);
     const light = new PointLight({ position: [30, 45], range: 100, radius: 10 });
     const framePlan = plan([light], [u, near, far]);
     // Points: u 0–7, near 8–11, far 12–15.
-    expect(casters(framePlan)).toEqual([-13, -1, 8, 9, 10, 11]);
-    // Runs: convex, concave, edges, each of up to 4 points, up to 8, any size.
-    expect(Array.from(framePlan.draws[0].runEnds)).toEqual([1, 1, 1, 1, 2, 2, 6, 6, 6]);
-    expect(framePlan.draws[0].wholeHullCasterCount).toBe(2);
+    expect(casters(framePlan)).toEqual([-13, -1, -1, 8, 9, 10, 11]);
+    // Runs: convex regions, concave regions, cavities, edges; each of up to 4 points, up to 8, any size.
+    expect(Array.from(framePlan.draws[0].runEnds)).toEqual([1, 1, 1, 1, 2, 2, 2, 3, 3, 7, 7, 7]);
+    expect(framePlan.draws[0].regionCasterCount).toBe(2);
     light.radius = 1;
     expect(casters(plan([light], [near]))).toEqual([-1]);
   });
@@ -117,7 +117,7 @@ describe('FramePlan shadow casters', () => {
     const framePlan = plan([light], [round, nearRound, square, hexagon]);
     // Points: round 0–8, nearRound 9–18, square 19–22, hexagon 23–28.
     expect(casters(framePlan)).toEqual([-20, -24, -1, ...Array.from({ length: 10 }, (_, i) => 9 + i)]);
-    expect(Array.from(framePlan.draws[0].runEnds)).toEqual([1, 2, 3, 3, 3, 3, 3, 3, 13]);
+    expect(Array.from(framePlan.draws[0].runEnds)).toEqual([1, 2, 3, 3, 3, 3, 3, 3, 3, 3, 3, 13]);
   });
 
   it('makes a hull near the disk one caster while its region opens at most 78° either side', () => {

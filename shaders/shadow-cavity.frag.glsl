@@ -1,6 +1,8 @@
 #version 300 es
-// Shadow mask of any hull's region, fragment stage: writes which part of the light disk the hull,
-// convex or not, hides from the pixel (see the chunk shadow-common for the channels).
+// Shadow mask of a concave hull's cavities, fragment stage, drawn over the hull's bounding box:
+// writes which part of the light disk the hull hides from the pixel (see the chunk shadow-common
+// for the channels). Exact anywhere, but costlier than the region stage, which leaves it the pixels
+// inside the convex hull of the points.
 precision highp float;
 precision highp int;
 precision highp sampler2D;
@@ -43,7 +45,7 @@ void visitPoint(vec2 toPoint) {
   previous = toPoint;
 }
 
-vec4 maskOfAnyHullRegion() {
+vec4 maskOfAnyHull() {
   vec2 first = firstPointOffset();
   previous = first;
   turn = lowest = highest = 0.0;
@@ -59,5 +61,5 @@ vec4 maskOfAnyHullRegion() {
 
 void main() {
   seeFromPixel();
-  o_mask = maskOfAnyHullRegion();
+  o_mask = maskOfAnyHull();
 }
