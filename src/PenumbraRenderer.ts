@@ -325,9 +325,8 @@ export class PenumbraRenderer {
     this.geometry.update(this._hulls);
     plan.build(this._lights, this._hulls, this.geometry, viewProjection, this.lightmapWidth, this.lightmapHeight);
     resources.buffers.upload(this.geometry, plan);
-    const m = viewProjection;
     // A view-projection that flips orientation turns the light-facing edges' quads the other way.
-    const mirrored = m[0] * m[5] - m[1] * m[4] < 0;
+    const mirrored = viewProjection[0] * viewProjection[5] - viewProjection[1] * viewProjection[4] < 0;
     resources.shadowMask.beginFrame(resources.buffers, viewProjection);
     resources.light.begin(this._ambient);
     gl.enable(gl.SCISSOR_TEST);

@@ -30,8 +30,23 @@ export type CasterKind = (typeof CasterKind)[keyof typeof CasterKind];
  * The regions come first, so that their umbrae are one draw.
  */
 export const CASTER_RUN_COUNT = 4 * SIZE_CLASS_COUNT;
-const FIRST_CAVITY_RUN = CasterKind.ConcaveCavities * SIZE_CLASS_COUNT;
-const FIRST_EDGE_RUN = CasterKind.Edges * SIZE_CLASS_COUNT;
+const FIRST_CAVITY_RUN = casterRun(CasterKind.ConcaveCavities, 0);
+const FIRST_EDGE_RUN = casterRun(CasterKind.Edges, 0);
+
+/** The run of casters of `kind` from hulls of `sizeClass`. */
+function casterRun(kind: CasterKind, sizeClass: number): number {
+  return kind * SIZE_CLASS_COUNT + sizeClass;
+}
+
+/** The kind of the casters in `run`. */
+export function kindOfRun(run: number): CasterKind {
+  return Math.floor(run / SIZE_CLASS_COUNT) as CasterKind;
+}
+
+/** The size class of the hulls whose casters are in `run`. */
+export function sizeClassOfRun(run: number): number {
+  return run % SIZE_CLASS_COUNT;
+}
 
 /** `casters` grows in whole rows of this many entries, so it fills the rows of the texture it is uploaded to. */
 export const CASTER_ROW = 1024;
@@ -221,8 +236,12 @@ export class FramePlan {
     for (let i = 0; i < count; i++) {
       const run = casterRunOf(geometry, hulls, inRange[i], light);
       runs[i] = run;
-      cursors[run] += run >= FIRST_EDGE_RUN ? geometry.pointCounts[inRange[i]] : 1;
-      if (isConcaveRegion(run)) cursors[cavityRunOf(run)]++;
+      if (run >= FIRST_EDGE_RUN) {
+        cursors[run] += geometry.pointCounts[inRange[i]];
+      } else {
+        cursors[run]++;
+        if (kindOfRun(run) === CasterKind.ConcaveHull) cursors[cavityRunOf(run)]++;
+      }
     }
     const first = this.casterCount;
     let end = 0;
@@ -235,9 +254,12 @@ export class FramePlan {
     const casters = this.casters = ensureCapacity(this.casters, first, end, CASTER_ROW);
     for (let i = 0; i < count; i++) {
       const run = runs[i], firstPoint = geometry.firstPoints[inRange[i]];
-      if (run < FIRST_EDGE_RUN) casters[cursors[run]++] = -1 - firstPoint;
-      if (isConcaveRegion(run)) casters[cursors[cavityRunOf(run)]++] = -1 - firstPoint;
-      if (run >= FIRST_EDGE_RUN) for (let e = firstPoint, last = e + geometry.pointCounts[inRange[i]]; e < last; e++) casters[cursors[run]++] = e;
+      if (run >= FIRST_EDGE_RUN) {
+        for (let e = firstPoint, last = e + geometry.pointCounts[inRange[i]]; e < last; e++) casters[cursors[run]++] = e;
+      } else {
+        casters[cursors[run]++] = -1 - firstPoint;
+        if (kindOfRun(run) === CasterKind.ConcaveHull) casters[cursors[cavityRunOf(run)]++] = -1 - firstPoint;
+      }
     }
     this.casterCount = first + end;
     draw.casterOffset = first;
@@ -262,16 +284,12 @@ function casterRunOf(geometry: ShadowGeometry, hulls: readonly Hull[], index: nu
   const kind = !isClearOfDisk(geometry.worldBounds, index, light) && !hasNarrowShadow(hulls[index], light)
     ? CasterKind.Edges
     : geometry.convex[index] === 1 ? CasterKind.ConvexHull : CasterKind.ConcaveHull;
-  return kind * SIZE_CLASS_COUNT + sizeClassOf(geometry.pointCounts[index]);
-}
-
-function isConcaveRegion(run: number): boolean {
-  return Math.floor(run / SIZE_CLASS_COUNT) === CasterKind.ConcaveHull;
+  return casterRun(kind, sizeClassOf(geometry.pointCounts[index]));
 }
 
 /** The cavity run of the same size class as the concave region run `run`. */
 function cavityRunOf(run: number): number {
-  return run + (CasterKind.ConcaveCavities - CasterKind.ConcaveHull) * SIZE_CLASS_COUNT;
+  return casterRun(CasterKind.ConcaveCavities, sizeClassOfRun(run));
 }
 
 /** The first size class that holds `pointCount` points. */

@@ -157,7 +157,7 @@ export class ShadowGeometry {
       this.countedEdges = new Int32Array(capacity);
     }
     this.refreshedVersions.fill(-1);
-    this.preparedVersions.fill(-2);
+    this.preparedVersions.fill(-1);
     this.countedEdges.fill(0);
     this.validEdgeCount = 0;
   }

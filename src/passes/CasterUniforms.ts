@@ -41,12 +41,15 @@ export class CasterUniforms {
     gl.bindTexture(gl.TEXTURE_2D, buffers.pointsTexture);
   }
 
+  /** Points the samplers of `program` (in use) at the texture units; once, when it is linked: a program keeps its uniforms. */
+  setSamplerUnits(program: Program): void {
+    this.gl.uniform1i(program.uniforms.u_hullPoints, POINTS_UNIT);
+    this.gl.uniform1i(program.uniforms.u_casters, CASTERS_UNIT);
+  }
+
   /** Sets the frame's uniforms of `program`, which must be in use. */
   setFrame(program: Program, viewProjection: ReadonlyMat4): void {
-    const gl = this.gl;
-    gl.uniformMatrix4fv(program.uniforms.u_viewProjection, false, viewProjection);
-    gl.uniform1i(program.uniforms.u_hullPoints, POINTS_UNIT);
-    gl.uniform1i(program.uniforms.u_casters, CASTERS_UNIT);
+    this.gl.uniformMatrix4fv(program.uniforms.u_viewProjection, false, viewProjection);
   }
 
   /** Sets the uniforms of `program` (in use) for `draw`'s light. */

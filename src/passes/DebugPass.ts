@@ -22,6 +22,8 @@ export class DebugPass {
     this.quadProgram = createProgram(gl, 'debug light quads', shaderSources.lightVertex, shaderSources.debugFragment);
     this.shadowProgram = createProgram(gl, 'debug shadow geometry', shaderSources.shadowMaskVertex[ANY_SIZE_CLASS], shaderSources.debugFragment);
     this.casterUniforms = new CasterUniforms(gl);
+    gl.useProgram(this.shadowProgram.handle);
+    this.casterUniforms.setSamplerUnits(this.shadowProgram);
   }
 
   /**

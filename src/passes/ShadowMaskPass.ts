@@ -1,5 +1,5 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
-import { ANY_SIZE_CLASS, CASTER_RUN_COUNT, CasterKind, SIZE_CLASS_COUNT, VARYING_POINT_COUNTS, type LightDraw } from '../geometry/FramePlan';
+import { ANY_SIZE_CLASS, CASTER_RUN_COUNT, CasterKind, kindOfRun, sizeClassOfRun, VARYING_POINT_COUNTS, type LightDraw } from '../geometry/FramePlan';
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget } from '../gl/RenderTarget';
 import { CASTER_VERTICES, CasterUniforms } from './CasterUniforms';
@@ -38,25 +38,26 @@ export class ShadowMaskPass {
   private readonly casterUniforms: CasterUniforms;
 
   constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number) {
+    this.casterUniforms = new CasterUniforms(gl);
     const vertex = shaderSources.shadowMaskVertex;
     this.umbraProgram = this.createShadowProgram('umbrae', vertex[ANY_SIZE_CLASS], shaderSources.shadowUmbraFragment, CasterShape.Umbra);
     const shading: Program[] = [];
     for (let run = 0; run < CASTER_RUN_COUNT; run++) {
-      const { name, fragment, shape } = KIND_STAGES[Math.floor(run / SIZE_CLASS_COUNT) as CasterKind];
-      const sizeClass = run % SIZE_CLASS_COUNT;
+      const { name, fragment, shape } = KIND_STAGES[kindOfRun(run)];
+      const sizeClass = sizeClassOfRun(run);
       const size = sizeClass < ANY_SIZE_CLASS ? `of up to ${VARYING_POINT_COUNTS[sizeClass]} points` : 'of any size';
       shading.push(this.createShadowProgram(`${name} ${size}`, vertex[sizeClass], fragment[sizeClass], shape));
     }
     this.shadingPrograms = shading;
     this.target = new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, width, height);
-    this.casterUniforms = new CasterUniforms(gl);
   }
 
-  /** Links a program of the pass and sets its caster shape, which a program keeps for its lifetime. */
+  /** Links a program of the pass and sets what never changes: its caster shape and sampler units. */
   private createShadowProgram(name: string, vertexSource: string, fragmentSource: string, shape: number): Program {
     const program = createProgram(this.gl, `shadow mask of ${name}`, vertexSource, fragmentSource);
     this.gl.useProgram(program.handle);
     this.gl.uniform1i(program.uniforms.u_shape, shape);
+    this.casterUniforms.setSamplerUnits(program);
     return program;
   }
 
