@@ -39,7 +39,7 @@ export class Playground extends EventTarget {
 
   constructor(readonly gl: WebGL2RenderingContext) {
     super();
-    this.renderer = new PenumbraRenderer(gl);
+    this.renderer = new PenumbraRenderer(gl, { measureCpuTime: true });
     this.cookies = new Cookies(gl);
     this.art = new SceneArt(gl);
   }

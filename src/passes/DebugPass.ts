@@ -1,7 +1,7 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
 import { ANY_SIZE_CLASS, type LightDraw } from '../geometry/FramePlan';
 import { createProgram, type Program } from '../gl/program';
-import type { UnitQuad } from '../gl/UnitQuad';
+import type { LightShapes } from '../gl/LightShapes';
 import { CasterUniforms } from './CasterUniforms';
 import type { GeometryBuffers } from './GeometryBuffers';
 import { shaderSources } from './shaders';
@@ -18,7 +18,7 @@ export class DebugPass {
   private readonly shadowProgram: Program;
   private readonly casterUniforms: CasterUniforms;
 
-  constructor(private readonly gl: WebGL2RenderingContext, private readonly quad: UnitQuad) {
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly shapes: LightShapes) {
     this.quadProgram = createProgram(gl, 'debug light quads', shaderSources.lightVertex, shaderSources.debugFragment);
     this.shadowProgram = createProgram(gl, 'debug shadow geometry', shaderSources.shadowMaskVertex[ANY_SIZE_CLASS], shaderSources.debugFragment);
     this.casterUniforms = new CasterUniforms(gl);
@@ -50,11 +50,9 @@ export class DebugPass {
       gl.useProgram(this.quadProgram.handle);
       const quadUniforms = this.quadProgram.uniforms;
       gl.uniformMatrix4fv(quadUniforms.u_viewProjection, false, viewProjection);
-      gl.uniform2f(quadUniforms.u_quadCorner, draw.quad[0], draw.quad[1]);
-      gl.uniform2f(quadUniforms.u_quadAxisX, draw.quad[2], draw.quad[3]);
-      gl.uniform2f(quadUniforms.u_quadAxisY, draw.quad[4], draw.quad[5]);
+      gl.uniform2fv(quadUniforms.u_quad, draw.quad);
       gl.uniform4f(quadUniforms.u_color, 1, 1, 0, 1);
-      this.quad.draw(gl.LINE_LOOP);
+      this.shapes.drawQuad(gl.LINE_LOOP);
     }
   }
 

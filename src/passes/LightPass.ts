@@ -2,7 +2,7 @@ import type { ReadonlyMat4 } from 'gl-matrix';
 import type { LightDraw } from '../geometry/FramePlan';
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
-import type { UnitQuad } from '../gl/UnitQuad';
+import type { LightShapes } from '../gl/LightShapes';
 import { Spotlight, TexturedLight, type LightKind } from '../scene/lights';
 import { shaderSources } from './shaders';
 
@@ -11,8 +11,9 @@ const COOKIE_UNIT = 2;
 
 /**
  * Light pass: owns the lightmap (RGBA16F where the context can render to it, so overlapping lights
- * go above 1), clears it to the ambient colour, and adds each light's quad weighted by the visible
- * fraction of its disk read from the shadow mask.
+ * go above 1), clears it to the ambient colour, and adds each light weighted by the visible
+ * fraction of its disk read from the shadow mask. A light confined to its range is drawn as the
+ * polygon around its range disk, the others as their quad.
  */
 export class LightPass {
   readonly lightmap: RenderTarget;
@@ -20,9 +21,6 @@ export class LightPass {
   private readonly clearValue = new Float32Array(4);
   // Uniform values go through reused typed arrays: doubles passed to a GL call one by one are boxed
   // on the heap. (One array per uniform: headless-gl lacks the srcOffset/srcLength overloads.)
-  private readonly quadCorner = new Float32Array(2);
-  private readonly quadAxisX = new Float32Array(2);
-  private readonly quadAxisY = new Float32Array(2);
   private readonly lightColor = new Float32Array(3);
   private readonly lightPosition = new Float32Array(2);
   private readonly lightRange = new Float32Array(1);
@@ -30,7 +28,7 @@ export class LightPass {
   private readonly coneHalfAngle = new Float32Array(1);
   private readonly coneDecay = new Float32Array(1);
 
-  constructor(private readonly gl: WebGL2RenderingContext, private readonly quad: UnitQuad, format: TargetFormat, width: number, height: number) {
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly shapes: LightShapes, format: TargetFormat, width: number, height: number) {
     this.programs = {
       point: createProgram(gl, 'point light', shaderSources.lightVertex, shaderSources.lightPointFragment),
       spot: createProgram(gl, 'spotlight', shaderSources.lightVertex, shaderSources.lightSpotFragment),
@@ -67,9 +65,7 @@ export class LightPass {
     gl.useProgram(program.handle);
     gl.uniformMatrix4fv(uniforms.u_viewProjection, false, viewProjection);
     this.writeLightUniforms(draw);
-    gl.uniform2fv(uniforms.u_quadCorner, this.quadCorner);
-    gl.uniform2fv(uniforms.u_quadAxisX, this.quadAxisX);
-    gl.uniform2fv(uniforms.u_quadAxisY, this.quadAxisY);
+    gl.uniform2fv(uniforms.u_quad, draw.quad);
     gl.uniform3fv(uniforms.u_lightColor, this.lightColor);
     gl.uniform2fv(uniforms.u_lightPosition, this.lightPosition);
     gl.uniform1fv(uniforms.u_lightRange, this.lightRange);
@@ -93,18 +89,13 @@ export class LightPass {
     gl.enable(gl.BLEND);
     gl.blendEquation(gl.FUNC_ADD);
     gl.blendFunc(gl.ONE, gl.ONE);
-    this.quad.draw(gl.TRIANGLE_FAN);
+    if (light.isConfinedToRangeDisk()) this.shapes.drawDisk();
+    else this.shapes.drawQuad(gl.TRIANGLE_FAN);
   }
 
-  /** Copies the quad and the light's colour, position and range into the uniform arrays. */
+  /** Copies the light's colour, position and range into the uniform arrays. */
   private writeLightUniforms(draw: LightDraw): void {
-    const quad = draw.quad, light = draw.light;
-    this.quadCorner[0] = quad[0];
-    this.quadCorner[1] = quad[1];
-    this.quadAxisX[0] = quad[2];
-    this.quadAxisX[1] = quad[3];
-    this.quadAxisY[0] = quad[4];
-    this.quadAxisY[1] = quad[5];
+    const light = draw.light;
     const color = light.color, intensity = light.intensity;
     this.lightColor[0] = color[0] * intensity;
     this.lightColor[1] = color[1] * intensity;

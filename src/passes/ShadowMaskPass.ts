@@ -1,5 +1,6 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
 import { ANY_SIZE_CLASS, CASTER_RUN_COUNT, CasterKind, kindOfRun, sizeClassOfRun, VARYING_POINT_COUNTS, type LightDraw } from '../geometry/FramePlan';
+import type { LightShapes } from '../gl/LightShapes';
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget } from '../gl/RenderTarget';
 import { CASTER_VERTICES, CasterUniforms } from './CasterUniforms';
@@ -8,7 +9,10 @@ import { shaderSources } from './shaders';
 
 /** The cleared mask: no part of the disk hidden. */
 const NOTHING_HIDDEN = new Float32Array(4);
-/** The cleared depth: umbrae are drawn nearer, and the other shadow quads behind them fail the depth test. */
+/**
+ * The cleared depth: the range cut-out and the umbrae are drawn nearer, and the other shadow quads
+ * behind them fail the depth test.
+ */
 const FARTHEST = 1;
 
 /** What the vertex stage draws for a whole-hull caster (`u_shape` in shadow-mask.vert.glsl); edges ignore it. */
@@ -28,17 +32,22 @@ const KIND_STAGES: Record<CasterKind, { name: string; fragment: readonly string[
  * the hulls' insides. Each shadow caster is one quad (shadow-mask.vert.glsl); light-facing edges
  * are culled by the rasterizer. The umbrae of the whole-hull casters are drawn first, cheaply and
  * with depth, so that the costly shadow fragments behind them (of any caster) are skipped by the
- * early depth test.
+ * early depth test. Before them, for a light confined to its range, so is the part of its quad
+ * outside the range, where the light adds nothing: an eighth of the shadow fragments of the bench's
+ * S3 fell there.
  */
 export class ShadowMaskPass {
   readonly target: RenderTarget;
+  private readonly rangeCutoutProgram: Program;
   private readonly umbraProgram: Program;
   /** Per run of casters (see `CASTER_RUN_COUNT`): the program that computes the hidden part of the disk per pixel. */
   private readonly shadingPrograms: readonly Program[];
   private readonly casterUniforms: CasterUniforms;
 
-  constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number) {
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly shapes: LightShapes, width: number, height: number) {
     this.casterUniforms = new CasterUniforms(gl);
+    // Depth only: the colour it would write is masked off.
+    this.rangeCutoutProgram = createProgram(gl, 'shadow mask: range cut-out', shaderSources.rangeCutoutVertex, shaderSources.shadowUmbraFragment);
     const vertex = shaderSources.shadowMaskVertex;
     this.umbraProgram = this.createShadowProgram('umbrae', vertex[ANY_SIZE_CLASS], shaderSources.shadowUmbraFragment, CasterShape.Umbra);
     const shading: Program[] = [];
@@ -72,6 +81,8 @@ export class ShadowMaskPass {
   beginFrame(buffers: GeometryBuffers, viewProjection: ReadonlyMat4): void {
     const gl = this.gl;
     this.casterUniforms.bindTextures(buffers);
+    gl.useProgram(this.rangeCutoutProgram.handle);
+    gl.uniformMatrix4fv(this.rangeCutoutProgram.uniforms.u_viewProjection, false, viewProjection);
     gl.useProgram(this.umbraProgram.handle);
     this.casterUniforms.setFrame(this.umbraProgram, viewProjection);
     // Indexed: a for-of allocates an iterator every frame.
@@ -94,14 +105,15 @@ export class ShadowMaskPass {
     // Clears obey the write masks: the last light left depth writes off.
     gl.depthMask(true);
     gl.clearBufferfi(gl.DEPTH_STENCIL, 0, FARTHEST, 0);
+    gl.enable(gl.DEPTH_TEST);
+    gl.depthFunc(gl.LESS);
+    if (draw.light.isConfinedToRangeDisk()) this.cutOutsideRange(draw);
     gl.enable(gl.BLEND);
     gl.blendEquation(gl.MAX);
     gl.enable(gl.CULL_FACE);
     gl.cullFace(gl.BACK);
     // Casters the light must draw give clockwise quads in world space (y up).
     gl.frontFace(mirrored ? gl.CCW : gl.CW);
-    gl.enable(gl.DEPTH_TEST);
-    gl.depthFunc(gl.LESS);
     gl.bindVertexArray(buffers.casterVertexArray);
     const regions = draw.regionCasterCount;
     if (regions > 0) this.drawCasters(this.umbraProgram, draw, 0, regions);
@@ -114,6 +126,16 @@ export class ShadowMaskPass {
     gl.disable(gl.CULL_FACE);
   }
 
+  /** Writes the nearest depth over the light's quad outside its range disk. */
+  private cutOutsideRange(draw: LightDraw): void {
+    const gl = this.gl;
+    gl.useProgram(this.rangeCutoutProgram.handle);
+    gl.uniform2fv(this.rangeCutoutProgram.uniforms.u_quad, draw.quad);
+    gl.colorMask(false, false, false, false);
+    this.shapes.drawOutsideDisk();
+    gl.colorMask(true, true, true, true);
+  }
+
   /** Draws `count` of `draw`'s casters from its `first` on with `program`. */
   private drawCasters(program: Program, draw: LightDraw, first: number, count: number): void {
     const gl = this.gl;
@@ -123,6 +145,7 @@ export class ShadowMaskPass {
   }
 
   dispose(): void {
+    this.gl.deleteProgram(this.rangeCutoutProgram.handle);
     this.gl.deleteProgram(this.umbraProgram.handle);
     for (const program of this.shadingPrograms) this.gl.deleteProgram(program.handle);
     this.target.dispose();

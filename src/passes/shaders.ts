@@ -40,6 +40,7 @@ export const shaderSources = {
   lightPointFragment: resolveIncludes(lightPointFragment, chunks),
   lightSpotFragment: resolveIncludes(lightSpotFragment, chunks),
   lightTexturedFragment: resolveIncludes(lightTexturedFragment, chunks),
+  rangeCutoutVertex: withDefines(lightVertex, { NEAREST_DEPTH: '' }),
   shadowCavityFragment: shadowStage(shadowCavityFragment),
   shadowConcaveFragment: shadowStage(shadowHullFragment, { CONCAVE_HULL: '' }),
   shadowEdgesFragment: shadowStage(shadowEdgesFragment),

@@ -168,6 +168,15 @@ export abstract class Light {
     return this._range;
   }
 
+  /**
+   * Whether the light adds nothing outside the disk of its range inscribed in its quad, so that the
+   * passes may draw that disk instead of the quad: true for the procedural lights.
+   * @internal
+   */
+  isConfinedToRangeDisk(): boolean {
+    return true;
+  }
+
   /** Normalised point of the quad placed at `position`. */
   protected quadPivot(): readonly [number, number] {
     return CENTRE;
@@ -291,5 +300,10 @@ export class TexturedLight extends Light {
     const x = Math.max(pivot[0], 1 - pivot[0]) * this.quadWidth();
     const y = Math.max(pivot[1], 1 - pivot[1]) * this.quadHeight();
     return Math.sqrt(x * x + y * y);
+  }
+
+  /** The cookie may light the quad's corners. */
+  override isConfinedToRangeDisk(): boolean {
+    return false;
   }
 }

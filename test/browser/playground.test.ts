@@ -55,6 +55,8 @@ describe('playground page in Chromium', () => {
     const stats = await page.evaluate(() => window.playground.rendererStats());
     expect(stats.lights).toBeGreaterThanOrEqual(4);
     expect(stats.hulls).toBeGreaterThanOrEqual(4);
+    // The overlay shows the renderer's CPU time, so the playground turns its timing on.
+    expect(stats.cpuTime).toBeGreaterThan(0);
     expect(await page.evaluate(() => window.playground.glError())).toBe(0);
     expect(errors).toEqual([]);
   });

@@ -172,3 +172,15 @@ describe('transforms', () => {
     small.dispose();
   });
 });
+
+describe('frame stats', () => {
+  it('counts the scene, and times the frame only when asked', () => {
+    renderer.addLight(new PointLight({ position: [20, 32], range: 60 }));
+    renderer.addHull(new Hull(box()));
+    frame();
+    expect(renderer.stats).toMatchObject({ lights: 1, lightsDrawn: 1, hulls: 1, edges: 4, cpuTime: 0 });
+    renderer.measureCpuTime = true;
+    frame();
+    expect(renderer.stats.cpuTime).toBeGreaterThan(0);
+  });
+});
