@@ -37,10 +37,13 @@ float fastAsin(float x) {
   return sign(x) * (PI / 2.0 - fromRightAngle);
 }
 
-// Fraction of a unit disk lying below the chord at signed height t.
+// Fraction of a unit disk lying below the chord at signed height t, 1/2 + (asin t + t √(1 − t²)) / π,
+// as an odd polynomial: within 2.2e-4 (a eighteenth of a mask step), increasing, exactly 0 and 1 at
+// the sides. Fitted to be cheap: the exact form's square roots cost SwiftShader a tenth of a stage.
 float diskAreaBelow(float t) {
   t = clamp(t, -1.0, 1.0);
-  return 0.5 + (fastAsin(t) + t * sqrt(1.0 - t * t)) * (1.0 / PI);
+  float t2 = t * t;
+  return 0.5 + t * (0.63451936 + t2 * (-0.07441131 + t2 * (-0.14561180 + t2 * (0.19324319 + t2 * -0.10773944))));
 }
 
 // A ray at angle θ off the axis passes the light centre at distance·sin(θ); over the radius it is
