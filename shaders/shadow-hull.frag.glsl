@@ -14,9 +14,11 @@ precision highp sampler2D;
 // sides, clear of its middle.
 vec2 lowEnd;
 vec2 highEnd;
+#ifdef CONCAVE_HULL
 // Inside the convex hull the points surround the pixel: some point lies beyond both extremes, or
 // the extremes end up 180° or more apart.
-bool surrounded;
+bool surrounded = false;
+#endif
 
 void visitPoint(vec2 toPoint) {
   bool beyondHigh = cross2(highEnd, toPoint) > 0.0;
@@ -30,11 +32,14 @@ void visitPoint(vec2 toPoint) {
 
 vec4 maskOfRegion() {
   lowEnd = highEnd = firstPointOffset();
-  surrounded = false;
   visitHullPoints();
   bool wrapsBehind = cross2(lowEnd, -axis) > 0.0 && cross2(-axis, highEnd) > 0.0;
   vec4 mask = maskOfAreas(diskAreaBelow(chordHeight(lowEnd)), diskAreaBelow(chordHeight(highEnd)), wrapsBehind);
-  return surrounded ? vec4(0.0) : mask;
+#ifdef CONCAVE_HULL
+  // Under #ifdef: SwiftShader keeps even a select on a constant.
+  if (surrounded) mask = vec4(0.0);
+#endif
+  return mask;
 }
 
 void main() {
