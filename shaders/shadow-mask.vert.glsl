@@ -19,10 +19,9 @@ uniform sampler2D u_hullPoints;
 uniform sampler2D u_casters;
 uniform int u_firstCaster;
 uniform mat4 u_viewProjection;
-uniform vec2 u_lightPosition;
-uniform float u_lightRadius;
-uniform float u_lightReach;       // the light adds nothing farther from its position
-uniform float u_projectionLength; // well beyond the light's bounds, see CasterUniforms
+// The light: position xy, disk radius, reach (it adds nothing farther from its position). One
+// vector, so that a light costs one call per program.
+uniform vec4 u_light;
 // Debug wireframe: eight vertices per caster, the quad's four sides as lines.
 uniform bool u_outline;
 // What a whole-hull caster draws: its region; its umbra, nearer the viewer (see ShadowMaskPass);
@@ -31,6 +30,14 @@ uniform int u_shape;
 const int REGION = 0;
 const int UMBRA = 1;
 const int BOUNDS = 2;
+
+// Edge quads reach this many times the light's reach: far enough that even when the two tangents
+// of a long edge diverge widely, the quad's far side stays outside the scissor rectangle.
+const float PROJECTION_REACHES = 192.0;
+
+vec2 lightPosition;
+float lightRadius;
+float lightReach;
 
 flat out ivec2 v_hull;
 // World position: the shading stages interpolate it rather than invert the view-projection per pixel.
@@ -68,19 +75,19 @@ vec2 edgeQuadCorner(int edge, ivec2 hull, int corner) {
   bool atEnd = corner == 1 || corner == 2;
   vec2 point = atEnd ? end : start;
   vec2 other = atEnd ? start : end;
-  vec2 fromLight = point - u_lightPosition;
+  vec2 fromLight = point - lightPosition;
   float distance = max(length(fromLight), 1e-6);
   vec2 direction = fromLight / distance;
   // The inner tangent from the disk through the point leans away from the edge's other end by asin(r / d).
-  float sine = min(u_lightRadius / distance, 1.0);
+  float sine = min(lightRadius / distance, 1.0);
   float cosine = sqrt(1.0 - sine * sine);
   vec2 tangent = turned(direction, -sign(cross2(direction, other - point)) * sine, cosine);
-  return point + tangent * (corner >= 2 ? u_projectionLength : 0.0);
+  return point + tangent * (corner >= 2 ? lightReach * PROJECTION_REACHES : 0.0);
 }
 
 // Where the line through `point` along `direction` meets the line at distance `along` from the light on `axis`.
 vec2 atDistance(vec2 point, vec2 direction, vec2 axis, float along) {
-  return point + direction * ((along - dot(point - u_lightPosition, axis)) / dot(direction, axis));
+  return point + direction * ((along - dot(point - lightPosition, axis)) / dot(direction, axis));
 }
 
 // Corner 0..3 of a hull's region or umbra, clockwise: near and far on the high (counter-
@@ -98,9 +105,9 @@ vec2 hullCorner(ivec2 hull, int corner) {
   // Through each point, the tangents to the disk lean asin(r / d) either side of the direction to it.
   for (int i = 0; i < hull.y; i++) {
     vec2 point = texelAt(hull.x + i).xy;
-    float distance = length(point - u_lightPosition);
-    vec2 direction = (point - u_lightPosition) / distance;
-    float sine = min(u_lightRadius / distance, 1.0);
+    float distance = length(point - lightPosition);
+    vec2 direction = (point - lightPosition) / distance;
+    float sine = min(lightRadius / distance, 1.0);
     float cosine = sqrt(1.0 - sine * sine);
     vec2 high = turned(direction, sideSign * sine, cosine);
     vec2 low = turned(direction, -sideSign * sine, cosine);
@@ -114,17 +121,17 @@ vec2 hullCorner(ivec2 hull, int corner) {
     }
   }
   vec2 axis = normalize(highDirection + lowDirection);
-  float near = umbra ? 0.0 : u_lightReach;
+  float near = umbra ? 0.0 : lightReach;
   for (int i = 0; i < hull.y; i++) {
-    float along = dot(texelAt(hull.x + i).xy - u_lightPosition, axis);
+    float along = dot(texelAt(hull.x + i).xy - lightPosition, axis);
     near = umbra ? max(near, along) : min(near, along);
   }
-  float far = u_lightReach;
+  float far = lightReach;
   // Outer tangents that meet beyond the hull (a disk wider than the hull) end the umbra there.
   float meeting = cross2(highDirection, lowDirection);
   if (umbra && meeting > 0.0) {
     vec2 apex = highPoint + highDirection * (cross2(lowPoint - highPoint, lowDirection) / cross2(highDirection, lowDirection));
-    far = min(far, dot(apex - u_lightPosition, axis));
+    far = min(far, dot(apex - lightPosition, axis));
   }
   // A region or umbra that ends before it starts collapses to a line and draws nothing.
   float along = corner == 1 || corner == 2 ? max(far, near) : near;
@@ -148,6 +155,9 @@ vec2 wholeHullCorner(ivec2 hull, int corner) {
 }
 
 void main() {
+  lightPosition = u_light.xy;
+  lightRadius = u_light.z;
+  lightReach = u_light.w;
   int vertex = gl_VertexID % (u_outline ? 8 : 6);
   // Triangles (0 1 2) (0 2 3), or the lines (0 1) (1 2) (2 3) (3 0).
   int corner = u_outline ? ((vertex + 1) / 2) % 4 : (vertex < 3 ? vertex : (vertex == 3 ? 0 : vertex - 2));

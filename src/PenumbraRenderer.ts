@@ -338,8 +338,8 @@ export class PenumbraRenderer {
     resources.buffers.upload(this.geometry, plan);
     // A view-projection that flips orientation turns the light-facing edges' quads the other way.
     const mirrored = viewProjection[0] * viewProjection[5] - viewProjection[1] * viewProjection[4] < 0;
-    resources.shadowMask.beginFrame(resources.buffers, viewProjection);
-    resources.light.begin(this._ambient);
+    resources.shadowMask.beginFrame(resources.buffers, viewProjection, mirrored);
+    resources.light.begin(this._ambient, viewProjection);
     gl.enable(gl.SCISSOR_TEST);
     for (let i = 0; i < plan.drawCount; i++) {
       const draw = plan.draws[i];
@@ -347,10 +347,10 @@ export class PenumbraRenderer {
       gl.scissor(s[0], s[1], s[2], s[3]);
       const shadowed = draw.hullCount > 0;
       if (shadowed) {
-        resources.shadowMask.render(draw, resources.buffers, mirrored);
+        resources.shadowMask.render(draw, resources.buffers);
         resources.hull.render(draw, resources.buffers, viewProjection);
       }
-      resources.light.render(draw, viewProjection, shadowed ? resources.shadowMask.target.texture : null);
+      resources.light.render(draw, shadowed ? resources.shadowMask.target.texture : null);
     }
     this.updateStats(this.measureCpuTime ? performance.now() - start : 0);
   }

@@ -1,7 +1,6 @@
 // Shared by the light passes: light uniforms and the shadow mask lookup.
 uniform vec3 u_lightColor; // colour × intensity
-uniform vec2 u_lightPosition;
-uniform float u_lightRange;
+uniform vec3 u_light; // position xy, range
 uniform bool u_hasShadowMask;
 uniform sampler2D u_shadowMask;
 
@@ -18,7 +17,7 @@ float lightVisibility() {
 
 // Linear falloff: 1 at the centre, 0 at the range.
 float distanceFalloff() {
-  return max(0.0, 1.0 - length(v_world - u_lightPosition) / u_lightRange);
+  return max(0.0, 1.0 - length(v_world - u_light.xy) / u_light.z);
 }
 
 // Alpha is 0 so additive blending leaves the lightmap's alpha untouched.

@@ -8,8 +8,7 @@
 // neither. With MAX blending, R + G + B is then the exact union for hulls that hide the disk from
 // its sides (the common case). Of several middle slices only the largest counts, and a middle
 // slice is added whole even where a hull hiding a side covers part of it.
-uniform vec2 u_lightPosition;
-uniform float u_lightRadius;
+uniform vec4 u_light; // position xy, disk radius, reach (see shadow-mask.vert.glsl)
 
 in vec2 v_world; // the pixel's world position, interpolated across the caster's quad
 
@@ -129,8 +128,8 @@ void visitHullPoints() {
 // Sets pixel, axis and scale for this fragment.
 void seeFromPixel() {
   pixel = v_world;
-  vec2 toLight = u_lightPosition - pixel;
+  vec2 toLight = u_light.xy - pixel;
   float inverseDistance = inversesqrt(max(dot(toLight, toLight), 1e-12));
   axis = toLight * inverseDistance;
-  scale = 1.0 / (inverseDistance * max(u_lightRadius, 1e-4));
+  scale = 1.0 / (inverseDistance * max(u_light.z, 1e-4));
 }

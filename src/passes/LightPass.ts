@@ -18,12 +18,12 @@ const COOKIE_UNIT = 2;
 export class LightPass {
   readonly lightmap: RenderTarget;
   private readonly programs: Record<LightKind, Program>;
+  private readonly programList: readonly Program[];
   private readonly clearValue = new Float32Array(4);
   // Uniform values go through reused typed arrays: doubles passed to a GL call one by one are boxed
   // on the heap. (One array per uniform: headless-gl lacks the srcOffset/srcLength overloads.)
   private readonly lightColor = new Float32Array(3);
-  private readonly lightPosition = new Float32Array(2);
-  private readonly lightRange = new Float32Array(1);
+  private readonly lightPositionAndRange = new Float32Array(3);
   private readonly direction = new Float32Array(2);
   private readonly coneHalfAngle = new Float32Array(1);
   private readonly coneDecay = new Float32Array(1);
@@ -34,6 +34,12 @@ export class LightPass {
       spot: createProgram(gl, 'spotlight', shaderSources.lightVertex, shaderSources.lightSpotFragment),
       textured: createProgram(gl, 'textured light', shaderSources.lightVertex, shaderSources.lightTexturedFragment),
     };
+    this.programList = Object.values(this.programs);
+    for (const program of this.programList) {
+      gl.useProgram(program.handle);
+      gl.uniform1i(program.uniforms.u_shadowMask, MASK_UNIT);
+      if (program.uniforms.u_cookie) gl.uniform1i(program.uniforms.u_cookie, COOKIE_UNIT);
+    }
     this.lightmap = new RenderTarget(gl, { format, linear: true }, width, height);
   }
 
@@ -41,9 +47,20 @@ export class LightPass {
     this.lightmap.resize(width, height);
   }
 
-  /** Binds the lightmap and clears it to the ambient colour (alpha 1). Disables the scissor test. */
-  begin(ambient: readonly [number, number, number]): void {
+  /**
+   * Once a frame, before the lights: sets the view-projection, binds the lightmap and clears it to
+   * the ambient colour (alpha 1). Disables the scissor test and sets additive blend factors: the
+   * light loop's other passes blend with MAX, which ignores them.
+   */
+  begin(ambient: readonly [number, number, number], viewProjection: ReadonlyMat4): void {
     const gl = this.gl;
+    // Indexed: a for-of allocates an iterator every frame.
+    const programs = this.programList;
+    for (let i = 0; i < programs.length; i++) {
+      gl.useProgram(programs[i].handle);
+      gl.uniformMatrix4fv(programs[i].uniforms.u_viewProjection, false, viewProjection);
+    }
+    gl.blendFunc(gl.ONE, gl.ONE);
     this.lightmap.bind();
     gl.disable(gl.SCISSOR_TEST);
     const clear = this.clearValue;
@@ -56,21 +73,18 @@ export class LightPass {
   }
 
   /** Adds one light into the lightmap; `shadowMask` is null for a light with nothing to shadow it. */
-  render(draw: LightDraw, viewProjection: ReadonlyMat4, shadowMask: WebGLTexture | null): void {
+  render(draw: LightDraw, shadowMask: WebGLTexture | null): void {
     const gl = this.gl;
     const light = draw.light;
     const program = this.programs[light.kind];
     const uniforms = program.uniforms;
     this.lightmap.bind();
     gl.useProgram(program.handle);
-    gl.uniformMatrix4fv(uniforms.u_viewProjection, false, viewProjection);
     this.writeLightUniforms(draw);
     gl.uniform2fv(uniforms.u_quad, draw.quad);
     gl.uniform3fv(uniforms.u_lightColor, this.lightColor);
-    gl.uniform2fv(uniforms.u_lightPosition, this.lightPosition);
-    gl.uniform1fv(uniforms.u_lightRange, this.lightRange);
+    gl.uniform3fv(uniforms.u_light, this.lightPositionAndRange);
     gl.uniform1i(uniforms.u_hasShadowMask, shadowMask ? 1 : 0);
-    gl.uniform1i(uniforms.u_shadowMask, MASK_UNIT);
     gl.activeTexture(gl.TEXTURE0 + MASK_UNIT);
     gl.bindTexture(gl.TEXTURE_2D, shadowMask);
     if (light instanceof Spotlight) {
@@ -82,13 +96,11 @@ export class LightPass {
       gl.uniform1fv(uniforms.u_coneHalfAngle, this.coneHalfAngle);
       gl.uniform1fv(uniforms.u_coneDecay, this.coneDecay);
     } else if (light instanceof TexturedLight) {
-      gl.uniform1i(uniforms.u_cookie, COOKIE_UNIT);
       gl.activeTexture(gl.TEXTURE0 + COOKIE_UNIT);
       gl.bindTexture(gl.TEXTURE_2D, light.texture);
     }
     gl.enable(gl.BLEND);
     gl.blendEquation(gl.FUNC_ADD);
-    gl.blendFunc(gl.ONE, gl.ONE);
     if (light.isConfinedToRangeDisk()) this.shapes.drawDisk();
     else this.shapes.drawQuad(gl.TRIANGLE_FAN);
   }
@@ -100,13 +112,13 @@ export class LightPass {
     this.lightColor[0] = color[0] * intensity;
     this.lightColor[1] = color[1] * intensity;
     this.lightColor[2] = color[2] * intensity;
-    this.lightPosition[0] = light.position[0];
-    this.lightPosition[1] = light.position[1];
-    this.lightRange[0] = light.range;
+    this.lightPositionAndRange[0] = light.position[0];
+    this.lightPositionAndRange[1] = light.position[1];
+    this.lightPositionAndRange[2] = light.range;
   }
 
   dispose(): void {
-    for (const program of Object.values(this.programs)) this.gl.deleteProgram(program.handle);
+    for (const program of this.programList) this.gl.deleteProgram(program.handle);
     this.lightmap.dispose();
   }
 }

@@ -76,10 +76,14 @@ export class ShadowMaskPass {
 
   /**
    * Once a frame, before the lights: binds the geometry textures and sets what every light shares.
-   * The light loop's other passes leave those texture units alone.
+   * The light loop's other passes leave those texture units and the face culling settings alone.
+   * @param mirrored whether the view-projection flips orientation (decides which faces are light-facing).
    */
-  beginFrame(buffers: GeometryBuffers, viewProjection: ReadonlyMat4): void {
+  beginFrame(buffers: GeometryBuffers, viewProjection: ReadonlyMat4, mirrored: boolean): void {
     const gl = this.gl;
+    gl.cullFace(gl.BACK);
+    // Casters the light must draw give clockwise quads in world space (y up).
+    gl.frontFace(mirrored ? gl.CCW : gl.CW);
     this.casterUniforms.bindTextures(buffers);
     gl.useProgram(this.rangeCutoutProgram.handle);
     gl.uniformMatrix4fv(this.rangeCutoutProgram.uniforms.u_viewProjection, false, viewProjection);
@@ -94,11 +98,8 @@ export class ShadowMaskPass {
     }
   }
 
-  /**
-   * Clears the mask inside the current scissor and draws the shadows of `draw`'s hulls.
-   * @param mirrored whether the view-projection flips orientation (decides which faces are light-facing).
-   */
-  render(draw: LightDraw, buffers: GeometryBuffers, mirrored: boolean): void {
+  /** Clears the mask inside the current scissor and draws the shadows of `draw`'s hulls. */
+  render(draw: LightDraw, buffers: GeometryBuffers): void {
     const gl = this.gl;
     this.target.bind();
     gl.clearBufferfv(gl.COLOR, 0, NOTHING_HIDDEN);
@@ -111,9 +112,6 @@ export class ShadowMaskPass {
     gl.enable(gl.BLEND);
     gl.blendEquation(gl.MAX);
     gl.enable(gl.CULL_FACE);
-    gl.cullFace(gl.BACK);
-    // Casters the light must draw give clockwise quads in world space (y up).
-    gl.frontFace(mirrored ? gl.CCW : gl.CW);
     gl.bindVertexArray(buffers.casterVertexArray);
     const regions = draw.regionCasterCount;
     if (regions > 0) this.drawCasters(this.umbraProgram, draw, 0, regions);
