@@ -41,6 +41,27 @@ describe('point light', () => {
     expect(renderLightmap(gl, renderer, W, H).at(48 + 41, 32)[0]).toBe(0); // beyond range
   });
 
+  it('lights every pixel of its range disk, up to the rim, also turned and with a hull in range', () => {
+    // The light pass draws a polygon around the range disk, and the shadow mask cuts out the rest
+    // of the quad: neither may lose a pixel of the disk.
+    setUp();
+    const light = renderer.addLight(new PointLight({ position: [40, 32], range: 30, rotation: 0.3 }));
+    const compareLeftOf = (maxX: number) => {
+      const lightmap = renderLightmap(gl, renderer, W, H);
+      let worst = 0;
+      for (let y = 0; y < H; y++) {
+        for (let x = 0; x < maxX; x++) worst = Math.max(worst, Math.abs(lightmap.at(x, y)[0] - falloff(40, 32, 30, x, y)));
+      }
+      return worst;
+    };
+    expect(compareLeftOf(W)).toBeLessThan(CLOSE);
+    // A post right of the light shadows only pixels right of it.
+    renderer.addHull(new Hull([[60, 30], [62, 30], [62, 34], [60, 34]]));
+    expect(compareLeftOf(60)).toBeLessThan(CLOSE);
+    light.rotation = 0;
+    expect(compareLeftOf(60)).toBeLessThan(CLOSE);
+  });
+
   it('sums overlapping lights above 1.0 in the half-float lightmap', () => {
     setUp();
     expect(renderer.hasFloatLightmap).toBe(true);
