@@ -8,7 +8,15 @@ precision highp int;
 precision highp sampler2D;
 #include "shadow-common"
 
+const float PI = 3.14159265358979;
 const float TURN = 6.28318530717959;
+
+// asin within 5e-5 (Abramowitz & Stegun 4.4.45): SwiftShader's own costs several times more.
+float fastAsin(float x) {
+  float a = abs(x);
+  float fromRightAngle = sqrt(1.0 - a) * (1.5707288 + a * (-0.2121144 + a * (0.0742610 + a * -0.0187293)));
+  return sign(x) * (PI / 2.0 - fromRightAngle);
+}
 
 // atan(y, x) within 1e-5: SwiftShader's own costs several times more, once per point.
 float fastAtan(float y, float x) {

@@ -2,7 +2,7 @@
  * Sides of the polygon drawn for a light's range disk. It is circumscribed, so it covers the whole
  * disk; with 16 sides it is 1.3% larger than the disk and 20% smaller than the quad.
  */
-export const DISK_SIDES = 16;
+const DISK_SIDES = 16;
 
 /** Distance from the quad's centre to the sides of the ring's outer polygon: beyond the quad's corners (√2 / 2). */
 const CUTOUT_OUTER_RADIUS = 0.75;
@@ -17,7 +17,7 @@ const CUTOUT_OUTER_RADIUS = 0.75;
  *   quad's pixels outside the range, cut out of the light's shadow work.
  */
 export class LightShapes {
-  readonly vertexArray: WebGLVertexArrayObject;
+  private readonly vertexArray: WebGLVertexArrayObject;
   private readonly buffer: WebGLBuffer;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
