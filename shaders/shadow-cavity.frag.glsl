@@ -31,10 +31,11 @@ float fastAtan(float y, float x) {
 
 // The part of the disk hidden by the directions [low, high], measured like `centre` (the light's
 // direction), when they overlap the disk's angular width around it.
-vec4 maskOfDirections(float low, float high, float centre, float halfWidth) {
+// `distance` is the pixel's from the light, in radii.
+vec4 maskOfDirections(float low, float high, float centre, float halfWidth, float distance) {
   float from = max(low, centre - halfWidth);
   float to = min(high, centre + halfWidth);
-  vec4 mask = maskBetween(scale * sin(from - centre), scale * sin(to - centre));
+  vec4 mask = maskBetween(distance * sin(from - centre), distance * sin(to - centre));
   return from < to ? mask : vec4(0.0);
 }
 
@@ -58,13 +59,15 @@ vec4 maskOfAnyHull() {
   previous = first;
   turn = lowest = highest = 0.0;
   visitHullPoints();
-  float centre = fastAtan(cross2(first, axis), dot(first, axis));
-  float halfWidth = fastAsin(min(1.0 / scale, 1.0));
+  float centre = fastAtan(cross2(first, toLight), dot(first, toLight));
+  float inverseDistance = inversesqrt(max(dot(toLight, toLight), 1e-12));
+  float halfWidth = fastAsin(min(inverseDistance, 1.0));
+  float distance = 1.0 / inverseDistance;
   // The interval is under a full turn and the disk under half of one: the disk meets it at most
   // twice, once from each side, in the light's direction or a turn either way.
-  return max(maskOfDirections(lowest, highest, centre, halfWidth),
-             max(maskOfDirections(lowest, highest, centre - TURN, halfWidth),
-                 maskOfDirections(lowest, highest, centre + TURN, halfWidth)));
+  return max(maskOfDirections(lowest, highest, centre, halfWidth, distance),
+             max(maskOfDirections(lowest, highest, centre - TURN, halfWidth, distance),
+                 maskOfDirections(lowest, highest, centre + TURN, halfWidth, distance)));
 }
 
 void main() {

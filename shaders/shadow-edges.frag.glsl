@@ -16,8 +16,8 @@ bool lowBehind;
 bool anyAhead;
 
 void visitPoint(vec2 toPoint) {
-  float across = cross2(axis, toPoint);
-  bool ahead = dot(axis, toPoint) > 0.0;
+  float across = cross2(toLight, toPoint);
+  bool ahead = dot(toLight, toPoint) > 0.0;
   highBehind = highBehind || (!ahead && across >= 0.0);
   lowBehind = lowBehind || (!ahead && across < 0.0);
   anyAhead = anyAhead || ahead;
@@ -26,8 +26,8 @@ void visitPoint(vec2 toPoint) {
 }
 
 vec4 maskOfAnyHull() {
-  highest = vec2(axis.y, -axis.x); // -90°: below every point ahead
-  lowest = vec2(-axis.y, axis.x);  // +90°: above every point ahead
+  highest = vec2(toLight.y, -toLight.x); // -90°: below every point ahead
+  lowest = vec2(-toLight.y, toLight.x);  // +90°: above every point ahead
   highBehind = lowBehind = anyAhead = false;
   visitHullPoints();
   // A hull wholly behind the pixel hides nothing: every segment to the disk leaves ahead.

@@ -33,7 +33,7 @@ void visitPoint(vec2 toPoint) {
 vec4 maskOfRegion() {
   lowEnd = highEnd = firstPointOffset();
   visitHullPoints();
-  bool wrapsBehind = cross2(lowEnd, -axis) > 0.0 && cross2(-axis, highEnd) > 0.0;
+  bool wrapsBehind = cross2(lowEnd, -toLight) > 0.0 && cross2(-toLight, highEnd) > 0.0;
   vec4 mask = maskOfAreas(diskAreaBelow(chordHeight(lowEnd)), diskAreaBelow(chordHeight(highEnd)), wrapsBehind);
 #ifdef CONCAVE_HULL
   // Under #ifdef: SwiftShader keeps even a select on a constant.

@@ -20,8 +20,7 @@ const float PAST_HIGH = 2.0;
 const float PAST_LOW = -2.0;
 
 vec2 pixel;
-vec2 axis;      // unit vector from the pixel to the light centre
-float scale;    // distance to the light over its radius
+vec2 toLight; // from the pixel to the light centre, in light radii
 
 float cross2(vec2 a, vec2 b) {
   return a.x * b.y - a.y * b.x;
@@ -37,12 +36,12 @@ float diskAreaBelow(float t) {
   return 0.5 + t * (0.63451936 + t2 * (-0.07441131 + t2 * (-0.14561180 + t2 * (0.19324319 + t2 * -0.10773944))));
 }
 
-// A ray at angle θ off the axis passes the light centre at distance·sin(θ); over the radius it is
-// the height of the chord that splits the disk.
+// A ray at angle θ off the direction to the light passes the light centre at distance·sin(θ); over
+// the radius it is the height of the chord that splits the disk.
 float chordHeight(vec2 direction) {
-  float across = cross2(axis, direction);
-  float ahead = scale * across * inversesqrt(dot(direction, direction));
-  return dot(axis, direction) > 0.0 ? ahead : (across >= 0.0 ? PAST_HIGH : PAST_LOW);
+  float across = cross2(toLight, direction);
+  float ahead = across * inversesqrt(dot(direction, direction));
+  return dot(toLight, direction) > 0.0 ? ahead : (across >= 0.0 ? PAST_HIGH : PAST_LOW);
 }
 
 // The mask of a hull hiding the part of the disk between the areas low and high measured from its
@@ -117,11 +116,10 @@ void visitHullPoints() {
 }
 #endif
 
-// Sets pixel, axis and scale for this fragment.
+// Sets pixel and toLight for this fragment. Measured in radii, the offset to the light gives chord
+// heights with no square root or division per fragment; the stages only compare or normalize the
+// offsets to the points, so those stay in world units.
 void seeFromPixel() {
   pixel = v_world;
-  vec2 toLight = u_light.xy - pixel;
-  float inverseDistance = inversesqrt(max(dot(toLight, toLight), 1e-12));
-  axis = toLight * inverseDistance;
-  scale = 1.0 / (inverseDistance * max(u_light.z, 1e-4));
+  toLight = (u_light.xy - pixel) / max(u_light.z, 1e-4);
 }
