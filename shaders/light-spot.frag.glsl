@@ -10,9 +10,8 @@ uniform float u_coneHalfAngle;
 uniform float u_coneDecay;
 
 void main() {
-  vec2 toPixel = v_world - u_light.xy;
-  float distance = length(toPixel);
-  float angle = distance > 0.0 ? acos(clamp(dot(toPixel / distance, u_direction), -1.0, 1.0)) : 0.0;
+  float distance = length(v_fromLight);
+  float angle = distance > 0.0 ? acos(clamp(dot(v_fromLight / distance, u_direction), -1.0, 1.0)) : 0.0;
   float inside = 1.0 - angle / max(u_coneHalfAngle, 1e-6);
   float cone = inside < 0.0 ? 0.0 : (u_coneDecay == 0.0 ? 1.0 : pow(inside, u_coneDecay));
   writeLight(distanceFalloff() * cone);

@@ -17,7 +17,8 @@ const COOKIE_UNIT = 2;
  */
 export class LightPass {
   readonly lightmap: RenderTarget;
-  private readonly programs: Record<LightKind, Program>;
+  /** Per kind of light, its program for a light without a shadow mask and for one with. */
+  private readonly programs: Record<LightKind, { unshadowed: Program; shadowed: Program }>;
   private readonly programList: readonly Program[];
   private readonly clearValue = new Float32Array(4);
   // Uniform values go through reused typed arrays: doubles passed to a GL call one by one are boxed
@@ -29,15 +30,19 @@ export class LightPass {
   private readonly coneDecay = new Float32Array(1);
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly shapes: LightShapes, format: TargetFormat, width: number, height: number) {
+    const programsOf = (name: string, fragment: { unshadowed: string; shadowed: string }) => ({
+      unshadowed: createProgram(gl, name, shaderSources.lightVertex, fragment.unshadowed),
+      shadowed: createProgram(gl, `${name} with shadows`, shaderSources.lightVertex, fragment.shadowed),
+    });
     this.programs = {
-      point: createProgram(gl, 'point light', shaderSources.lightVertex, shaderSources.lightPointFragment),
-      spot: createProgram(gl, 'spotlight', shaderSources.lightVertex, shaderSources.lightSpotFragment),
-      textured: createProgram(gl, 'textured light', shaderSources.lightVertex, shaderSources.lightTexturedFragment),
+      point: programsOf('point light', shaderSources.lightPointFragment),
+      spot: programsOf('spotlight', shaderSources.lightSpotFragment),
+      textured: programsOf('textured light', shaderSources.lightTexturedFragment),
     };
-    this.programList = Object.values(this.programs);
+    this.programList = Object.values(this.programs).flatMap(({ unshadowed, shadowed }) => [unshadowed, shadowed]);
     for (const program of this.programList) {
       gl.useProgram(program.handle);
-      gl.uniform1i(program.uniforms.u_shadowMask, MASK_UNIT);
+      if (program.uniforms.u_shadowMask) gl.uniform1i(program.uniforms.u_shadowMask, MASK_UNIT);
       if (program.uniforms.u_cookie) gl.uniform1i(program.uniforms.u_cookie, COOKIE_UNIT);
     }
     this.lightmap = new RenderTarget(gl, { format, linear: true }, width, height);
@@ -76,7 +81,8 @@ export class LightPass {
   render(draw: LightDraw, shadowMask: WebGLTexture | null): void {
     const gl = this.gl;
     const light = draw.light;
-    const program = this.programs[light.kind];
+    const programs = this.programs[light.kind];
+    const program = shadowMask ? programs.shadowed : programs.unshadowed;
     const uniforms = program.uniforms;
     this.lightmap.bind();
     gl.useProgram(program.handle);
@@ -84,9 +90,10 @@ export class LightPass {
     gl.uniform2fv(uniforms.u_quad, draw.quad);
     gl.uniform3fv(uniforms.u_lightColor, this.lightColor);
     gl.uniform3fv(uniforms.u_light, this.lightPositionAndRange);
-    gl.uniform1i(uniforms.u_hasShadowMask, shadowMask ? 1 : 0);
-    gl.activeTexture(gl.TEXTURE0 + MASK_UNIT);
-    gl.bindTexture(gl.TEXTURE_2D, shadowMask);
+    if (shadowMask) {
+      gl.activeTexture(gl.TEXTURE0 + MASK_UNIT);
+      gl.bindTexture(gl.TEXTURE_2D, shadowMask);
+    }
     if (light instanceof Spotlight) {
       this.direction[0] = Math.cos(light.rotation);
       this.direction[1] = Math.sin(light.rotation);

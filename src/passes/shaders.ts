@@ -29,6 +29,12 @@ function shadowStage(source: string, defines: Readonly<Record<string, string>> =
   return [...VARYING_POINT_COUNTS.map((count) => withDefines(resolved, { ...defines, VARYING_POINTS: count })), withDefines(resolved, defines)];
 }
 
+/** A light pass's fragment stage for a light without a shadow mask, and with one (`SHADOWED`). */
+function lightStage(source: string): { unshadowed: string; shadowed: string } {
+  const resolved = resolveIncludes(source, chunks);
+  return { unshadowed: resolved, shadowed: withDefines(resolved, { SHADOWED: '' }) };
+}
+
 /** The GLSL sources, inlined at build time, with their chunks resolved. */
 export const shaderSources = {
   compositeFragment,
@@ -37,9 +43,9 @@ export const shaderSources = {
   hullFragment,
   hullVertex,
   lightVertex,
-  lightPointFragment: resolveIncludes(lightPointFragment, chunks),
-  lightSpotFragment: resolveIncludes(lightSpotFragment, chunks),
-  lightTexturedFragment: resolveIncludes(lightTexturedFragment, chunks),
+  lightPointFragment: lightStage(lightPointFragment),
+  lightSpotFragment: lightStage(lightSpotFragment),
+  lightTexturedFragment: lightStage(lightTexturedFragment),
   rangeCutoutVertex: withDefines(lightVertex, { NEAREST_DEPTH: '' }),
   shadowCavityFragment: shadowStage(shadowCavityFragment),
   shadowConcaveFragment: shadowStage(shadowHullFragment, { CONCAVE_HULL: '' }),
