@@ -7,6 +7,8 @@ layout(location = 0) in vec2 a_corner; // unit quad, 0..1
 
 uniform mat4 u_viewProjection;
 uniform vec2 u_quad[3]; // the light's quad: a corner and the two edge vectors (Light.writeQuad)
+// The light pass's light; the range cut-out and the debug outline leave them unset and ignore the
+// varyings they feed.
 uniform vec3 u_light; // position xy, range
 uniform vec3 u_lightColor; // colour × intensity
 
