@@ -339,6 +339,7 @@ export class PenumbraRenderer {
     // A view-projection that flips orientation turns the light-facing edges' quads the other way.
     const mirrored = viewProjection[0] * viewProjection[5] - viewProjection[1] * viewProjection[4] < 0;
     resources.shadowMask.beginFrame(resources.buffers, viewProjection, mirrored);
+    resources.hull.beginFrame(viewProjection);
     resources.light.begin(this._ambient, viewProjection);
     gl.enable(gl.SCISSOR_TEST);
     for (let i = 0; i < plan.drawCount; i++) {
@@ -348,7 +349,7 @@ export class PenumbraRenderer {
       const shadowed = draw.hullCount > 0;
       if (shadowed) {
         resources.shadowMask.render(draw, resources.buffers);
-        resources.hull.render(draw, resources.buffers, viewProjection);
+        resources.hull.render(draw, resources.buffers);
       }
       resources.light.render(draw, shadowed ? resources.shadowMask.target.texture : null);
     }

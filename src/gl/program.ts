@@ -67,7 +67,9 @@ function uniformLocations(gl: WebGL2RenderingContext, program: WebGLProgram): Re
 
 /** `source` with a `#define name value` line for each entry, after its `#version` line. */
 export function withDefines(source: string, defines: Readonly<Record<string, string | number>>): string {
-  const lines = Object.entries(defines).map(([name, value]) => `#define ${name} ${value}`.trimEnd()).join('\n');
+  const entries = Object.entries(defines);
+  if (entries.length === 0) return source;
+  const lines = entries.map(([name, value]) => `#define ${name} ${value}`.trimEnd()).join('\n');
   const versionEnd = source.startsWith('#version') ? source.indexOf('\n') + 1 : 0;
   return `${source.slice(0, versionEnd)}${lines}\n${source.slice(versionEnd)}`;
 }

@@ -16,11 +16,16 @@ export class HullPass {
     this.program = createProgram(gl, 'hull', shaderSources.hullVertex, shaderSources.hullFragment);
   }
 
-  render(draw: LightDraw, buffers: GeometryBuffers, viewProjection: ReadonlyMat4): void {
+  /** Once a frame, before the lights: sets the view-projection (a program keeps its uniforms). */
+  beginFrame(viewProjection: ReadonlyMat4): void {
+    this.gl.useProgram(this.program.handle);
+    this.gl.uniformMatrix4fv(this.program.uniforms.u_viewProjection, false, viewProjection);
+  }
+
+  render(draw: LightDraw, buffers: GeometryBuffers): void {
     const gl = this.gl;
     const uniforms = this.program.uniforms;
     gl.useProgram(this.program.handle);
-    gl.uniformMatrix4fv(uniforms.u_viewProjection, false, viewProjection);
     if (draw.light.shadowType === ShadowType.Solid) {
       gl.enable(gl.BLEND);
       gl.blendEquation(gl.MAX);
