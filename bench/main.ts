@@ -15,6 +15,8 @@ interface BrowserResult {
   floor: Summary;
   /** Median frame ÷ median floor. */
   ratio: number;
+  /** With --bounds: median frames with trivial shadow shading and with no hulls, ÷ median floor (see bench/page/bounds.ts). */
+  bounds?: { trivialShading: number; noHulls: number };
 }
 
 interface SceneResult {
@@ -32,6 +34,8 @@ const cpuFrames = Number(args.get('frames') ?? 100);
 const browserFrames = Number(args.get('browser-frames') ?? 10);
 // The browser frames' lightmap resolution scale (the renderer's `lightmapScale`), for fill-bound comparisons.
 const lightmapScale = Number(args.get('lightmap-scale') ?? 1);
+// Also time the frame with trivial shadow shading and with no hulls: what faster shading could win.
+const withBounds = args.has('bounds');
 // run.mjs starts the bundle from the repository root.
 const root = process.cwd();
 /** Frames run in Chromium before the measured ones. */
@@ -57,18 +61,24 @@ if (!args.has('no-browser')) {
       await page.goto(server.url, { waitUntil: 'load' });
       await page.waitForFunction('window.penumbraBench');
       // Evaluated in the page: each function must name the page's API itself.
-      await page.evaluate((name, scale) => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.setup(name, scale), spec.name, lightmapScale);
-      const times: { frame: number[]; floor: number[] } = { frame: [], floor: [] };
+      await page.evaluate((name, scale, bounds) => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.setup(name, scale, bounds), spec.name, lightmapScale, withBounds);
+      const times: { frame: number[]; floor: number[]; trivialShading: number[]; noHulls: number[] } = { frame: [], floor: [], trivialShading: [], noHulls: [] };
       for (let frame = 0; frame < BROWSER_WARMUP + browserFrames; frame++) {
         const measured = await page.evaluate(() => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.frame());
         if (frame < BROWSER_WARMUP) continue;
         times.frame.push(measured.frame);
         times.floor.push(measured.floor);
+        if (measured.trivialShading !== undefined) times.trivialShading.push(measured.trivialShading);
+        if (measured.noHulls !== undefined) times.noHulls.push(measured.noHulls);
       }
       await page.evaluate(() => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.teardown());
       await page.close();
       const frame = summarize(times.frame), floor = summarize(times.floor);
       results[i].browser = { frame, floor, ratio: frame.median / floor.median };
+      if (withBounds) {
+        const ofFloor = (samples: number[]) => summarize(samples).median / floor.median;
+        results[i].browser.bounds = { trivialShading: ofFloor(times.trivialShading), noHulls: ofFloor(times.noHulls) };
+      }
       process.stderr.write(`  frame ${frame.median.toFixed(1)} ms, floor ${floor.median.toFixed(1)} ms\n`);
     }
   } finally {
@@ -90,6 +100,7 @@ function printTable(rows: SceneResult[], machine: string): void {
   const table = [[
     'scene', 'lights', 'hulls', 'drawn', 'edges', 'node JS ms (med / p95)', 'in GL ms (med)', 'GL calls', 'heap B/frame',
     'chromium frame ms (med / p95)', 'floor ms (med / p95)', 'frame ÷ floor',
+    ...(withBounds ? ['trivial shading ÷ floor', 'no hulls ÷ floor'] : []),
   ]];
   for (const row of rows) {
     table.push([
@@ -97,6 +108,7 @@ function printTable(rows: SceneResult[], machine: string): void {
       pair(row.node?.js), row.node ? ms(row.node.gl.median) : '–', row.node ? row.node.glCalls.toFixed(0) : '–',
       row.node?.heapBytesPerFrame == null ? '–' : row.node.heapBytesPerFrame.toFixed(0),
       pair(row.browser?.frame), pair(row.browser?.floor), row.browser ? row.browser.ratio.toFixed(2) : '–',
+      ...(withBounds ? [row.browser?.bounds?.trivialShading.toFixed(2) ?? '–', row.browser?.bounds?.noHulls.toFixed(2) ?? '–'] : []),
     ]);
   }
   const widths = table[0].map((_, column) => Math.max(...table.map((line) => line[column].length)));

@@ -2,7 +2,7 @@
 // `npm run bench`: bundles the runner (for Node) and the benchmark page (for Chromium) with Vite,
 // then runs the runner with an X display (headless-gl needs one), exposed GC and a young
 // generation large enough to measure per-frame allocation. Arguments are passed on:
-// --scenes=S1,S2  --frames=100  --browser-frames=10  --lightmap-scale=0.5  --no-node  --no-browser
+// --scenes=S1,S2  --frames=100  --browser-frames=10  --lightmap-scale=0.5  --bounds  --no-node  --no-browser
 import { spawnSync } from 'node:child_process';
 import { resolve } from 'node:path';
 import { build } from 'vite';
