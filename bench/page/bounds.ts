@@ -30,11 +30,15 @@ function withConstantMask(source: string): string {
 
 /**
  * `gl` as a renderer built on it sees it: the same context, except that the shadow shading stages'
- * sources are swapped for constant ones when they are compiled.
+ * sources are swapped for constant ones when they are compiled (and added to `swapped`).
  */
-function withTrivialShading(gl: WebGL2RenderingContext): WebGL2RenderingContext {
+function withTrivialShading(gl: WebGL2RenderingContext, swapped: Set<string>): WebGL2RenderingContext {
   const methods = new Map<PropertyKey, unknown>();
-  const shaderSource = (shader: WebGLShader, source: string) => gl.shaderSource(shader, SHADING_STAGES.has(source) ? withConstantMask(source) : source);
+  const shaderSource = (shader: WebGLShader, source: string) => {
+    const isShading = SHADING_STAGES.has(source);
+    if (isShading) swapped.add(source);
+    gl.shaderSource(shader, isShading ? withConstantMask(source) : source);
+  };
   return new Proxy(gl, {
     get(target, key) {
       if (key === 'shaderSource') return shaderSource;
@@ -48,7 +52,10 @@ function withTrivialShading(gl: WebGL2RenderingContext): WebGL2RenderingContext 
 }
 
 export function createFrameBounds(gl: WebGL2RenderingContext, options: PenumbraRendererOptions, lights: readonly Light[], hulls: readonly Hull[]): FrameBounds {
-  const trivialShading = new PenumbraRenderer(withTrivialShading(gl), options);
+  const swapped = new Set<string>();
+  const trivialShading = new PenumbraRenderer(withTrivialShading(gl, swapped), options);
+  // The renderer links its programs when it is built; a stage it no longer uses would make this bound the full frame.
+  if (swapped.size !== SHADING_STAGES.size) throw new Error(`bench bounds: ${swapped.size} of the ${SHADING_STAGES.size} shadow shading stages were compiled`);
   const noHulls = new PenumbraRenderer(gl, options);
   for (const light of lights) {
     trivialShading.addLight(light);
