@@ -7,24 +7,26 @@ layout(location = 0) in vec2 a_corner; // unit quad, 0..1
 
 uniform mat4 u_viewProjection;
 uniform vec2 u_quad[3]; // the light's quad: a corner and the two edge vectors (Light.writeQuad)
-// The light pass's light; the range cut-out and the debug outline leave them unset and ignore the
-// varyings they feed.
+// The light pass's light; the debug outline leaves them unset and ignores the varyings they feed.
 uniform vec3 u_light; // position xy, range
 uniform vec3 u_lightColor; // colour × intensity
+uniform vec4 u_shadow; // position xy, disk radius, row of the light's shadow bins
+uniform float u_illuminated; // 1: the light lights the hulls themselves, 0: they stay dark
 
 out vec2 v_fromLight;
 out vec2 v_uv;
+out vec2 v_world;
 flat out vec3 v_color;
+flat out vec4 v_shadow;
+flat out float v_illuminated;
 
 void main() {
   vec2 world = u_quad[0] + a_corner.x * u_quad[1] + a_corner.y * u_quad[2];
   v_fromLight = (world - u_light.xy) / u_light.z;
   v_uv = a_corner;
+  v_world = world;
   v_color = u_lightColor;
+  v_shadow = u_shadow;
+  v_illuminated = u_illuminated;
   gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
-#ifdef NEAREST_DEPTH
-  // The shadow mask's range cut-out: as near as the umbrae, so the shadow quads behind it fail the
-  // depth test (see ShadowMaskPass).
-  gl_Position.z = -gl_Position.w;
-#endif
 }

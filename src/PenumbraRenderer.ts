@@ -7,10 +7,8 @@ import { RenderTarget, type TargetFormat } from './gl/RenderTarget';
 import { LightShapes } from './gl/LightShapes';
 import { CompositePass } from './passes/CompositePass';
 import { DebugPass } from './passes/DebugPass';
-import { GeometryBuffers } from './passes/GeometryBuffers';
-import { HullPass } from './passes/HullPass';
 import { LightPass } from './passes/LightPass';
-import { ShadowMaskPass } from './passes/ShadowMaskPass';
+import { ShadowTextures } from './passes/ShadowTextures';
 import { Hull } from './scene/Hull';
 import { Light } from './scene/lights';
 import { assertFinite, copyColor, type ColorLike } from './scene/validate';
@@ -56,10 +54,8 @@ export interface FrameStats {
 /** GL objects of the renderer, rebuilt together after a context loss. */
 interface Resources {
   shapes: LightShapes;
-  buffers: GeometryBuffers;
+  shadows: ShadowTextures;
   scene: RenderTarget;
-  shadowMask: ShadowMaskPass;
-  hull: HullPass;
   light: LightPass;
   composite: CompositePass;
   debug: DebugPass;
@@ -218,7 +214,6 @@ export class PenumbraRenderer {
     if (!resources || this.contextLost) return;
     this.withHostState(() => {
       resources.scene.resize(this.width, this.height);
-      resources.shadowMask.resize(this.lightmapWidth, this.lightmapHeight);
       resources.light.resize(this.lightmapWidth, this.lightmapHeight);
     });
   }
@@ -268,9 +263,7 @@ export class PenumbraRenderer {
       this.bindCompositeTarget();
       resources.composite.render(resources.scene.texture, resources.light.lightmap.texture);
       if (this.debug) {
-        const v = this.compositeViewport;
-        resources.debug.render(this.plan.draws, this.plan.drawCount, resources.buffers, this._viewProjection,
-          v[2] / this.lightmapWidth, v[3] / this.lightmapHeight, v[0], v[1]);
+        resources.debug.render(this.plan.draws, this.plan.drawCount, this.geometry.recordCount, this._viewProjection);
       }
     } finally {
       this.hostState.restore();
@@ -330,29 +323,13 @@ export class PenumbraRenderer {
 
   private renderLightmapInto(resources: Resources): void {
     const start = this.measureCpuTime ? performance.now() : 0;
-    const gl = this.gl;
     const plan = this.plan;
     const viewProjection = this._viewProjection;
     this.geometry.update(this._hulls);
     plan.build(this._lights, this._hulls, this.geometry, viewProjection, this.lightmapWidth, this.lightmapHeight);
-    resources.buffers.upload(this.geometry, plan);
-    // A view-projection that flips orientation turns the light-facing edges' quads the other way.
-    const mirrored = viewProjection[0] * viewProjection[5] - viewProjection[1] * viewProjection[4] < 0;
-    resources.shadowMask.beginFrame(resources.buffers, viewProjection, mirrored);
-    resources.hull.beginFrame(viewProjection);
+    resources.shadows.upload(this.geometry, plan.bins);
     resources.light.begin(this._ambient, viewProjection);
-    gl.enable(gl.SCISSOR_TEST);
-    for (let i = 0; i < plan.drawCount; i++) {
-      const draw = plan.draws[i];
-      const s = draw.scissor;
-      gl.scissor(s[0], s[1], s[2], s[3]);
-      const shadowed = draw.hullCount > 0;
-      if (shadowed) {
-        resources.shadowMask.render(draw, resources.buffers);
-        resources.hull.render(draw, resources.buffers);
-      }
-      resources.light.render(draw, shadowed ? resources.shadowMask.target.texture : null);
-    }
+    for (let i = 0; i < plan.drawCount; i++) resources.light.render(plan.draws[i]);
     this.updateStats(this.measureCpuTime ? performance.now() - start : 0);
   }
 
@@ -419,11 +396,8 @@ export class PenumbraRenderer {
       const shapes = new LightShapes(gl);
       this.resources = {
         shapes,
-        buffers: new GeometryBuffers(gl),
+        shadows: new ShadowTextures(gl),
         scene: new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, this.width, this.height),
-        // The mask is read texel for texel by the light pass: it has the lightmap's size.
-        shadowMask: new ShadowMaskPass(gl, shapes, this.lightmapWidth, this.lightmapHeight),
-        hull: new HullPass(gl),
         light: new LightPass(gl, shapes, this.lightmapFormat, this.lightmapWidth, this.lightmapHeight),
         composite: new CompositePass(gl),
         debug: new DebugPass(gl, shapes),

@@ -1,34 +1,24 @@
 import type { Hull } from '../scene/Hull';
+import { RECORD_FLOATS, RECORD_POINTS, RECORDS_PER_ROW } from './shadowLayout';
 
 /**
- * Floats per point: world x, y, then the first point and point count of its hull. Edge i runs from
- * point i to the next point of its hull, so one record per point is all the shadow pass reads: it
- * finds a caster's records (an edge's start and the next point, or all of a hull's points) by number.
- */
-export const POINT_FLOATS = 4;
-
-/** Point capacity grows in whole rows of this many points, so the records fill a texture's rows exactly. */
-export const POINT_ROW = 1024;
-
-/**
- * The world-space data of every hull, packed for the GPU and independent of any light:
- * - `points`: each hull's world points, contiguous per hull, as {@link POINT_FLOATS} records that
- *   also carry the hull's point range; read by the shadow-mask pass (as a texture: the light is a
- *   uniform, so this changes only when a hull does) and the hull pass (as vertices);
- * - `triangleIndices`: each hull's triangulation as global point indices.
+ * The world-space data of every hull, packed for the GPU and independent of any light: each hull's
+ * convex records (see shadowLayout), contiguous per hull, read by the light pass as a texture (the
+ * light is a uniform, so this changes only when a hull does).
  *
  * Hull data is written lazily: `update` only refreshes the coarse bounds of hulls that changed
- * (constant time each) into flat arrays the hull grid reads without touching the hulls, and a hull is transformed and written by {@link ShadowGeometry.prepare} when some
- * light finds it in range, so hulls far from every light cost (almost) nothing. Only prepared
- * hulls' data is meaningful, and only they are drawn. Adding, removing or reshaping a hull
- * re-lays out everything.
+ * (constant time each) into flat arrays the hull grid reads without touching the hulls, and a hull
+ * is transformed and written by {@link ShadowGeometry.prepare} when some light finds it in range,
+ * so hulls far from every light cost (almost) nothing. Only prepared hulls' data is meaningful, and
+ * only they are drawn. Adding, removing or reshaping a hull re-lays out everything.
  */
 export class ShadowGeometry {
-  points = new Float32Array(0);
-  triangleIndices = new Uint32Array(0);
-  pointCount = 0;
-  triangleIndexCount = 0;
-  /** Per row of {@link POINT_ROW} points: 1 when a hull written since the last `update` has points in it. */
+  /** {@link RECORD_FLOATS} floats per record, whole rows of {@link RECORDS_PER_ROW} records. */
+  records = new Float32Array(0);
+  /** Per record: its number of points (3..{@link RECORD_POINTS}). */
+  recordPointCounts = new Uint8Array(0);
+  recordCount = 0;
+  /** Per row of {@link RECORDS_PER_ROW} records: 1 when a hull written since the last `update` has records in it. */
   dirtyRows = new Uint8Array(0);
   /** Per hull, `Hull.coarseBounds` as of the last update: `[minX, minY, maxX, maxY]` at `4 × index`. */
   coarseBounds = new Float64Array(0);
@@ -36,11 +26,9 @@ export class ShadowGeometry {
   castsShadow = new Uint8Array(0);
   /** Per hull: 1 when it is convex (and valid). */
   convex = new Uint8Array(0);
-  /** Per hull: where its data sits in `points` (first point = first edge) and `triangleIndices`. */
-  firstPoints = new Int32Array(0);
-  pointCounts = new Int32Array(0);
-  firstTriangleIndices = new Int32Array(0);
-  triangleIndexCounts = new Int32Array(0);
+  /** Per hull: where its records sit in `records`, and how many. */
+  firstRecords = new Int32Array(0);
+  recordCounts = new Int32Array(0);
   /** Per hull, its exact world bounds `[minX, minY, maxX, maxY]` at `4 × index`, as of its last {@link ShadowGeometry.prepare}. */
   worldBounds = new Float64Array(0);
   /** Edges of all valid hulls. */
@@ -84,8 +72,8 @@ export class ShadowGeometry {
     const hull = this.layoutHulls[index];
     hull.updateWorld();
     this.writeHull(hull, index);
-    const first = this.firstPoints[index];
-    this.dirtyRows.fill(1, Math.floor(first / POINT_ROW), Math.floor((first + this.pointCounts[index] - 1) / POINT_ROW) + 1);
+    const first = this.firstRecords[index];
+    this.dirtyRows.fill(1, Math.floor(first / RECORDS_PER_ROW), Math.floor((first + this.recordCounts[index] - 1) / RECORDS_PER_ROW) + 1);
   }
 
   /** Refreshes the flat arrays of changed hulls; false when the list or a hull's shape no longer fits the layout. */
@@ -95,7 +83,7 @@ export class ShadowGeometry {
       const hull = hulls[i];
       if (hull !== layout[i]) return false;
       if (hull.version === this.refreshedVersions[i]) continue;
-      if (this.pointCounts[i] !== hull.edgeCount || this.triangleIndexCounts[i] !== hull.worldTriangles.length) return false;
+      if (this.recordCounts[i] !== recordCountOf(hull)) return false;
       this.refreshHull(hull, i);
     }
     return true;
@@ -119,24 +107,19 @@ export class ShadowGeometry {
   private layOut(hulls: readonly Hull[]): void {
     this.layoutHulls = hulls.slice();
     this.allocatePerHull(hulls.length);
-    let points = 0, triangleIndices = 0;
+    let records = 0;
     for (let i = 0; i < hulls.length; i++) {
-      this.firstPoints[i] = points;
-      this.pointCounts[i] = hulls[i].edgeCount;
-      this.firstTriangleIndices[i] = triangleIndices;
-      this.triangleIndexCounts[i] = hulls[i].worldTriangles.length;
-      points += this.pointCounts[i];
-      triangleIndices += this.triangleIndexCounts[i];
+      this.firstRecords[i] = records;
+      this.recordCounts[i] = recordCountOf(hulls[i]);
+      records += this.recordCounts[i];
     }
-    this.pointCount = points;
-    this.triangleIndexCount = triangleIndices;
-    if (this.points.length < points * POINT_FLOATS) {
-      const wanted = Math.max(points, Math.ceil(this.points.length / POINT_FLOATS * 1.5));
-      this.points = new Float32Array(Math.ceil(wanted / POINT_ROW) * POINT_ROW * POINT_FLOATS);
-      this.dirtyRows = new Uint8Array(this.points.length / (POINT_ROW * POINT_FLOATS));
-    }
-    if (this.triangleIndices.length < triangleIndices) {
-      this.triangleIndices = new Uint32Array(Math.max(triangleIndices, Math.ceil(this.triangleIndices.length * 1.5)));
+    this.recordCount = records;
+    if (this.recordPointCounts.length < records) {
+      const wanted = Math.max(records, Math.ceil(this.recordPointCounts.length * 1.5));
+      const rows = Math.ceil(wanted / RECORDS_PER_ROW);
+      this.records = new Float32Array(rows * RECORDS_PER_ROW * RECORD_FLOATS);
+      this.recordPointCounts = new Uint8Array(rows * RECORDS_PER_ROW);
+      this.dirtyRows = new Uint8Array(rows);
     }
   }
 
@@ -148,10 +131,8 @@ export class ShadowGeometry {
       this.worldBounds = new Float64Array(4 * capacity);
       this.castsShadow = new Uint8Array(capacity);
       this.convex = new Uint8Array(capacity);
-      this.firstPoints = new Int32Array(capacity);
-      this.pointCounts = new Int32Array(capacity);
-      this.firstTriangleIndices = new Int32Array(capacity);
-      this.triangleIndexCounts = new Int32Array(capacity);
+      this.firstRecords = new Int32Array(capacity);
+      this.recordCounts = new Int32Array(capacity);
       this.refreshedVersions = new Float64Array(capacity);
       this.preparedVersions = new Float64Array(capacity);
       this.countedEdges = new Int32Array(capacity);
@@ -162,19 +143,58 @@ export class ShadowGeometry {
     this.validEdgeCount = 0;
   }
 
+  /** Writes the hull's records (see {@link recordCountOf}) and copies its world bounds. */
   private writeHull(hull: Hull, index: number): void {
-    const world = hull.worldPoints;
-    const points = this.points;
-    const first = this.firstPoints[index], count = this.pointCounts[index];
-    for (let i = 0, k = first * POINT_FLOATS; i < count; i++, k += POINT_FLOATS) {
-      points[k] = world[2 * i];
-      points[k + 1] = world[2 * i + 1];
-      points[k + 2] = first;
-      points[k + 3] = count;
+    const world = hull.worldPoints, count = hull.edgeCount;
+    let record = this.firstRecords[index];
+    if (hull.convex) {
+      // A fan: the first record takes points 0..7, each next one point 0, the previous record's last
+      // point and up to RECORD_POINTS - 2 new ones.
+      this.startRecord(record);
+      for (let i = 0; i < Math.min(count, RECORD_POINTS); i++) this.addPoint(record, world, i);
+      for (let last = RECORD_POINTS - 1; last < count - 1; last += RECORD_POINTS - 2) {
+        this.startRecord(++record);
+        this.addPoint(record, world, 0);
+        for (let i = last; i < Math.min(count, last + RECORD_POINTS - 1); i++) this.addPoint(record, world, i);
+      }
+    } else {
+      const triangles = hull.worldTriangles;
+      for (let k = 0; k < triangles.length; k += 3, record++) {
+        this.startRecord(record);
+        this.addPoint(record, world, triangles[k]);
+        // Records have positive area: the triangulation keeps the hull's winding, but say so here.
+        const flip = signedAreaOfTriangle(world, triangles[k], triangles[k + 1], triangles[k + 2]) < 0;
+        this.addPoint(record, world, triangles[k + (flip ? 2 : 1)]);
+        this.addPoint(record, world, triangles[k + (flip ? 1 : 2)]);
+      }
     }
-    const triangles = hull.worldTriangles, firstIndex = this.firstTriangleIndices[index];
-    for (let k = 0; k < triangles.length; k++) this.triangleIndices[firstIndex + k] = first + triangles[k];
     const from = hull.worldBounds, to = this.worldBounds;
     for (let k = 0; k < 4; k++) to[4 * index + k] = from[k];
   }
+
+  private startRecord(record: number): void {
+    this.recordPointCounts[record] = 0;
+  }
+
+  /** Appends world point `point` to `record`, repeating it over the record's unused slots. */
+  private addPoint(record: number, world: Float32Array, point: number): void {
+    const slot = this.recordPointCounts[record]++;
+    const x = world[2 * point], y = world[2 * point + 1], records = this.records;
+    for (let k = record * RECORD_FLOATS + 2 * slot, end = (record + 1) * RECORD_FLOATS; k < end; k += 2) {
+      records[k] = x;
+      records[k + 1] = y;
+    }
+  }
+}
+
+/** Records of a hull: one per {@link RECORD_POINTS}-point fan piece of a convex hull, one per triangle of a concave one. */
+export function recordCountOf(hull: Hull): number {
+  if (!hull.valid) return 0;
+  if (hull.convex) return 1 + Math.max(0, Math.ceil((hull.edgeCount - RECORD_POINTS) / (RECORD_POINTS - 2)));
+  return hull.worldTriangles.length / 3;
+}
+
+function signedAreaOfTriangle(world: Float32Array, a: number, b: number, c: number): number {
+  const ax = world[2 * a], ay = world[2 * a + 1];
+  return (world[2 * b] - ax) * (world[2 * c + 1] - ay) - (world[2 * b + 1] - ay) * (world[2 * c] - ax);
 }

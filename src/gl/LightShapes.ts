@@ -4,17 +4,12 @@
  */
 const DISK_SIDES = 16;
 
-/** Distance from the quad's centre to the sides of the ring's outer polygon: beyond the quad's corners (√2 / 2). */
-const CUTOUT_OUTER_RADIUS = 0.75;
-
 /**
  * The shapes a light is drawn with, in the unit square 0..1 of its quad (see `Light.writeQuad`), on
  * attribute 0 of one vertex array:
  * - the quad itself, its four corners in fan order (a TRIANGLE_FAN or a LINE_LOOP);
  * - a polygon circumscribing the disk inscribed in the quad (a TRIANGLE_FAN): where a light
- *   confined to its range adds anything;
- * - the ring between that polygon and a larger one that covers the quad (a TRIANGLE_STRIP): the
- *   quad's pixels outside the range, cut out of the light's shadow work.
+ *   confined to its range adds anything.
  */
 export class LightShapes {
   private readonly vertexArray: WebGLVertexArrayObject;
@@ -43,12 +38,6 @@ export class LightShapes {
     this.gl.drawArrays(this.gl.TRIANGLE_FAN, QUAD_VERTICES, DISK_SIDES);
   }
 
-  /** Fills the quad outside the polygon around the range disk (and beyond the quad: scissor it). */
-  drawOutsideDisk(): void {
-    this.gl.bindVertexArray(this.vertexArray);
-    this.gl.drawArrays(this.gl.TRIANGLE_STRIP, QUAD_VERTICES + DISK_SIDES, RING_VERTICES);
-  }
-
   dispose(): void {
     this.gl.deleteVertexArray(this.vertexArray);
     this.gl.deleteBuffer(this.buffer);
@@ -56,7 +45,6 @@ export class LightShapes {
 }
 
 const QUAD_VERTICES = 4;
-const RING_VERTICES = 2 * DISK_SIDES + 2;
 
 function shapeVertices(): Float32Array {
   // A regular polygon's sides are 1 / cos(π / n) times its vertices' distance closer to its centre.
@@ -67,6 +55,5 @@ function shapeVertices(): Float32Array {
   };
   const vertices: number[] = [0, 0, 1, 0, 1, 1, 0, 1];
   for (let i = 0; i < DISK_SIDES; i++) vertices.push(...polygon(0.5, i));
-  for (let i = 0; i <= DISK_SIDES; i++) vertices.push(...polygon(0.5, i), ...polygon(CUTOUT_OUTER_RADIUS, i));
   return new Float32Array(vertices);
 }

@@ -3,21 +3,22 @@ import type { LightDraw } from '../geometry/FramePlan';
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import type { LightShapes } from '../gl/LightShapes';
-import { Spotlight, TexturedLight, type LightKind } from '../scene/lights';
+import { ShadowType, Spotlight, TexturedLight, type LightKind } from '../scene/lights';
 import { shaderSources } from './shaders';
+import { ShadowUnits } from './ShadowTextures';
 
-const MASK_UNIT = 1;
 const COOKIE_UNIT = 2;
 
 /**
  * Light pass: owns the lightmap (RGBA16F where the context can render to it, so overlapping lights
  * go above 1), clears it to the ambient colour, and adds each light weighted by the visible
- * fraction of its disk read from the shadow mask. A light confined to its range is drawn as the
- * polygon around its range disk, the others as their quad.
+ * fraction of its disk, which each fragment of a light with hulls in range computes from the
+ * shadow textures (see the chunk shadow-visibility): one fragment per light pixel. A light
+ * confined to its range is drawn as the polygon around its range disk, the others as their quad.
  */
 export class LightPass {
   readonly lightmap: RenderTarget;
-  /** Per kind of light, its program for a light without a shadow mask and for one with. */
+  /** Per kind of light, its program for a light with no hull in range and for one with some. */
   private readonly programs: Record<LightKind, { unshadowed: Program; shadowed: Program }>;
   private readonly programList: readonly Program[];
   private readonly clearValue = new Float32Array(4);
@@ -25,6 +26,7 @@ export class LightPass {
   // on the heap. (One array per uniform: headless-gl lacks the srcOffset/srcLength overloads.)
   private readonly lightColor = new Float32Array(3);
   private readonly lightPositionAndRange = new Float32Array(3);
+  private readonly shadow = new Float32Array(4);
   private readonly direction = new Float32Array(2);
   private readonly coneHalfAngle = new Float32Array(1);
   private readonly coneDecay = new Float32Array(1);
@@ -42,8 +44,11 @@ export class LightPass {
     this.programList = Object.values(this.programs).flatMap(({ unshadowed, shadowed }) => [unshadowed, shadowed]);
     for (const program of this.programList) {
       gl.useProgram(program.handle);
-      if (program.uniforms.u_shadowMask) gl.uniform1i(program.uniforms.u_shadowMask, MASK_UNIT);
-      if (program.uniforms.u_cookie) gl.uniform1i(program.uniforms.u_cookie, COOKIE_UNIT);
+      const uniforms = program.uniforms;
+      if (uniforms.u_records) gl.uniform1i(uniforms.u_records, ShadowUnits.records);
+      if (uniforms.u_bins) gl.uniform1i(uniforms.u_bins, ShadowUnits.bins);
+      if (uniforms.u_entries) gl.uniform1i(uniforms.u_entries, ShadowUnits.entries);
+      if (uniforms.u_cookie) gl.uniform1i(uniforms.u_cookie, COOKIE_UNIT);
     }
     this.lightmap = new RenderTarget(gl, { format, linear: true }, width, height);
   }
@@ -54,8 +59,8 @@ export class LightPass {
 
   /**
    * Once a frame, before the lights: sets the view-projection, binds the lightmap and clears it to
-   * the ambient colour (alpha 1). Disables the scissor test and sets additive blend factors: the
-   * light loop's other passes blend with MAX, which ignores them.
+   * the ambient colour (alpha 1), and sets additive blending. The shadow textures must be bound on
+   * their units (`ShadowTextures.upload`).
    */
   begin(ambient: readonly [number, number, number], viewProjection: ReadonlyMat4): void {
     const gl = this.gl;
@@ -65,9 +70,10 @@ export class LightPass {
       gl.useProgram(programs[i].handle);
       gl.uniformMatrix4fv(programs[i].uniforms.u_viewProjection, false, viewProjection);
     }
+    gl.enable(gl.BLEND);
+    gl.blendEquation(gl.FUNC_ADD);
     gl.blendFunc(gl.ONE, gl.ONE);
     this.lightmap.bind();
-    gl.disable(gl.SCISSOR_TEST);
     const clear = this.clearValue;
     clear[0] = ambient[0];
     clear[1] = ambient[1];
@@ -77,22 +83,22 @@ export class LightPass {
     gl.clearBufferfv(gl.COLOR, 0, clear);
   }
 
-  /** Adds one light into the lightmap; `shadowMask` is null for a light with nothing to shadow it. */
-  render(draw: LightDraw, shadowMask: WebGLTexture | null): void {
+  /** Adds one light into the lightmap, shadowed by the hulls in its bins when it has any in range. */
+  render(draw: LightDraw): void {
     const gl = this.gl;
     const light = draw.light;
     const programs = this.programs[light.kind];
-    const program = shadowMask ? programs.shadowed : programs.unshadowed;
+    const shadowed = draw.hullCount > 0;
+    const program = shadowed ? programs.shadowed : programs.unshadowed;
     const uniforms = program.uniforms;
-    this.lightmap.bind();
     gl.useProgram(program.handle);
     this.writeLightUniforms(draw);
     gl.uniform2fv(uniforms.u_quad, draw.quad);
     gl.uniform3fv(uniforms.u_lightColor, this.lightColor);
     gl.uniform3fv(uniforms.u_light, this.lightPositionAndRange);
-    if (shadowMask) {
-      gl.activeTexture(gl.TEXTURE0 + MASK_UNIT);
-      gl.bindTexture(gl.TEXTURE_2D, shadowMask);
+    if (shadowed) {
+      gl.uniform4fv(uniforms.u_shadow, this.shadow);
+      gl.uniform1f(uniforms.u_illuminated, light.shadowType === ShadowType.Illuminated ? 1 : 0);
     }
     if (light instanceof Spotlight) {
       this.direction[0] = Math.cos(light.rotation);
@@ -106,13 +112,11 @@ export class LightPass {
       gl.activeTexture(gl.TEXTURE0 + COOKIE_UNIT);
       gl.bindTexture(gl.TEXTURE_2D, light.texture);
     }
-    gl.enable(gl.BLEND);
-    gl.blendEquation(gl.FUNC_ADD);
     if (light.isConfinedToRangeDisk()) this.shapes.drawDisk();
     else this.shapes.drawQuad(gl.TRIANGLE_FAN);
   }
 
-  /** Copies the light's colour, position and range into the uniform arrays. */
+  /** Copies the light's colour, position, range and shadow values into the uniform arrays. */
   private writeLightUniforms(draw: LightDraw): void {
     const light = draw.light;
     const color = light.color, intensity = light.intensity;
@@ -122,6 +126,10 @@ export class LightPass {
     this.lightPositionAndRange[0] = light.position[0];
     this.lightPositionAndRange[1] = light.position[1];
     this.lightPositionAndRange[2] = light.range;
+    this.shadow[0] = light.position[0];
+    this.shadow[1] = light.position[1];
+    this.shadow[2] = light.radius;
+    this.shadow[3] = draw.binRow;
   }
 
   dispose(): void {

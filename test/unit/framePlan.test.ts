@@ -1,6 +1,8 @@
 import { mat4 } from 'gl-matrix';
 import { describe, expect, it } from 'vitest';
-import { FramePlan, sizeClassOf } from '../../src/geometry/FramePlan';
+import { FramePlan } from '../../src/geometry/FramePlan';
+import { signedArea2 } from '../../src/geometry/polygon';
+import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, RECORD_FLOATS, RECORD_TEXELS } from '../../src/geometry/shadowLayout';
 import { ShadowGeometry } from '../../src/geometry/ShadowGeometry';
 import { Hull, PointLight, TexturedLight, type Light } from '../../src/index';
 
@@ -82,50 +84,65 @@ describe('FramePlan culling', () => {
   });
 });
 
-describe('FramePlan shadow casters', () => {
-  const casters = (framePlan: FramePlan) => {
-    const draw = framePlan.draws[0];
-    return Array.from(framePlan.casters.subarray(draw.casterOffset, draw.casterOffset + draw.casterCount));
-  };
+/** The entries of bin `bin` of the first draw's light: `[record, point count, distance]` each. */
+function binEntries(framePlan: FramePlan, bin: number): number[][] {
+  const { bins, entries } = framePlan.bins;
+  const b = (framePlan.draws[0].binRow * BIN_COUNT + bin) * BIN_FLOATS;
+  const out: number[][] = [];
+  for (let e = bins[b]; e < bins[b] + bins[b + 1]; e++) {
+    out.push([entries[e * ENTRY_FLOATS] / RECORD_TEXELS, entries[e * ENTRY_FLOATS + 1], entries[e * ENTRY_FLOATS + 2]]);
+  }
+  return out;
+}
 
-  it('makes a convex hull clear of the light disk one caster, numbered -1 - its first point', () => {
-    const far = new Hull([[80, 40], [90, 40], [90, 50], [80, 50]]);
-    expect(casters(plan([new PointLight({ position: [30, 45], range: 100, radius: 10 })], [far]))).toEqual([-1]);
+/** The bin of the direction from the light at `from` to `to`. */
+function binOf(from: [number, number], to: [number, number]): number {
+  return Math.floor(((Math.atan2(to[1] - from[1], to[0] - from[0]) + Math.PI) / (2 * Math.PI)) * BIN_COUNT);
+}
+
+describe('FramePlan shadow bins', () => {
+  const box = (x: number, y: number, w = 10, h = 10) => new Hull([[x, y], [x + w, y], [x + w, y + h], [x, y + h]]);
+
+  it('files a hull in the bins of its direction only, with its exact distance from the light centre', () => {
+    const centre: [number, number] = [30, 45];
+    const framePlan = plan([new PointLight({ position: centre, range: 100, radius: 2 })], [box(80, 40)]);
+    expect(binEntries(framePlan, binOf(centre, [85, 45]))).toEqual([[0, 4, 50]]);
+    expect(binEntries(framePlan, binOf(centre, [30, 100]))).toEqual([]);
+    expect(binEntries(framePlan, binOf(centre, [-10, 45]))).toEqual([]);
   });
 
-  it('puts convex regions first, then concave ones, then their cavities, then the edges of hulls near the disk', () => {
+  it('widens a hull\'s bins by the angle the disk subtends from it: its penumbra', () => {
+    const centre: [number, number] = [0, 50];
+    // The box spans ±5 units at 50 (±5.7°); a disk of radius 20 widens that by asin(20 / 50) = 23.6°.
+    const framePlan = plan([new PointLight({ position: centre, range: 150, radius: 20 })], [box(50, 45)]);
+    const at = (degrees: number) => binEntries(framePlan, binOf(centre, [Math.cos((degrees * Math.PI) / 180), 50 + Math.sin((degrees * Math.PI) / 180)])).length;
+    expect([at(0), at(25), at(-25), at(28), at(-28)]).toEqual([1, 1, 1, 1, 1]);
+    expect([at(33), at(-33), at(90)]).toEqual([0, 0, 0]);
+  });
+
+  it('lists each bin nearest first, and files a hull that reaches into the disk in every bin', () => {
+    const centre: [number, number] = [50, 50];
+    const touching = box(53, 40, 10, 20);
+    const framePlan = plan([new PointLight({ position: centre, range: 150, radius: 5 })], [box(120, 45), box(90, 45), touching]);
+    expect(binEntries(framePlan, binOf(centre, [100, 50])).map(([record, , distance]) => [record, distance])).toEqual([[2, 3], [1, 40], [0, 70]]);
+    for (const bin of [0, 64, 128, 200]) expect(binEntries(framePlan, bin)[0]).toEqual([2, 4, 3]);
+  });
+
+  it('makes a concave hull its triangles and a convex hull of more than 8 points a fan of records', () => {
     const u = new Hull([[80, 30], [100, 30], [100, 60], [80, 60], [80, 55], [95, 55], [95, 35], [80, 35]]);
-    const near = new Hull([[40, 40], [50, 40], [50, 50], [40, 50]]);
-    const far = new Hull([[80, 70], [90, 70], [90, 80], [80, 80]]);
-    const light = new PointLight({ position: [30, 45], range: 100, radius: 10 });
-    const framePlan = plan([light], [u, near, far]);
-    // Points: u 0–7, near 8–11, far 12–15.
-    expect(casters(framePlan)).toEqual([-13, -1, -1, 8, 9, 10, 11]);
-    // Runs: convex regions, concave regions, cavities, edges; each of up to 4 points, up to 8, any size.
-    expect(Array.from(framePlan.draws[0].runEnds)).toEqual([1, 1, 1, 1, 2, 2, 2, 3, 3, 7, 7, 7]);
-    expect(framePlan.draws[0].regionCasterCount).toBe(2);
-    light.radius = 1;
-    expect(casters(plan([light], [near]))).toEqual([-1]);
-  });
-
-  it('sorts the hulls of each kind by size class: up to 4 points, up to 8, more', () => {
-    expect([3, 4, 5, 8, 9, 100].map(sizeClassOf)).toEqual([0, 0, 1, 1, 2, 2]);
-    const light = new PointLight({ position: [0, 0], range: 200, radius: 5 });
-    const polygon = (count: number, x: number, y: number) => new Hull(Array.from({ length: count }, (_, i): [number, number] =>
-      [x + 10 * Math.cos((2 * Math.PI * i) / count), y + 10 * Math.sin((2 * Math.PI * i) / count)]));
-    const round = polygon(9, 100, 0), nearRound = polygon(10, 12, 0), square = polygon(4, 0, 100), hexagon = polygon(6, 100, 100);
-    const framePlan = plan([light], [round, nearRound, square, hexagon]);
-    // Points: round 0–8, nearRound 9–18, square 19–22, hexagon 23–28.
-    expect(casters(framePlan)).toEqual([-20, -24, -1, ...Array.from({ length: 10 }, (_, i) => 9 + i)]);
-    expect(Array.from(framePlan.draws[0].runEnds)).toEqual([1, 2, 3, 3, 3, 3, 3, 3, 3, 3, 3, 13]);
-  });
-
-  it('makes a hull near the disk one caster while its region opens at most 78° either side', () => {
-    const light = new PointLight({ position: [40, 60], range: 100, radius: 10 });
-    const box = (x: number) => new Hull([[x, 50], [x + 10, 50], [x + 10, 70], [x, 70]]);
-    // Tangents through the near corners lean 33.7° off 33.7° (67° each side), then 39.8° off 39.8° (80°).
-    expect(casters(plan([light], [box(55)]))).toEqual([-1]);
-    expect(casters(plan([light], [box(52)]))).toEqual([0, 1, 2, 3]);
+    const round = new Hull(Array.from({ length: 16 }, (_, i): [number, number] => [150 + 10 * Math.cos((Math.PI * i) / 8), 50 + 10 * Math.sin((Math.PI * i) / 8)]));
+    const geometry = new ShadowGeometry();
+    geometry.update([u, round]);
+    geometry.prepare(0);
+    geometry.prepare(1);
+    expect(Array.from(geometry.recordCounts.subarray(0, 2))).toEqual([6, 3]);
+    // Records of a fan: points 0–7, then 0 and 7–13, then 0 and 13–15; every record has positive area.
+    expect(Array.from(geometry.recordPointCounts.subarray(6, 9))).toEqual([8, 8, 4]);
+    for (let record = 0; record < 9; record++) {
+      const count = geometry.recordPointCounts[record];
+      const points = geometry.records.subarray(record * RECORD_FLOATS, record * RECORD_FLOATS + 2 * count);
+      expect(signedArea2(points)).toBeGreaterThan(0);
+    }
   });
 
   it('writes each light its reach: the range, or the farthest corner of a textured quad', () => {

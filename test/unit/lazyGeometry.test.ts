@@ -1,7 +1,8 @@
 import { mat4 } from 'gl-matrix';
 import { describe, expect, it, vi } from 'vitest';
 import { FramePlan } from '../../src/geometry/FramePlan';
-import { POINT_FLOATS, POINT_ROW, ShadowGeometry } from '../../src/geometry/ShadowGeometry';
+import { ShadowGeometry } from '../../src/geometry/ShadowGeometry';
+import { RECORD_FLOATS, RECORDS_PER_ROW } from '../../src/geometry/shadowLayout';
 import { Hull, PointLight, type Light } from '../../src/index';
 
 const WIDTH = 400, HEIGHT = 200;
@@ -13,13 +14,10 @@ function frame(geometry: ShadowGeometry, plan: FramePlan, lights: Light[], hulls
   plan.build(lights, hulls, geometry, pixelSpace, WIDTH, HEIGHT);
 }
 
-/** The world points the geometry holds for the hull at `index` (first point record of each point). */
-function storedPoints(geometry: ShadowGeometry, index: number, hulls: Hull[]): number[] {
-  let first = 0;
-  for (let i = 0; i < index; i++) first += hulls[i].edgeCount;
-  const out: number[] = [];
-  for (let p = first; p < first + hulls[index].edgeCount; p++) out.push(geometry.points[p * POINT_FLOATS], geometry.points[p * POINT_FLOATS + 1]);
-  return out;
+/** The world points the geometry holds for the (convex, at most 8-point) hull at `index`: its one record. */
+function storedPoints(geometry: ShadowGeometry, index: number): number[] {
+  const record = geometry.firstRecords[index];
+  return Array.from(geometry.records.subarray(record * RECORD_FLOATS, record * RECORD_FLOATS + 2 * geometry.recordPointCounts[record]));
 }
 
 /** The exact world points of a hull's current placement, from a fresh copy. */
@@ -48,12 +46,12 @@ describe('Lazy hull geometry', () => {
     far.setPosition(80, 100);
     frame(geometry, plan, [light], hulls);
     expect(plan.draws[0].hullCount).toBe(2);
-    expect(storedPoints(geometry, 1, hulls)).toEqual(exactPoints(far));
+    expect(storedPoints(geometry, 1)).toEqual(exactPoints(far));
   });
 
-  it('marks dirty only the point rows of hulls written this frame', () => {
+  it('marks dirty only the record rows of hulls written this frame', () => {
     // Enough hulls to fill several rows; the light reaches only the first.
-    const hulls = Array.from({ length: 3 * POINT_ROW / 4 }, (_, i) => square(i === 0 ? 60 : 10_000 + i * 20, 100));
+    const hulls = Array.from({ length: 3 * RECORDS_PER_ROW }, (_, i) => square(i === 0 ? 60 : 10_000 + i * 20, 100));
     const light = new PointLight({ position: [50, 100], range: 40 });
     const geometry = new ShadowGeometry(), plan = new FramePlan();
     frame(geometry, plan, [light], hulls);
@@ -77,14 +75,14 @@ describe('Lazy hull geometry', () => {
     housing.setPosition(70, 100);
     frame(geometry, plan, [inside, outside], hulls);
     expect(plan.draws.slice(0, plan.drawCount).map((d) => [d.light, d.hullCount])).toEqual([[inside, 0], [outside, 1]]);
-    expect(storedPoints(geometry, 0, hulls)).toEqual(exactPoints(housing));
+    expect(storedPoints(geometry, 0)).toEqual(exactPoints(housing));
     // Turned, mirrored and moved back over the skipped light in one frame: exact at once.
     housing.rotation = 0.7;
     housing.scale = [2, -1];
     housing.setPosition(300, 100);
     frame(geometry, plan, [inside, outside], hulls);
     expect(plan.draws.slice(0, plan.drawCount).map((d) => d.light)).toEqual([outside]);
-    expect(storedPoints(geometry, 0, hulls)).toEqual(exactPoints(housing));
+    expect(storedPoints(geometry, 0)).toEqual(exactPoints(housing));
   });
 
   it('keeps coarse bounds around the exact world bounds under any placement', () => {
