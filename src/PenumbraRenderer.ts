@@ -263,7 +263,7 @@ export class PenumbraRenderer {
       this.bindCompositeTarget();
       resources.composite.render(resources.scene.texture, resources.light.lightmap.texture);
       if (this.debug) {
-        resources.debug.render(this.plan.draws, this.plan.drawCount, this.geometry.recordCount, this._viewProjection);
+        resources.debug.render(this.plan.draws, this.plan.drawCount, resources.shadows.records, this.geometry.recordCount, this._viewProjection);
       }
     } finally {
       this.hostState.restore();

@@ -82,11 +82,14 @@ void loadRecord(vec4 entry) {
   }
 }
 
-// Chord height of the line from the pixel along `direction`; directions 90° or more off the light
-// meet no chord: past either side.
+// Chord height of the line from the pixel along `direction`, for a direction less than 90° off the
+// light's (larger ones meet no chord).
 float chordHeight(vec2 direction) {
-  float across = cross2(toLight, direction) * inversesqrt(dot(direction, direction));
-  return dot(toLight, direction) > 0.0 ? across : (across >= 0.0 ? 2.0 : -2.0);
+  return cross2(toLight, direction) * inversesqrt(dot(direction, direction));
+}
+
+bool isAhead(vec2 direction) {
+  return dot(toLight, direction) > 0.0;
 }
 
 // Squared distance from `point` to the segment a–b.
@@ -278,7 +281,13 @@ float shadowVisibility() {
       if (cross2(highEnd, points[k]) > 0.0) highEnd = points[k];
       if (cross2(lowEnd, points[k]) < 0.0) lowEnd = points[k];
     }
-    float low = max(chordHeight(lowEnd), -1.0), high = min(chordHeight(highEnd), 1.0);
+    // A silhouette direction 90° or more off the light was reached by turning from the other end:
+    // clockwise past -90° for the low end, counter-clockwise past +90° for the high end. With both
+    // ends there, the record lies behind the pixel (it spans less than 180°).
+    bool lowAhead = isAhead(lowEnd), highAhead = isAhead(highEnd);
+    if (!lowAhead && !highAhead && !insideDisk) continue;
+    float low = lowAhead ? max(chordHeight(lowEnd), -1.0) : -1.0;
+    float high = highAhead ? min(chordHeight(highEnd), 1.0) : 1.0;
     if (low >= high && !insideDisk) continue;
     if (!insideDisk && diskBeyond(lowEnd, highEnd)) {
       insertInterval(low, high);

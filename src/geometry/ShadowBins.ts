@@ -13,8 +13,9 @@ const TWO_PI = 2 * Math.PI;
  * between the direction of its record point h and the ray's direction, which differ by at most
  * asin(r / |h − c|): so the record's bins are its angular extent from c widened by asin(r / d),
  * with d its distance from c; a record that reaches into the disk (d ≤ r) is filed in every bin.
- * And since a segment between two points within distance ρ of c stays within ρ, a pixel nearer
- * to c than d is never shaded by the record: that is the `distance` the lists are sorted by.
+ * And since a segment between two points within distance ρ ≥ r of c stays within ρ, a pixel nearer
+ * to c than d > r is never shaded by the record: that is the `distance` the lists are sorted by
+ * (0 for a record reaching into the disk, which may shade any pixel).
  *
  * All arrays are reused from frame to frame.
  */
@@ -130,10 +131,11 @@ export class ShadowBins {
         binCount = to - from + 1;
       }
     }
+    const reachesPixelsAt = distance > this.lightRadius ? distance : 0;
     const i = this.candidateCount++;
     if (i === this.candidateRecords.length) this.growCandidates();
     this.candidateRecords[i] = record;
-    this.candidateDistances[i] = distance;
+    this.candidateDistances[i] = reachesPixelsAt;
     this.candidateFirstBins[i] = firstBin;
     this.candidateBinCounts[i] = binCount;
   }

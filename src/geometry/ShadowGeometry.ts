@@ -106,6 +106,8 @@ export class ShadowGeometry {
 
   private layOut(hulls: readonly Hull[]): void {
     this.layoutHulls = hulls.slice();
+    // Records of hulls not yet prepared stay zero (no outline in the debug wireframe) rather than stale.
+    this.records.fill(0);
     this.allocatePerHull(hulls.length);
     let records = 0;
     for (let i = 0; i < hulls.length; i++) {

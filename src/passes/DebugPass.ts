@@ -27,10 +27,12 @@ export class DebugPass {
     gl.uniform1i(this.recordsProgram.uniforms.u_records, ShadowUnits.records);
   }
 
-  /** Draws the outlines; the records texture must be bound on its unit (`ShadowTextures.upload`). */
-  render(draws: readonly LightDraw[], drawCount: number, recordCount: number, viewProjection: ReadonlyMat4): void {
+  /** Draws the outlines of the first `recordCount` records of the `records` texture and of the lights' quads. */
+  render(draws: readonly LightDraw[], drawCount: number, records: WebGLTexture, recordCount: number, viewProjection: ReadonlyMat4): void {
     const gl = this.gl;
     gl.disable(gl.BLEND);
+    gl.activeTexture(gl.TEXTURE0 + ShadowUnits.records);
+    gl.bindTexture(gl.TEXTURE_2D, records);
     gl.useProgram(this.recordsProgram.handle);
     gl.uniformMatrix4fv(this.recordsProgram.uniforms.u_viewProjection, false, viewProjection);
     gl.uniform4f(this.recordsProgram.uniforms.u_color, 1, 0, 1, 1);

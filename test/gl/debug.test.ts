@@ -28,7 +28,7 @@ it('draws the light quad in yellow and each shadow caster\'s quad in magenta ove
   gl.clearColor(0, 0, 0, 1);
   gl.clear(gl.COLOR_BUFFER_BIT);
   renderer.draw();
-  // The quad's top side runs along y = 13; the hull's region starts on the line x = 20.
+  // The quad's top side runs along y = 13; the hull's left side is the line x = 20.
   const near = (x: number, y: number, dx: number, dy: number) => [-1, 0, 1].map((k) => colourAt(x + k * dx, y + k * dy));
   expect(near(5, 13, 0, 1)).toContainEqual([255, 255, 0]);
   expect(near(20, 33, 1, 0)).toContainEqual([255, 0, 255]);
