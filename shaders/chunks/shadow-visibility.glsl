@@ -71,14 +71,21 @@ float distanceToLight; // in world units
 vec2 points[RECORD_TEXELS * 2];
 int pointCount;
 
-void loadRecord(vec4 entry) {
-  int first = int(entry.x);
-  pointCount = int(entry.y);
-  for (int i = 0; i < RECORD_TEXELS; i++) {
-    if (2 * i >= pointCount) break;
-    vec4 two = texelAt(u_records, first + i) - vec4(pixel, pixel);
-    points[2 * i] = two.xy;
-    points[2 * i + 1] = two.zw;
+// Loads a record's points. Unused slots repeat the last point, so a texel of two repeats ends the
+// record; an odd count keeps one repeat, which changes no result (an edge of no length).
+void loadRecord(int record) {
+  int first = record * RECORD_TEXELS;
+  vec4 two = texelAt(u_records, first);
+  points[0] = two.xy - pixel;
+  points[1] = two.zw - pixel;
+  pointCount = 2;
+  for (int i = 1; i < RECORD_TEXELS; i++) {
+    vec4 next = texelAt(u_records, first + i);
+    if (next.xy == two.zw && next.zw == two.zw) break;
+    two = next;
+    points[2 * i] = two.xy - pixel;
+    points[2 * i + 1] = two.zw - pixel;
+    pointCount += 2;
   }
 }
 
@@ -154,8 +161,8 @@ float coveredBetween(float low, float high) {
   return covered;
 }
 
-// The records seen past: their entries.
-vec4 partials[MAX_PARTIALS];
+// The records seen past: their numbers.
+int partials[MAX_PARTIALS];
 int partialCount;
 float partialLow;
 float partialHigh;
@@ -235,7 +242,7 @@ float visibleFromInside() {
   return visible * (0.5 * 2.0 * PI / float(TURN_CELLS)) / (PI * radius * radius);
 }
 
-// 0 outside the record; inside it, 1 (the pixel holds any point of the loaded record on or left of each edge).
+// Whether the pixel lies inside the loaded record or on its outline (left of or on every edge).
 bool pixelInsideRecord() {
   bool inside = true;
   for (int i = 0; i < RECORD_TEXELS * 2; i++) {
@@ -246,6 +253,51 @@ bool pixelInsideRecord() {
   return inside;
 }
 
+// Pseudo-angle of a direction, in [0, 4), as `pseudoAngle` in src/geometry/shadowLayout.ts.
+float pseudoAngle(vec2 d) {
+  float p = d.y / (abs(d.x) + abs(d.y));
+  return d.x < 0.0 ? 2.0 - p : (d.y < 0.0 ? 4.0 + p : p);
+}
+
+bool illuminated;
+bool insideDisk;
+// Set when the pixel lies inside a record: then its visibility is decided (dark, or lit whole).
+bool insideHull;
+
+// Visits one record: inside test, then its interval into the union or onto the partials.
+void visitRecord(int record) {
+  loadRecord(record);
+  if (pixelInsideRecord()) {
+    insideHull = true;
+    return;
+  }
+  if (coverIsWhole()) return; // only an Illuminated light's hull pixels are left to find
+  // The silhouette: the extreme directions, ordered by cross products (the record spans < 180°).
+  vec2 lowEnd = points[0], highEnd = points[0];
+  for (int k = 1; k < RECORD_TEXELS * 2; k++) {
+    if (k >= pointCount) break;
+    if (cross2(highEnd, points[k]) > 0.0) highEnd = points[k];
+    if (cross2(lowEnd, points[k]) < 0.0) lowEnd = points[k];
+  }
+  // A silhouette direction 90° or more off the light was reached by turning from the other end:
+  // clockwise past -90° for the low end, counter-clockwise past +90° for the high end. With both
+  // ends there, the record lies behind the pixel (it spans less than 180°).
+  bool lowAhead = isAhead(lowEnd), highAhead = isAhead(highEnd);
+  if (!lowAhead && !highAhead && !insideDisk) return;
+  float low = lowAhead ? max(chordHeight(lowEnd), -1.0) : -1.0;
+  float high = highAhead ? min(chordHeight(highEnd), 1.0) : 1.0;
+  if (low >= high && !insideDisk) return;
+  if (!insideDisk && diskBeyond(lowEnd, highEnd)) {
+    insertInterval(low, high);
+  } else if (partialCount < MAX_PARTIALS) {
+    partials[partialCount++] = record;
+    partialLow = min(partialLow, low);
+    partialHigh = max(partialHigh, high);
+  } else {
+    insertInterval(low, high);
+  }
+}
+
 float shadowVisibility() {
   pixel = v_world;
   centre = v_shadow.xy;
@@ -254,8 +306,9 @@ float shadowVisibility() {
   distanceToLight = length(c);
   toLight = c / radius;
   float distanceInRadii = distanceToLight / radius;
-  bool insideDisk = distanceInRadii <= 1.0;
-  bool illuminated = v_illuminated > 0.5;
+  insideDisk = distanceInRadii <= 1.0;
+  illuminated = v_illuminated > 0.5;
+  insideHull = false;
   lowCover = -1.0;
   highCover = 1.0;
   middleCount = 0;
@@ -263,42 +316,22 @@ float shadowVisibility() {
   partialLow = 2.0;
   partialHigh = -2.0;
 
-  float angle = atan(-c.y, -c.x);
-  int bin = clamp(int(floor((angle + PI) * (float(BIN_COUNT) / (2.0 * PI)))), 0, BIN_COUNT - 1);
+  int bin = min(int(pseudoAngle(-c) * (float(BIN_COUNT) / 4.0)), BIN_COUNT - 1);
   vec4 binEntries = texelFetch(u_bins, ivec2(bin, int(v_shadow.w)), 0);
   int first = int(binEntries.x), count = int(binEntries.y);
   for (int i = 0; i < count; i++) {
-    vec4 entry = texelAt(u_entries, first + i);
-    // This record and all after it are farther from the centre than the pixel: they hide nothing.
-    if (distanceToLight < entry.z) break;
-    loadRecord(entry);
-    if (pixelInsideRecord()) return illuminated ? 1.0 : 0.0;
-    if (coverIsWhole()) continue; // only an Illuminated light's hull pixels are left to find
-    // The silhouette: the extreme directions, ordered by cross products (the record spans < 180°).
-    vec2 lowEnd = points[0], highEnd = points[0];
-    for (int k = 1; k < RECORD_TEXELS * 2; k++) {
-      if (k >= pointCount) break;
-      if (cross2(highEnd, points[k]) > 0.0) highEnd = points[k];
-      if (cross2(lowEnd, points[k]) < 0.0) lowEnd = points[k];
+    int e = first + i;
+    vec4 two = texelAt(u_entries, e / 2);
+    vec2 entry = e % 2 == 0 ? two.xy : two.zw;
+    // This hull and all after it are farther from the centre than the pixel: they hide nothing.
+    if (distanceToLight < entry.y) break;
+    int code = int(entry.x);
+    int firstRecord = code / ENTRY_MAX_RECORDS, lastRecord = firstRecord + code % ENTRY_MAX_RECORDS;
+    for (int record = firstRecord; record <= lastRecord; record++) {
+      visitRecord(record);
+      if (insideHull) return illuminated ? 1.0 : 0.0;
     }
-    // A silhouette direction 90° or more off the light was reached by turning from the other end:
-    // clockwise past -90° for the low end, counter-clockwise past +90° for the high end. With both
-    // ends there, the record lies behind the pixel (it spans less than 180°).
-    bool lowAhead = isAhead(lowEnd), highAhead = isAhead(highEnd);
-    if (!lowAhead && !highAhead && !insideDisk) continue;
-    float low = lowAhead ? max(chordHeight(lowEnd), -1.0) : -1.0;
-    float high = highAhead ? min(chordHeight(highEnd), 1.0) : 1.0;
-    if (low >= high && !insideDisk) continue;
-    if (!insideDisk && diskBeyond(lowEnd, highEnd)) {
-      insertInterval(low, high);
-      if (coverIsWhole() && !illuminated) return 0.0;
-    } else if (partialCount < MAX_PARTIALS) {
-      partials[partialCount++] = entry;
-      partialLow = min(partialLow, low);
-      partialHigh = max(partialHigh, high);
-    } else {
-      insertInterval(low, high);
-    }
+    if (coverIsWhole() && !illuminated) return 0.0;
   }
   if (insideDisk) return partialCount == 0 ? 1.0 : visibleFromInside();
   if (coverIsWhole()) return 0.0;

@@ -98,7 +98,7 @@ export class FramePlan {
     draw.hullCount = count;
     if (count === 0) return true;
     const bins = this.bins;
-    bins.beginLight(light.position[0], light.position[1], light.radius);
+    bins.beginLight(light.position[0], light.position[1], light.radius, draw.reach);
     for (let i = 0; i < count; i++) bins.addHull(geometry, inRange[i]);
     draw.binRow = bins.endLight(geometry);
     return true;

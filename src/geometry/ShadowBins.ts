@@ -1,42 +1,55 @@
 import type { ShadowGeometry } from './ShadowGeometry';
-import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, RECORD_FLOATS, RECORD_TEXELS, TEXTURE_WIDTH } from './shadowLayout';
+import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, pseudoAngle, TEXTURE_WIDTH } from './shadowLayout';
 
-const TWO_PI = 2 * Math.PI;
+/** Distance buckets of the counting sort that orders each bin's list, nearest first. */
+const DISTANCE_BUCKETS = 32;
+/** Pseudo-angle margin on each side of a hull's bins, far above the shader's float32 rounding (~1e-6). */
+const ANGLE_MARGIN = 1e-3;
+/** asin(x) ≤ x + ASIN_CUBIC · x³ on [0, 1] (the series' coefficients are positive and sum to π/2 at 1). */
+const ASIN_CUBIC = Math.PI / 2 - 1;
 
 /**
- * Per shadowed light, the records that can hide part of its disk, filed into angular bins around
- * its centre (see shadowLayout), each bin's list nearest first. A pixel looks up the bin of its
- * direction from the light and visits that list until the records are farther than itself.
+ * Per shadowed light, the hulls that can hide part of its disk, filed into angular bins around its
+ * centre (see shadowLayout), each bin's list ordered nearest first. A pixel looks up the bin of its
+ * direction from the light and visits that list until the hulls are farther than itself.
  *
- * Which pixels a record can shade: a segment from a pixel p to a disk point q meets the record only
- * if p lies on a ray from q through the record, beyond it. Seen from the centre c, such a p lies
- * between the direction of its record point h and the ray's direction, which differ by at most
- * asin(r / |h − c|): so the record's bins are its angular extent from c widened by asin(r / d),
- * with d its distance from c; a record that reaches into the disk (d ≤ r) is filed in every bin.
- * And since a segment between two points within distance ρ ≥ r of c stays within ρ, a pixel nearer
- * to c than d > r is never shaded by the record: that is the `distance` the lists are sorted by
- * (0 for a record reaching into the disk, which may shade any pixel).
+ * Which pixels a hull can shade: a segment from a pixel p to a disk point q meets the hull only if p
+ * lies on a ray from q through a hull point h, beyond it. Seen from the centre c, such a p lies
+ * between the directions of h and of the ray, which differ by at most asin(r / |h − c|). With the
+ * hull inside a circle of radius ρ at distance d from c, its points lie within asin(ρ / d) of the
+ * circle's direction and at least d − ρ from c: so its bins are those within asin(ρ / d) +
+ * asin(r / (d − ρ)) of that direction. A hull reaching into the disk (d − ρ ≤ r) is filed in every bin.
+ * And since a segment between two points within distance ρ' ≥ r of c stays within ρ', a pixel
+ * nearer to c than d − ρ > r is never shaded by the hull: that bound orders the lists (0 for a hull
+ * reaching into the disk, which may shade any pixel). The order is by buckets of that distance,
+ * and each entry carries its bucket's lower end, so that a pixel may stop at the first entry whose
+ * distance exceeds its own.
  *
- * All arrays are reused from frame to frame.
+ * Costs one square root and three divisions per light and hull in range, and writes about
+ * 1 + (angular width of the hull's shadow) / (bin width) entries. All arrays are reused from frame
+ * to frame.
  */
 export class ShadowBins {
   /** Rows of {@link BIN_COUNT} bins, one per shadowed light. */
   bins = new Float32Array(BIN_COUNT * BIN_FLOATS * 8);
   rowCount = 0;
-  /** Entries of all rows' bins, in whole rows of {@link TEXTURE_WIDTH}. */
-  entries = new Float32Array(TEXTURE_WIDTH * ENTRY_FLOATS);
+  /** Entries of all rows' bins, in whole rows of the entries texture. */
+  entries = new Float32Array(TEXTURE_WIDTH * 4);
   entryCount = 0;
-  /** Candidates of the current light: record, distance, first bin and bin count, in parallel arrays. */
-  private candidateRecords = new Int32Array(64);
-  private candidateDistances = new Float64Array(64);
-  private candidateFirstBins = new Int32Array(64);
-  private candidateBinCounts = new Int32Array(64);
+  /** Candidates of the current light, in parallel arrays: hull, distance bucket, first bin and bin count. */
+  private candidateHulls = new Int32Array(64);
+  private candidateBuckets = new Uint8Array(64);
+  private candidateFirstBins = new Uint8Array(64);
+  private candidateBinCounts = new Uint8Array(64);
+  /** Candidate numbers in order of their bucket. */
   private order = new Int32Array(64);
   private candidateCount = 0;
+  private readonly bucketCursors = new Int32Array(DISTANCE_BUCKETS);
   private readonly binCursors = new Int32Array(BIN_COUNT);
   private lightX = 0;
   private lightY = 0;
   private lightRadius = 0;
+  private bucketWidth = 1;
 
   /** Starts a frame: no rows, no entries. */
   reset(): void {
@@ -44,144 +57,117 @@ export class ShadowBins {
     this.entryCount = 0;
   }
 
-  /** Starts the row of the light with the given centre and disk radius. */
-  beginLight(x: number, y: number, radius: number): void {
+  /** Starts the row of the light with the given centre, disk radius and reach (it adds nothing farther). */
+  beginLight(x: number, y: number, radius: number, reach: number): void {
     this.lightX = x;
     this.lightY = y;
     this.lightRadius = radius;
+    this.bucketWidth = Math.max(reach, 1e-9) / DISTANCE_BUCKETS;
     this.candidateCount = 0;
   }
 
-  /** Adds the records of the hull at `index` (prepared) as candidates of the current light. */
+  /** Adds the hull at `index` (prepared) as a candidate of the current light. */
   addHull(geometry: ShadowGeometry, index: number): void {
-    const first = geometry.firstRecords[index], end = first + geometry.recordCounts[index];
-    for (let record = first; record < end; record++) this.addRecord(geometry, record);
+    const circles = geometry.circles;
+    const dx = circles[3 * index] - this.lightX, dy = circles[3 * index + 1] - this.lightY, hullRadius = circles[3 * index + 2];
+    const distance = Math.sqrt(dx * dx + dy * dy), nearest = distance - hullRadius, radius = this.lightRadius;
+    let bucket = 0, firstBin = 0, binCount = BIN_COUNT;
+    if (nearest > radius) {
+      bucket = Math.min(DISTANCE_BUCKETS - 1, Math.floor(nearest / this.bucketWidth));
+      const halfWidth = asinBound(hullRadius / distance) + asinBound(radius / nearest) + ANGLE_MARGIN;
+      if (halfWidth < 2) {
+        const angle = pseudoAngle(dx, dy);
+        const from = Math.floor((angle - halfWidth) * (BIN_COUNT / 4)), to = Math.floor((angle + halfWidth) * (BIN_COUNT / 4));
+        if (to - from + 1 < BIN_COUNT) {
+          firstBin = (from + BIN_COUNT) % BIN_COUNT;
+          binCount = to - from + 1;
+        }
+      }
+    }
+    const i = this.candidateCount++;
+    if (i === this.candidateHulls.length) this.growCandidates();
+    this.candidateHulls[i] = index;
+    this.candidateBuckets[i] = bucket;
+    this.candidateFirstBins[i] = firstBin;
+    this.candidateBinCounts[i] = binCount;
   }
 
   /** Files the current light's candidates into its row; returns the row. */
   endLight(geometry: ShadowGeometry): number {
     const row = this.rowCount++;
     this.bins = grow(this.bins, row * BIN_COUNT * BIN_FLOATS, BIN_COUNT * BIN_FLOATS);
-    const count = this.candidateCount, order = this.order;
-    for (let i = 0; i < count; i++) order[i] = i;
-    sortByKey(order, count, this.candidateDistances);
+    this.sortByBucket();
+    const count = this.candidateCount, firstBins = this.candidateFirstBins, binCounts = this.candidateBinCounts, hulls = this.candidateHulls;
+    const recordCounts = geometry.recordCounts, firstRecords = geometry.firstRecords;
+    // Entries per bin, as differences from the previous bin: constant time per candidate.
     const cursors = this.binCursors.fill(0);
-    let total = 0;
+    let total = 0, wrapping = 0;
     for (let i = 0; i < count; i++) {
-      const first = this.candidateFirstBins[i], binCount = this.candidateBinCounts[i];
-      total += binCount;
-      for (let k = 0; k < binCount; k++) cursors[(first + k) % BIN_COUNT]++;
+      const entries = recordCounts[hulls[i]] <= ENTRY_MAX_RECORDS ? 1 : Math.ceil(recordCounts[hulls[i]] / ENTRY_MAX_RECORDS);
+      const first = firstBins[i], end = first + binCounts[i];
+      total += entries * binCounts[i];
+      cursors[first] += entries;
+      if (end < BIN_COUNT) cursors[end] -= entries;
+      else if (end > BIN_COUNT) {
+        wrapping += entries;
+        cursors[end - BIN_COUNT] -= entries;
+      }
     }
     const firstEntry = this.entryCount;
-    this.entries = grow(this.entries, firstEntry * ENTRY_FLOATS, total * ENTRY_FLOATS, TEXTURE_WIDTH * ENTRY_FLOATS);
+    this.entries = grow(this.entries, firstEntry * ENTRY_FLOATS, total * ENTRY_FLOATS, TEXTURE_WIDTH * 4);
     const bins = this.bins;
-    for (let bin = 0, start = firstEntry; bin < BIN_COUNT; bin++) {
+    for (let bin = 0, start = firstEntry, size = wrapping; bin < BIN_COUNT; bin++) {
+      size += cursors[bin];
       const b = (row * BIN_COUNT + bin) * BIN_FLOATS;
       bins[b] = start;
-      bins[b + 1] = cursors[bin];
-      start += cursors[bin];
-      cursors[bin] = bins[b];
+      bins[b + 1] = size;
+      cursors[bin] = start;
+      start += size;
     }
-    const entries = this.entries;
-    for (let i = 0; i < count; i++) {
-      const candidate = order[i];
-      const record = this.candidateRecords[candidate], distance = this.candidateDistances[candidate];
-      const first = this.candidateFirstBins[candidate], binCount = this.candidateBinCounts[candidate];
-      for (let k = 0; k < binCount; k++) {
-        const e = cursors[(first + k) % BIN_COUNT]++ * ENTRY_FLOATS;
-        entries[e] = record * RECORD_TEXELS;
-        entries[e + 1] = geometry.recordPointCounts[record];
-        entries[e + 2] = distance;
-        entries[e + 3] = 0;
+    const entries = this.entries, order = this.order, buckets = this.candidateBuckets, width = this.bucketWidth;
+    for (let n = 0; n < count; n++) {
+      const i = order[n], hull = hulls[i], binCount = binCounts[i];
+      const distance = buckets[i] * width;
+      for (let record = firstRecords[hull], end = record + recordCounts[hull]; record < end; record += ENTRY_MAX_RECORDS) {
+        const code = record * ENTRY_MAX_RECORDS + Math.min(ENTRY_MAX_RECORDS, end - record) - 1;
+        for (let k = 0, bin = firstBins[i]; k < binCount; k++) {
+          const e = cursors[bin]++ * ENTRY_FLOATS;
+          entries[e] = code;
+          entries[e + 1] = distance;
+          if (++bin === BIN_COUNT) bin = 0;
+        }
       }
     }
     this.entryCount += total;
     return row;
   }
 
-  /** Computes a record's distance and bins from the current light and adds it. */
-  private addRecord(geometry: ShadowGeometry, record: number): void {
-    const points = geometry.records, base = record * RECORD_FLOATS, count = geometry.recordPointCounts[record];
-    const cx = this.lightX, cy = this.lightY;
-    let nearest2 = Infinity;
-    const firstAngle = Math.atan2(points[base + 1] - cy, points[base] - cx);
-    let low = 0, high = 0;
-    for (let i = 0; i < count; i++) {
-      const ax = points[base + 2 * i] - cx, ay = points[base + 2 * i + 1] - cy;
-      const j = i + 1 === count ? 0 : i + 1;
-      const bx = points[base + 2 * j] - cx, by = points[base + 2 * j + 1] - cy;
-      const distance2 = segmentDistance2(ax, ay, bx, by);
-      if (distance2 < nearest2) nearest2 = distance2;
-      let angle = Math.atan2(ay, ax) - firstAngle;
-      if (angle > Math.PI) angle -= TWO_PI;
-      else if (angle < -Math.PI) angle += TWO_PI;
-      if (angle < low) low = angle;
-      if (angle > high) high = angle;
+  /** Fills `order` with the candidates by distance bucket (a counting sort: stable, linear). */
+  private sortByBucket(): void {
+    const cursors = this.bucketCursors.fill(0), buckets = this.candidateBuckets, count = this.candidateCount;
+    for (let i = 0; i < count; i++) cursors[buckets[i]]++;
+    for (let bucket = 0, start = 0; bucket < DISTANCE_BUCKETS; bucket++) {
+      const size = cursors[bucket];
+      cursors[bucket] = start;
+      start += size;
     }
-    const distance = Math.sqrt(nearest2);
-    let firstBin = 0, binCount = BIN_COUNT;
-    if (distance > this.lightRadius) {
-      const widen = Math.asin(this.lightRadius / distance);
-      // One bin more on each side: the shader's atan and this one's may round a direction on a
-      // bin border differently.
-      const from = Math.floor(((firstAngle + low - widen + Math.PI) / TWO_PI) * BIN_COUNT) - 1;
-      const to = Math.floor(((firstAngle + high + widen + Math.PI) / TWO_PI) * BIN_COUNT) + 1;
-      if (to - from + 1 < BIN_COUNT) {
-        firstBin = ((from % BIN_COUNT) + BIN_COUNT) % BIN_COUNT;
-        binCount = to - from + 1;
-      }
-    }
-    const reachesPixelsAt = distance > this.lightRadius ? distance : 0;
-    const i = this.candidateCount++;
-    if (i === this.candidateRecords.length) this.growCandidates();
-    this.candidateRecords[i] = record;
-    this.candidateDistances[i] = reachesPixelsAt;
-    this.candidateFirstBins[i] = firstBin;
-    this.candidateBinCounts[i] = binCount;
+    for (let i = 0; i < count; i++) this.order[cursors[buckets[i]]++] = i;
   }
 
   private growCandidates(): void {
     const used = this.candidateCount;
-    this.candidateRecords = grow(this.candidateRecords, used, used);
-    this.candidateDistances = grow(this.candidateDistances, used, used);
+    this.candidateHulls = grow(this.candidateHulls, used, used);
+    this.candidateBuckets = grow(this.candidateBuckets, used, used);
     this.candidateFirstBins = grow(this.candidateFirstBins, used, used);
     this.candidateBinCounts = grow(this.candidateBinCounts, used, used);
-    this.order = new Int32Array(this.candidateRecords.length);
+    this.order = new Int32Array(this.candidateHulls.length);
   }
 }
 
-/** Squared distance from the origin to the segment a–b. */
-function segmentDistance2(ax: number, ay: number, bx: number, by: number): number {
-  const ex = bx - ax, ey = by - ay;
-  const length2 = ex * ex + ey * ey;
-  const t = length2 > 0 ? Math.min(1, Math.max(0, -(ax * ex + ay * ey) / length2)) : 0;
-  const x = ax + t * ex, y = ay + t * ey;
-  return x * x + y * y;
-}
-
-/** Sorts `order[0..count)` by `keys[order[i]]`, ascending, in place (heapsort: no allocation, no recursion). */
-export function sortByKey(order: Int32Array, count: number, keys: Float64Array): void {
-  for (let start = (count >> 1) - 1; start >= 0; start--) siftDown(order, start, count, keys);
-  for (let end = count - 1; end > 0; end--) {
-    const top = order[0];
-    order[0] = order[end];
-    order[end] = top;
-    siftDown(order, 0, end, keys);
-  }
-}
-
-function siftDown(order: Int32Array, root: number, count: number, keys: Float64Array): void {
-  const item = order[root], key = keys[item];
-  let i = root;
-  for (;;) {
-    let child = 2 * i + 1;
-    if (child >= count) break;
-    if (child + 1 < count && keys[order[child + 1]] > keys[order[child]]) child++;
-    if (keys[order[child]] <= key) break;
-    order[i] = order[child];
-    i = child;
-  }
-  order[i] = item;
+/** An upper bound of asin(min(x, 1)) for x ≥ 0, within 0.6% below x = 0.3: no trigonometry per hull. */
+function asinBound(x: number): number {
+  const y = Math.min(x, 1);
+  return y + ASIN_CUBIC * y * y * y;
 }
 
 /** `array`, or a grown copy of its first `used` entries, with room for `extra` more (length a multiple of `granule`). */

@@ -31,12 +31,14 @@ export class ShadowGeometry {
   recordCounts = new Int32Array(0);
   /** Per hull, its exact world bounds `[minX, minY, maxX, maxY]` at `4 × index`, as of its last {@link ShadowGeometry.prepare}. */
   worldBounds = new Float64Array(0);
+  /** Per hull, a circle around its world points `[x, y, radius]` at `3 × index` (the centre of its bounds), as of its last {@link ShadowGeometry.prepare}. */
+  circles = new Float64Array(0);
   /** Edges of all valid hulls. */
   validEdgeCount = 0;
   private layoutHulls: Hull[] = [];
   /** Per hull: `hull.version` when `coarseBounds`, `castsShadow` and `convex` were last refreshed. */
   private refreshedVersions = new Float64Array(0);
-  /** Per hull: `hull.version` when its points, triangles and `worldBounds` were last written. */
+  /** Per hull: `hull.version` when its records, `worldBounds` and `circles` were last written. */
   private preparedVersions = new Float64Array(0);
   /** Per hull: its edges counted in `validEdgeCount`. */
   private countedEdges = new Int32Array(0);
@@ -62,7 +64,7 @@ export class ShadowGeometry {
   }
 
   /**
-   * Brings the world points, triangles and `worldBounds` of the hull at `index` in the last update's
+   * Brings the records, `worldBounds` and `circles` of the hull at `index` in the last update's
    * list up to date (and marks their point rows dirty) if the hull changed since they were written.
    * Flat arrays only when it did not: the planner calls this for every hull in every light's range.
    */
@@ -131,6 +133,7 @@ export class ShadowGeometry {
       const capacity = Math.ceil(count * 1.5);
       this.coarseBounds = new Float64Array(4 * capacity);
       this.worldBounds = new Float64Array(4 * capacity);
+      this.circles = new Float64Array(3 * capacity);
       this.castsShadow = new Uint8Array(capacity);
       this.convex = new Uint8Array(capacity);
       this.firstRecords = new Int32Array(capacity);
@@ -172,6 +175,15 @@ export class ShadowGeometry {
     }
     const from = hull.worldBounds, to = this.worldBounds;
     for (let k = 0; k < 4; k++) to[4 * index + k] = from[k];
+    const cx = (from[0] + from[2]) / 2, cy = (from[1] + from[3]) / 2;
+    let farthest2 = 0;
+    for (let i = 0; i < count; i++) {
+      const dx = world[2 * i] - cx, dy = world[2 * i + 1] - cy;
+      farthest2 = Math.max(farthest2, dx * dx + dy * dy);
+    }
+    this.circles[3 * index] = cx;
+    this.circles[3 * index + 1] = cy;
+    this.circles[3 * index + 2] = Math.sqrt(farthest2);
   }
 
   private startRecord(record: number): void {

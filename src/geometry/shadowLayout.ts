@@ -9,12 +9,16 @@
  *   convex hull of up to that many points is one record; a larger convex hull is a fan of records;
  *   a concave hull is its triangles. A segment is blocked by a hull exactly when it is blocked by one
  *   of its records, so the union over records is the union over hulls.
- * - **Entries** (per frame): per light and angular bin, the records whose shadow can reach the bin,
- *   nearest first: `(first texel of the record, point count, distance from the light's centre to the
- *   record, 0)`.
- * - **Bins** (per frame): one row per shadowed light, {@link BIN_COUNT} texels, bin `k` covering the
- *   directions from the light's centre with angle `atan(y, x)` in `[-π + 2πk/N, -π + 2π(k+1)/N)`:
- *   `(first entry, entry count, 0, 0)`.
+ * - **Entries** (per frame): per light and angular bin, the hulls whose shadow can reach the bin,
+ *   two entries per texel: `(first record × ENTRY_MAX_RECORDS + record count − 1, distance)`,
+ *   where no pixel nearer than `distance` to the light's centre can be shaded by the hull. A hull
+ *   of more than {@link ENTRY_MAX_RECORDS} records takes several entries.
+ * - **Bins** (per frame): one row per shadowed light, {@link BIN_COUNT} texels; bin `k` holds the
+ *   directions from the light's centre whose pseudo-angle (see `pseudoAngle`) lies in
+ *   `[4k / N, 4(k + 1) / N)`: `(first entry, entry count, 0, 0)`.
+ *
+ * Records are found by number: floats hold integers exactly below 2^24, so a scene may have up to
+ * 2^24 / ENTRY_MAX_RECORDS records.
  */
 
 /** Points per record: a tile (4) or an octagon (8) is one record. */
@@ -27,12 +31,24 @@ export const RECORD_FLOATS = RECORD_POINTS * 2;
 export const TEXTURE_WIDTH = 1024;
 /** Records per row of the records texture. */
 export const RECORDS_PER_ROW = TEXTURE_WIDTH / RECORD_TEXELS;
-/** Floats per entry. */
-export const ENTRY_FLOATS = 4;
+/** Floats per entry: two entries per texel. */
+export const ENTRY_FLOATS = 2;
+/** The most records one entry covers. */
+export const ENTRY_MAX_RECORDS = 32;
 /** Angular bins per light: the width of the bins texture. */
-export const BIN_COUNT = 256;
+export const BIN_COUNT = 32;
 /** Floats per bin. */
 export const BIN_FLOATS = 4;
 
+/**
+ * The pseudo-angle of the direction (x, y), in [0, 4): 0 along +x, 1 along +y, 2 along −x, 3 along −y,
+ * increasing counter-clockwise (in x-right, y-up axes) and within a factor 2 of proportional to the
+ * angle: it grows at most 1 per radian. One division, and the same in GLSL (shadow-visibility).
+ */
+export function pseudoAngle(x: number, y: number): number {
+  const p = y / (Math.abs(x) + Math.abs(y));
+  return x < 0 ? 2 - p : y < 0 ? 4 + p : p;
+}
+
 /** The layout constants the shader reads, as `#define`s. */
-export const SHADOW_DEFINES: Readonly<Record<string, number>> = { RECORD_TEXELS, TEXTURE_WIDTH, BIN_COUNT };
+export const SHADOW_DEFINES: Readonly<Record<string, number>> = { RECORD_TEXELS, TEXTURE_WIDTH, BIN_COUNT, ENTRY_MAX_RECORDS };

@@ -2,7 +2,7 @@ import { mat4 } from 'gl-matrix';
 import { describe, expect, it } from 'vitest';
 import { FramePlan } from '../../src/geometry/FramePlan';
 import { signedArea2 } from '../../src/geometry/polygon';
-import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, RECORD_FLOATS, RECORD_TEXELS } from '../../src/geometry/shadowLayout';
+import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, pseudoAngle, RECORD_FLOATS } from '../../src/geometry/shadowLayout';
 import { ShadowGeometry } from '../../src/geometry/ShadowGeometry';
 import { Hull, PointLight, TexturedLight, type Light } from '../../src/index';
 
@@ -84,48 +84,56 @@ describe('FramePlan culling', () => {
   });
 });
 
-/** The entries of bin `bin` of the first draw's light: `[record, point count, distance]` each. */
+/** The entries of bin `bin` of the first draw's light: `[first record, record count, distance]` each. */
 function binEntries(framePlan: FramePlan, bin: number): number[][] {
   const { bins, entries } = framePlan.bins;
   const b = (framePlan.draws[0].binRow * BIN_COUNT + bin) * BIN_FLOATS;
   const out: number[][] = [];
   for (let e = bins[b]; e < bins[b] + bins[b + 1]; e++) {
-    out.push([entries[e * ENTRY_FLOATS] / RECORD_TEXELS, entries[e * ENTRY_FLOATS + 1], entries[e * ENTRY_FLOATS + 2]]);
+    const code = entries[e * ENTRY_FLOATS];
+    out.push([Math.floor(code / ENTRY_MAX_RECORDS), (code % ENTRY_MAX_RECORDS) + 1, entries[e * ENTRY_FLOATS + 1]]);
   }
   return out;
 }
 
 /** The bin of the direction from the light at `from` to `to`. */
-function binOf(from: [number, number], to: [number, number]): number {
-  return Math.floor(((Math.atan2(to[1] - from[1], to[0] - from[0]) + Math.PI) / (2 * Math.PI)) * BIN_COUNT);
+function binOf(from: readonly [number, number], to: readonly [number, number]): number {
+  return Math.floor(pseudoAngle(to[0] - from[0], to[1] - from[1]) * (BIN_COUNT / 4));
+}
+
+/** The bins of the directions `degrees` off +x from `centre`. */
+function binAt(centre: readonly [number, number], degrees: number): number {
+  return binOf(centre, [centre[0] + Math.cos((degrees * Math.PI) / 180), centre[1] + Math.sin((degrees * Math.PI) / 180)]);
 }
 
 describe('FramePlan shadow bins', () => {
   const box = (x: number, y: number, w = 10, h = 10) => new Hull([[x, y], [x + w, y], [x + w, y + h], [x, y + h]]);
+  const light = (position: [number, number], radius: number) => new PointLight({ position, range: 160, radius });
 
-  it('files a hull in the bins of its direction only, with its exact distance from the light centre', () => {
+  it('files a hull in the bins of its direction only', () => {
     const centre: [number, number] = [30, 45];
-    const framePlan = plan([new PointLight({ position: centre, range: 100, radius: 2 })], [box(80, 40)]);
-    expect(binEntries(framePlan, binOf(centre, [85, 45]))).toEqual([[0, 4, 50]]);
-    expect(binEntries(framePlan, binOf(centre, [30, 100]))).toEqual([]);
-    expect(binEntries(framePlan, binOf(centre, [-10, 45]))).toEqual([]);
+    const framePlan = plan([light(centre, 2)], [box(80, 40)]);
+    expect(binEntries(framePlan, binAt(centre, 0)).map(([record, count]) => [record, count])).toEqual([[0, 1]]);
+    for (const degrees of [60, 90, 180, 270]) expect(binEntries(framePlan, binAt(centre, degrees))).toEqual([]);
   });
 
-  it('widens a hull\'s bins by the angle the disk subtends from it: its penumbra', () => {
+  it('widens a hull\'s bins by the angle the disk subtends from it (its penumbrae), and no further than twice that', () => {
     const centre: [number, number] = [0, 50];
-    // The box spans ±5 units at 50 (±5.7°); a disk of radius 20 widens that by asin(20 / 50) = 23.6°.
-    const framePlan = plan([new PointLight({ position: centre, range: 150, radius: 20 })], [box(50, 45)]);
-    const at = (degrees: number) => binEntries(framePlan, binOf(centre, [Math.cos((degrees * Math.PI) / 180), 50 + Math.sin((degrees * Math.PI) / 180)])).length;
-    expect([at(0), at(25), at(-25), at(28), at(-28)]).toEqual([1, 1, 1, 1, 1]);
-    expect([at(33), at(-33), at(90)]).toEqual([0, 0, 0]);
+    // The hull's circle (radius 7.1 at 55) spans ±7.4°; a disk of radius 20 at 47.9 adds 24.7°.
+    const framePlan = plan([light(centre, 20)], [box(50, 45)]);
+    const filedAt = (degrees: number) => binEntries(framePlan, binAt(centre, degrees)).length;
+    for (const degrees of [0, 30, -30]) expect(filedAt(degrees)).toBe(1);
+    for (const degrees of [80, -80, 180]) expect(filedAt(degrees)).toBe(0);
   });
 
-  it('lists each bin nearest first, and files a hull that reaches into the disk in every bin, first (distance 0)', () => {
+  it('lists each bin nearest first, and files a hull that reaches into the disk in every bin, at distance 0', () => {
     const centre: [number, number] = [50, 50];
-    const touching = box(53, 40, 10, 20);
-    const framePlan = plan([new PointLight({ position: centre, range: 150, radius: 5 })], [box(120, 45), box(90, 45), touching]);
-    expect(binEntries(framePlan, binOf(centre, [100, 50])).map(([record, , distance]) => [record, distance])).toEqual([[2, 0], [1, 40], [0, 70]]);
-    for (const bin of [0, 64, 128, 200]) expect(binEntries(framePlan, bin)[0]).toEqual([2, 4, 0]);
+    const framePlan = plan([light(centre, 5)], [box(120, 45), box(90, 45), box(53, 40, 10, 20)]);
+    const listed = binEntries(framePlan, binAt(centre, 0));
+    expect(listed.map(([record]) => record)).toEqual([2, 1, 0]);
+    // Distances are bucket floors (160 / 32 = 5 units each) below each hull's bounding circle: 37.9 and 67.9.
+    expect(listed.map(([, , distance]) => distance)).toEqual([0, 35, 65]);
+    for (let bin = 0; bin < BIN_COUNT; bin++) expect(binEntries(framePlan, bin)[0]).toEqual([2, 1, 0]);
   });
 
   it('makes a concave hull its triangles and a convex hull of more than 8 points a fan of records', () => {
