@@ -152,7 +152,7 @@ export class Hull {
     return this._shapeValid && this._scale[0] !== 0 && this._scale[1] !== 0;
   }
 
-  /** Whether the hull is valid and convex (convex hulls get the cheaper one-region-per-hull shadow geometry). */
+  /** Whether the hull is valid and convex (a convex hull of up to 8 points is one shadow record; a concave one is its triangles). */
   get convex(): boolean {
     return this._convex && this.valid;
   }
