@@ -28,5 +28,16 @@ float distanceFalloff() {
 // Alpha is 0 so additive blending leaves the lightmap's alpha untouched.
 // The shadow is computed only where the light adds something.
 void writeLight(float strength) {
+#ifdef SHADOW_STATISTICS
+  // The benchmark's statistics build: per light pixel, 1, the records visited, 1 when none was.
+  lightVisibility();
+#ifdef SHADOWED
+  float visited = float(visitedRecords);
+#else
+  float visited = 0.0;
+#endif
+  o_light = strength > 0.0 ? vec4(1.0, visited, visited == 0.0 ? 1.0 : 0.0, 0.0) : vec4(0.0);
+#else
   o_light = vec4(v_color * (strength > 0.0 ? strength * lightVisibility() : 0.0), 0.0);
+#endif
 }

@@ -264,8 +264,16 @@ bool insideDisk;
 // Set when the pixel lies inside a record: then its visibility is decided (dark, or lit whole).
 bool insideHull;
 
+#ifdef SHADOW_STATISTICS
+// Records the main loop visited, for the benchmark's statistics build (see light-common).
+int visitedRecords = 0;
+#endif
+
 // Visits one record: inside test, then its interval into the union or onto the partials.
 void visitRecord(int record) {
+#ifdef SHADOW_STATISTICS
+  visitedRecords++;
+#endif
   loadRecord(record);
   if (pixelInsideRecord()) {
     insideHull = true;
