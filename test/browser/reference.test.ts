@@ -46,7 +46,7 @@ beforeAll(async () => {
 });
 
 afterAll(async () => {
-  console.log(formatErrorTable('Chromium (SwiftShader) lightmap vs CPU reference (error in units of full light)', figures));
+  console.log(formatErrorTable('Chromium (SwiftShader) lightmap vs exact CPU reference (error in units of full light)', figures));
   await browser?.close();
   await server?.close();
   if (outDir) rmSync(outDir, { recursive: true, force: true });
@@ -54,7 +54,7 @@ afterAll(async () => {
 
 describe('reference scenes in Chromium', () => {
   for (const scene of REFERENCE_SCENES) {
-    it(`matches the disk-sampling reference: ${scene.name}`, async () => {
+    it(`matches the exact reference: ${scene.name}`, async () => {
       const texels = await page.evaluate((s) => (window as unknown as ReferencePage).renderScene(s), scene);
       const errors = compareToReference(scene, lightmapToWorldRows(texels, scene.width, scene.height), computeReference(scene));
       figures.push({ scene: scene.name, errors });

@@ -3,16 +3,27 @@ import type { ReferenceScene } from './scenes';
 
 /**
  * A renderer set up for a reference scene: ambient black and Solid shadows, so the lightmap is
- * exactly falloff × visible fraction × colour × intensity everywhere, hull interiors included
- * (the reference counts them as hidden: every segment out of a hull crosses its outline).
- * Shared by the headless-gl test and the Chromium page.
+ * exactly Σ falloff × visible fraction × colour × intensity over the lights everywhere, hull
+ * interiors included (the reference keeps them dark, as Solid does). Shared by the headless-gl
+ * tests and the Chromium page.
  */
 export function createSceneRenderer(gl: WebGL2RenderingContext, scene: ReferenceScene): PenumbraRenderer {
   const renderer = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0], width: scene.width, height: scene.height });
-  const { position, range, radius, color, intensity } = scene.light;
-  renderer.addLight(new PointLight({ position, range, radius, color, intensity, shadowType: ShadowType.Solid }));
-  for (const points of scene.hulls) renderer.addHull(new Hull(points));
+  setScene(renderer, scene);
   return renderer;
+}
+
+/**
+ * Replaces every light and hull of `renderer` with the scene's (new objects each time), so one
+ * renderer can render many scenes of its size in turn.
+ */
+export function setScene(renderer: PenumbraRenderer, scene: ReferenceScene): void {
+  for (const light of [...renderer.lights]) renderer.removeLight(light);
+  for (const hull of [...renderer.hulls]) renderer.removeHull(hull);
+  for (const { position, range, radius, color, intensity } of scene.lights) {
+    renderer.addLight(new PointLight({ position, range, radius, color, intensity, shadowType: ShadowType.Solid }));
+  }
+  for (const points of scene.hulls) renderer.addHull(new Hull(points));
 }
 
 /** Lightmap texels (RGBA, rows bottom-up as GL reads them) → RGB rows top-down as the world is laid out. */

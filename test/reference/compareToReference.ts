@@ -1,7 +1,7 @@
-import type { ReferenceImage } from './softShadowReference';
+import { LIT, UMBRA, type ReferenceImage } from './softShadowReference';
 import type { ReferenceScene } from './scenes';
 
-/** Error figures of one class of pixels, in units of the light's full strength (colour × intensity). */
+/** Error figures of one class of pixels, in units of full light (see {@link compareToReference}). */
 export interface ErrorFigures {
   pixels: number;
   mean: number;
@@ -12,37 +12,48 @@ export interface ErrorFigures {
 /** Figures over all pixels within range, and split by the reference's visibility. */
 export interface SceneErrors {
   all: ErrorFigures;
-  /** Whole disk visible. */
+  /** Every light in range sees its whole disk. */
   lit: ErrorFigures;
-  /** No part of the disk visible. */
+  /** No light in range sees any part of its disk (hull insides included). */
   umbra: ErrorFigures;
-  /** Part of the disk visible. */
+  /** The rest: part of some disk visible. */
   penumbra: ErrorFigures;
+  /** Pixels within range left out as ambiguous (see `ReferenceImage.ambiguous`). */
+  ambiguous: number;
 }
 
 /**
  * Compares a rendered lightmap (RGB rows top-down) with the reference over every pixel within
- * the light's range; each channel's error is divided by that channel's full strength, and a
- * pixel's error is its worst channel.
+ * range of some light, leaving out the reference's ambiguous pixels (centres on a hull outline or
+ * on a hard shadow's edge, to within the renderer's precision).
+ *
+ * Errors are in units of full light of the strongest light: each channel's error is divided by the
+ * largest colour × intensity any light of the scene has in that channel, and a pixel's error is its
+ * worst channel. With one light this is that light's full strength; with several, an error of 0.01
+ * is a hundredth of the brightest light at its centre, whichever lights it comes from (the lightmap
+ * holds only their sum, so errors cannot be split per light).
  */
 export function compareToReference(scene: ReferenceScene, rendered: Float32Array, reference: ReferenceImage): SceneErrors {
-  const color = scene.light.color ?? [1, 1, 1];
-  const intensity = scene.light.intensity ?? 1;
+  const full = [0, 1, 2].map((c) => Math.max(...scene.lights.map((l) => (l.color ?? [1, 1, 1])[c] * (l.intensity ?? 1))));
   const classes = { all: [] as number[], lit: [] as number[], umbra: [] as number[], penumbra: [] as number[] };
+  let ambiguous = 0;
   for (let pixel = 0; pixel < reference.width * reference.height; pixel++) {
     if (!reference.inRange[pixel]) continue;
+    if (reference.ambiguous[pixel]) {
+      ambiguous++;
+      continue;
+    }
     let error = 0;
     for (let c = 0; c < 3; c++) {
-      const full = color[c] * intensity;
-      if (full > 0) error = Math.max(error, Math.abs(rendered[pixel * 3 + c] - reference.light[pixel * 3 + c]) / full);
+      if (full[c] > 0) error = Math.max(error, Math.abs(rendered[pixel * 3 + c] - reference.light[pixel * 3 + c]) / full[c]);
     }
-    const visibility = reference.visibility[pixel];
+    const shade = reference.shade[pixel];
     classes.all.push(error);
-    (visibility === 1 ? classes.lit : visibility === 0 ? classes.umbra : classes.penumbra).push(error);
+    (shade === LIT ? classes.lit : shade === UMBRA ? classes.umbra : classes.penumbra).push(error);
   }
   return {
     all: figuresOf(classes.all), lit: figuresOf(classes.lit),
-    umbra: figuresOf(classes.umbra), penumbra: figuresOf(classes.penumbra),
+    umbra: figuresOf(classes.umbra), penumbra: figuresOf(classes.penumbra), ambiguous,
   };
 }
 

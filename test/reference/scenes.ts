@@ -1,7 +1,7 @@
 /**
- * The reference scenes: one light (white unless stated, Solid shadows) and world-space hulls,
- * as plain JSON-able data so the headless-gl test and the Chromium page render the very same
- * scenes. Sizes are small (the CPU reference samples the disk for every shadowed pixel).
+ * The reference scenes: lights (white unless stated, Solid shadows) and world-space hulls, as
+ * plain JSON-able data so the headless-gl test and the Chromium page render the very same scenes.
+ * Sizes are small (the sampling reference tests thousands of disk points per shadowed pixel).
  */
 export type Point = [number, number];
 
@@ -17,7 +17,8 @@ export interface ReferenceScene {
   name: string;
   width: number;
   height: number;
-  light: ReferenceLight;
+  /** Every light adds its own light (ambient black): the expected lightmap is their sum. */
+  lights: ReferenceLight[];
   /** World-space outlines, in either winding. */
   hulls: Point[][];
 }
@@ -42,45 +43,45 @@ const comb: Point[] = [[70, 30], [80, 30], [80, 45], [100, 45], [100, 55], [80, 
 
 export const REFERENCE_SCENES: readonly ReferenceScene[] = [
   { name: 'convex, hard (r=0)', width: WIDTH, height: HEIGHT,
-    light: { position: [40, 60], range: 140, radius: 0 }, hulls: [box(70, 45, 16, 30)] },
+    lights: [{ position: [40, 60], range: 140, radius: 0 }], hulls: [box(70, 45, 16, 30)] },
   { name: 'convex rotated, soft (r=8)', width: WIDTH, height: HEIGHT,
-    light: { position: [40, 60], range: 140, radius: 8 }, hulls: [[[72, 50], [90, 42], [98, 62], [80, 74]]] },
+    lights: [{ position: [40, 60], range: 140, radius: 8 }], hulls: [[[72, 50], [90, 42], [98, 62], [80, 74]]] },
   { name: 'concave U, hard (r=0)', width: WIDTH, height: HEIGHT,
-    light: { position: [30, 60], range: 150, radius: 0 }, hulls: [uShape] },
+    lights: [{ position: [30, 60], range: 150, radius: 0 }], hulls: [uShape] },
   { name: 'concave U, soft (r=6)', width: WIDTH, height: HEIGHT,
-    light: { position: [30, 60], range: 150, radius: 6 }, hulls: [uShape] },
+    lights: [{ position: [30, 60], range: 150, radius: 6 }], hulls: [uShape] },
   { name: 'U open towards the light, soft (r=6)', width: WIDTH, height: HEIGHT,
-    light: { position: [30, 60], range: 150, radius: 6 }, hulls: [openU] },
+    lights: [{ position: [30, 60], range: 150, radius: 6 }], hulls: [openU] },
   { name: 'concave L, soft (r=6)', width: WIDTH, height: HEIGHT,
-    light: { position: [35, 100], range: 150, radius: 6, color: [1, 0.6, 0.3], intensity: 0.8 }, hulls: [lShape] },
+    lights: [{ position: [35, 100], range: 150, radius: 6, color: [1, 0.6, 0.3], intensity: 0.8 }], hulls: [lShape] },
   { name: 'two hulls, same-side penumbrae (r=10)', width: WIDTH, height: HEIGHT,
-    light: { position: [30, 60], range: 150, radius: 10 }, hulls: [box(60, 30, 10, 22), box(95, 22, 10, 22)] },
+    lights: [{ position: [30, 60], range: 150, radius: 10 }], hulls: [box(60, 30, 10, 22), box(95, 22, 10, 22)] },
   { name: 'light between pillars (r=6)', width: WIDTH, height: HEIGHT,
-    light: { position: [80, 60], range: 90, radius: 6 }, hulls: [box(50, 52, 10, 16), box(100, 52, 10, 16)] },
-  // Each post hides only a middle slice of the disk from the pixels far behind both: the renderer
-  // keeps the largest slice there rather than the union (its documented approximation).
+    lights: [{ position: [80, 60], range: 90, radius: 6 }], hulls: [box(50, 52, 10, 16), box(100, 52, 10, 16)] },
+  // Each post hides only a middle slice of the disk from the pixels far behind both: the visible
+  // fraction there is the disk less the union of the two slices.
   { name: 'two posts, middle slices (r=12)', width: WIDTH, height: HEIGHT,
-    light: { position: [30, 60], range: 150, radius: 12 }, hulls: [box(70, 54, 3, 3), box(70, 63, 3, 3)] },
+    lights: [{ position: [30, 60], range: 150, radius: 12 }], hulls: [box(70, 54, 3, 3), box(70, 63, 3, 3)] },
   // The wall's lower face passes through the light disk: seen from the upper part of the disk that
   // face is a back face, so the pixels just below the wall lose part of the disk.
   { name: 'wall grazing the disk (r=10)', width: WIDTH, height: HEIGHT,
-    light: { position: [40, 60], range: 150, radius: 10 }, hulls: [box(60, 48, 80, 6)] },
+    lights: [{ position: [40, 60], range: 150, radius: 10 }], hulls: [box(60, 48, 80, 6)] },
   // Close to the disk: a region that opens wide (about 67° either side).
   { name: 'box close to the disk (r=10)', width: WIDTH, height: HEIGHT,
-    light: { position: [40, 60], range: 140, radius: 10 }, hulls: [box(55, 50, 10, 20)] },
+    lights: [{ position: [40, 60], range: 140, radius: 10 }], hulls: [box(55, 50, 10, 20)] },
   // Closer still (80° either side): too wide for one region, a convex hull cast as one quad per edge.
   { name: 'box very close to the disk (r=10)', width: WIDTH, height: HEIGHT,
-    light: { position: [40, 60], range: 140, radius: 10 }, hulls: [box(52, 50, 10, 20)] },
+    lights: [{ position: [40, 60], range: 140, radius: 10 }], hulls: [box(52, 50, 10, 20)] },
   // Hulls of more than eight points: their stages read the points from the texture, not varyings.
   { name: 'round pillar of 16 points (r=8)', width: WIDTH, height: HEIGHT,
-    light: { position: [40, 60], range: 140, radius: 8 }, hulls: [roundHull(85, 62, 12, 16)] },
+    lights: [{ position: [40, 60], range: 140, radius: 8 }], hulls: [roundHull(85, 62, 12, 16)] },
   { name: 'comb of 12 points (r=6)', width: WIDTH, height: HEIGHT,
-    light: { position: [30, 60], range: 150, radius: 6 }, hulls: [comb] },
+    lights: [{ position: [30, 60], range: 150, radius: 6 }], hulls: [comb] },
   { name: 'round pillar of 12 points close to the disk (r=10)', width: WIDTH, height: HEIGHT,
-    light: { position: [40, 60], range: 140, radius: 10 }, hulls: [roundHull(62, 60, 10, 12)] },
+    lights: [{ position: [40, 60], range: 140, radius: 10 }], hulls: [roundHull(62, 60, 10, 12)] },
   { name: 'three hulls, hard (r=0)', width: WIDTH, height: HEIGHT,
     // Off the pixel grid: from a light on it, rows of pixel centres line up exactly with a hull corner,
     // where a grazing segment is neither clearly lit nor clearly hidden.
-    light: { position: [80.3, 60.2], range: 100, radius: 0 },
+    lights: [{ position: [80.3, 60.2], range: 100, radius: 0 }],
     hulls: [box(95, 30, 12, 12), [[55, 75], [70, 85], [50, 95]], box(60, 40, 8, 8)] },
 ];

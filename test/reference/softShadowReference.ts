@@ -1,35 +1,143 @@
-import type { ReferenceScene } from './scenes';
+import { ExactVisibility } from './exactVisibility';
+import { SceneGeometry, segmentsCross } from './sceneGeometry';
+import type { ReferenceLight, ReferenceScene } from './scenes';
 
 /**
- * The ground truth of SPEC §6, computed on the CPU without any of the renderer's math: the light
- * is a uniformly emitting disk, sampled at area-uniform points; a sample lights a pixel centre when
- * the straight segment between them crosses no hull edge. Radius 0 is a single sample at the centre
- * (hard shadows).
+ * The ground truth of SPEC §6 on the CPU, without any of the renderer's math: each light is a
+ * uniformly emitting disk, and a pixel centre receives falloff × colour × intensity × the fraction
+ * of the disk whose straight segment to it crosses no hull edge; the lights add up. Pixel centres
+ * inside a hull receive nothing (the scenes use Solid shadows, which keep hulls dark; without that
+ * rule a pixel inside a hull that overlaps a disk would see the part of the disk inside the same
+ * hull).
+ *
+ * Three ways to get the fraction:
+ * - `'exact'` (default): integrates over the directions from the pixel, in closed form piece by
+ *   piece (see exactVisibility.ts). Fast and exact to rounding: what the tests compare the
+ *   renderer with.
+ * - `'quadrature'`: the same pieces integrated with Gauss–Legendre, to check the closed forms.
+ * - `'sampled'`: tests the segments to area-uniform disk samples. The simplest statement of SPEC §6,
+ *   slow and good to about 2e-3; kept to check the exact one (test/unit/reference.test.ts).
  */
+export interface ReferenceOptions {
+  method?: 'exact' | 'quadrature' | 'sampled';
+  /** Gauss–Legendre nodes per piece for `'quadrature'`. Default 8. */
+  nodes?: number;
+  /** Disk samples for `'sampled'`. Default {@link DISK_SAMPLES}. */
+  samples?: number;
+  /** Computes only pixels whose x and y are multiples of `step` (the others count as out of range). Default 1. */
+  step?: number;
+}
+
+/** A pixel's shading class over the lights in range. */
+export const LIT = 0, PENUMBRA = 1, UMBRA = 2;
+
 export interface ReferenceImage {
   width: number;
   height: number;
-  /** Fraction of the disk visible from each pixel centre, rows top-down (world y down). */
-  visibility: Float32Array;
-  /** Expected lightmap RGB per pixel (falloff × visibility × colour × intensity), rows top-down. */
+  /** Per light, in scene order: fraction of its disk visible from each pixel centre, rows top-down (world y down); 0 inside hulls and out of its range. */
+  visibility: Float32Array[];
+  /** Expected lightmap RGB per pixel (Σ falloff × visibility × colour × intensity), rows top-down. */
   light: Float32Array;
-  /** 1 where the pixel centre is closer to the light than its range. */
+  /** 1 where the pixel centre is closer than its range to at least one light. */
   inRange: Uint8Array;
+  /**
+   * 1 where the expected value may flip at a distance below the renderer's precision, so a
+   * rendered pixel cannot be held to it: see {@link OUTLINE_BAND} and {@link HARD_EDGE_BAND}.
+   */
+  ambiguous: Uint8Array;
+  /** Per pixel: LIT (every light in range sees all of its disk), UMBRA (none sees any) or PENUMBRA. */
+  shade: Uint8Array;
 }
 
 /**
- * Disk samples. A sunflower (Fibonacci) pattern is area-uniform and low-discrepancy: for a disk
- * cut by a straight line its visible fraction errs by about N^-3/4, ≈ 0.001 for N = 4096, far
- * below the 0.01 mean the renderer is held to.
+ * Pixel centres this close to a hull outline (in pixels) are ambiguous: the renderer darkens hull
+ * insides by rasterizing them, and rasterizers snap vertices to a sub-pixel grid. headless-gl and
+ * Chromium's SwiftShader both report SUBPIXEL_BITS = 4 (the WebGL minimum): a 1/16 pixel grid, so a
+ * centre within half a step (1/32) of the outline may land on either side. The band is a whole step.
+ */
+export const OUTLINE_BAND = 1 / 16;
+/**
+ * Pixel centres this close to the edge of a hard shadow (the ray from a radius-0 light through a
+ * hull point) are ambiguous too: the renderer may draw that edge as geometry, rasterized on the
+ * same 1/16 pixel grid (one such pixel, 0.007 from the ray, flips in Chromium).
+ */
+export const HARD_EDGE_BAND = 1 / 16;
+
+export function computeReference(scene: ReferenceScene, options: ReferenceOptions = {}): ReferenceImage {
+  const { width, height } = scene;
+  const { method = 'exact', step = 1 } = options;
+  const geometry = new SceneGeometry(scene.hulls);
+  const fractionOf = method === 'sampled'
+    ? sampledFraction(geometry, options.samples ?? DISK_SAMPLES)
+    : exactFraction(geometry, method === 'quadrature' ? { method: 'quadrature', nodes: options.nodes } : {});
+  const pixels = width * height;
+  const visibility = scene.lights.map(() => new Float32Array(pixels));
+  const light = new Float32Array(pixels * 3);
+  const inRange = new Uint8Array(pixels);
+  const ambiguous = new Uint8Array(pixels);
+  const shade = new Uint8Array(pixels);
+  for (let y = 0; y < height; y += step) {
+    for (let x = 0; x < width; x += step) {
+      const px = x + 0.5, py = y + 0.5;
+      const pixel = y * width + x;
+      const insideHull = geometry.isInsideHull(px, py);
+      if (geometry.isNearOutline(px, py, OUTLINE_BAND)) ambiguous[pixel] = 1;
+      let all = true, none = true;
+      scene.lights.forEach((source, l) => {
+        const [lx, ly] = source.position;
+        const falloff = Math.max(0, 1 - Math.hypot(px - lx, py - ly) / source.range);
+        if (falloff === 0) return;
+        inRange[pixel] = 1;
+        if (source.radius === 0 && nearHardEdge(geometry, px, py, lx, ly)) ambiguous[pixel] = 1;
+        const fraction = insideHull ? 0 : fractionOf(px, py, source);
+        visibility[l][pixel] = fraction;
+        if (fraction !== 1) all = false;
+        if (fraction !== 0) none = false;
+        const color = source.color ?? [1, 1, 1];
+        const intensity = source.intensity ?? 1;
+        for (let c = 0; c < 3; c++) light[pixel * 3 + c] += falloff * fraction * color[c] * intensity;
+      });
+      shade[pixel] = all ? LIT : none ? UMBRA : PENUMBRA;
+    }
+  }
+  return { width, height, visibility, light, inRange, ambiguous, shade };
+}
+
+type FractionOf = (px: number, py: number, light: ReferenceLight) => number;
+
+function exactFraction(geometry: SceneGeometry, options: ConstructorParameters<typeof ExactVisibility>[1]): FractionOf {
+  const exact = new ExactVisibility(geometry, options);
+  return (px, py, light) => exact.fraction(px, py, light.position[0], light.position[1], light.radius);
+}
+
+/** Whether the pixel lies within HARD_EDGE_BAND of a ray from the light's centre through a hull point between them. */
+function nearHardEdge(geometry: SceneGeometry, px: number, py: number, lx: number, ly: number): boolean {
+  const v = geometry.vertices;
+  const dx = px - lx, dy = py - ly;
+  const lengthSquared = dx * dx + dy * dy;
+  for (let i = 0; i < v.length; i += 2) {
+    const vx = v[i] - lx, vy = v[i + 1] - ly;
+    const along = vx * dx + vy * dy;
+    if (along <= 0 || along > lengthSquared) continue;
+    // Distance from the pixel to the line through the light and the point.
+    if (Math.abs(vx * dy - vy * dx) < HARD_EDGE_BAND * Math.sqrt(vx * vx + vy * vy)) return true;
+  }
+  return false;
+}
+
+/**
+ * Disk samples for the sampling reference. A sunflower (Fibonacci) pattern is area-uniform and
+ * low-discrepancy: for a disk cut by a straight line its visible fraction errs by about N^-3/4,
+ * ≈ 0.002 for N = 4096.
  */
 export const DISK_SAMPLES = 4096;
 const GOLDEN_ANGLE = Math.PI * (3 - Math.sqrt(5));
 
-function diskSamples(cx: number, cy: number, radius: number): Float64Array {
+function diskSamples(cx: number, cy: number, radius: number, count: number): Float64Array {
   if (radius === 0) return Float64Array.of(cx, cy);
-  const samples = new Float64Array(DISK_SAMPLES * 2);
-  for (let i = 0; i < DISK_SAMPLES; i++) {
-    const r = radius * Math.sqrt((i + 0.5) / DISK_SAMPLES);
+  const samples = new Float64Array(count * 2);
+  for (let i = 0; i < count; i++) {
+    const r = radius * Math.sqrt((i + 0.5) / count);
     const angle = i * GOLDEN_ANGLE;
     samples[2 * i] = cx + r * Math.cos(angle);
     samples[2 * i + 1] = cy + r * Math.sin(angle);
@@ -37,74 +145,38 @@ function diskSamples(cx: number, cy: number, radius: number): Float64Array {
   return samples;
 }
 
-/** True when segment p→s crosses segment a→b (parallel segments count as not crossing: zero measure). */
-function crosses(px: number, py: number, sx: number, sy: number, ax: number, ay: number, bx: number, by: number): boolean {
-  const dx = sx - px, dy = sy - py, ex = bx - ax, ey = by - ay;
-  const denominator = dx * ey - dy * ex;
-  if (denominator === 0) return false;
-  const qx = ax - px, qy = ay - py;
-  const t = (qx * ey - qy * ex) / denominator;
-  const u = (qx * dy - qy * dx) / denominator;
-  return t >= 0 && t <= 1 && u >= 0 && u <= 1;
-}
-
-export function computeReference(scene: ReferenceScene): ReferenceImage {
-  const { width, height, light } = scene;
-  const [lx, ly] = light.position;
-  const color = light.color ?? [1, 1, 1];
-  const intensity = light.intensity ?? 1;
-  const samples = diskSamples(lx, ly, light.radius);
-  const sampleCount = samples.length / 2;
-  const edges = hullEdges(scene.hulls);
+/** The sampling reference: the share of disk samples whose segment to the pixel centre crosses no hull edge. */
+function sampledFraction(geometry: SceneGeometry, count: number): FractionOf {
+  const edges = geometry.edges;
   const candidates = new Float64Array(edges.length);
-  const visibility = new Float32Array(width * height);
-  const lightOut = new Float32Array(width * height * 3);
-  const inRange = new Uint8Array(width * height);
-  for (let y = 0; y < height; y++) {
-    for (let x = 0; x < width; x++) {
-      const px = x + 0.5, py = y + 0.5;
-      const pixel = y * width + x;
-      const falloff = Math.max(0, 1 - Math.hypot(px - lx, py - ly) / light.range);
-      if (falloff === 0) continue;
-      inRange[pixel] = 1;
-      // Only edges overlapping the box around the pixel and the disk can block a segment.
-      const minX = Math.min(px, lx - light.radius), maxX = Math.max(px, lx + light.radius);
-      const minY = Math.min(py, ly - light.radius), maxY = Math.max(py, ly + light.radius);
-      let candidateCount = 0;
-      for (let e = 0; e < edges.length; e += 4) {
-        const ax = edges[e], ay = edges[e + 1], bx = edges[e + 2], by = edges[e + 3];
-        if (Math.max(ax, bx) < minX || Math.min(ax, bx) > maxX || Math.max(ay, by) < minY || Math.min(ay, by) > maxY) continue;
-        candidates.set(edges.subarray(e, e + 4), candidateCount);
-        candidateCount += 4;
-      }
-      let visible = sampleCount;
-      if (candidateCount > 0) {
-        for (let s = 0; s < sampleCount; s++) {
-          const sx = samples[2 * s], sy = samples[2 * s + 1];
-          for (let e = 0; e < candidateCount; e += 4) {
-            if (crosses(px, py, sx, sy, candidates[e], candidates[e + 1], candidates[e + 2], candidates[e + 3])) {
-              visible--;
-              break;
-            }
-          }
+  const samplesOf = new Map<ReferenceLight, Float64Array>();
+  return (px, py, light) => {
+    let samples = samplesOf.get(light);
+    if (!samples) samplesOf.set(light, (samples = diskSamples(light.position[0], light.position[1], light.radius, count)));
+    const [lx, ly] = light.position;
+    const sampleCount = samples.length / 2;
+    // Only edges overlapping the box around the pixel and the disk can block a segment.
+    const minX = Math.min(px, lx - light.radius), maxX = Math.max(px, lx + light.radius);
+    const minY = Math.min(py, ly - light.radius), maxY = Math.max(py, ly + light.radius);
+    let candidateCount = 0;
+    for (let e = 0; e < edges.length; e += 4) {
+      const ax = edges[e], ay = edges[e + 1], bx = edges[e + 2], by = edges[e + 3];
+      if (Math.max(ax, bx) < minX || Math.min(ax, bx) > maxX || Math.max(ay, by) < minY || Math.min(ay, by) > maxY) continue;
+      candidates.set(edges.subarray(e, e + 4), candidateCount);
+      candidateCount += 4;
+    }
+    if (candidateCount === 0) return 1;
+    const crosses = segmentsCross; // a local: vitest's module transform makes every imported call a property read
+    let visible = sampleCount;
+    for (let s = 0; s < sampleCount; s++) {
+      const sx = samples[2 * s], sy = samples[2 * s + 1];
+      for (let e = 0; e < candidateCount; e += 4) {
+        if (crosses(px, py, sx, sy, candidates[e], candidates[e + 1], candidates[e + 2], candidates[e + 3])) {
+          visible--;
+          break;
         }
       }
-      const fraction = visible / sampleCount;
-      visibility[pixel] = fraction;
-      for (let c = 0; c < 3; c++) lightOut[pixel * 3 + c] = falloff * fraction * color[c] * intensity;
     }
-  }
-  return { width, height, visibility, light: lightOut, inRange };
-}
-
-/** All hull edges as `[ax, ay, bx, by, …]`. */
-function hullEdges(hulls: ReferenceScene['hulls']): Float64Array {
-  const edges: number[] = [];
-  for (const hull of hulls) {
-    for (let i = 0; i < hull.length; i++) {
-      const a = hull[i], b = hull[(i + 1) % hull.length];
-      edges.push(a[0], a[1], b[0], b[1]);
-    }
-  }
-  return Float64Array.from(edges);
+    return visible / sampleCount;
+  };
 }

@@ -1,5 +1,6 @@
 // Renders the reference scenes in the browser for test/browser/reference.test.ts, which compares
-// the lightmaps with the CPU reference on the Node side. Exposes its entry points on `window`.
+// the lightmaps with the exact CPU reference on the Node side. Each scene is built with all of its
+// lights and hulls by test/reference/buildScene.ts, as on headless-gl. Exposes its entry points on `window`.
 import { createSceneRenderer } from '../../reference/buildScene';
 import type { ReferenceScene } from '../../reference/scenes';
 import { readTexture } from '../../gl/readTexture';
