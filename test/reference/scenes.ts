@@ -26,7 +26,7 @@ export interface ReferenceScene {
 const WIDTH = 160;
 const HEIGHT = 120;
 
-const box = (x: number, y: number, w: number, h: number): Point[] => [[x, y], [x + w, y], [x + w, y + h], [x, y + h]];
+export const box = (x: number, y: number, w: number, h: number): Point[] => [[x, y], [x + w, y], [x + w, y + h], [x, y + h]];
 
 /** A U opening towards +x (away from a light on its left): its arms cast a concave shadow. */
 const uShape: Point[] = [[70, 35], [100, 35], [100, 45], [80, 45], [80, 75], [100, 75], [100, 85], [70, 85]];

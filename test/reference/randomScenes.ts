@@ -1,0 +1,94 @@
+import { SceneGeometry } from './sceneGeometry';
+import { box, type Point, type ReferenceLight, type ReferenceScene } from './scenes';
+
+/** mulberry32: a small, fast, seeded PRNG (uniform in [0, 1)); the same seed gives the same sequence everywhere. */
+export function createRandom(seed: number): () => number {
+  let state = seed >>> 0;
+  return () => {
+    state = (state + 0x6d2b79f5) >>> 0;
+    let t = state;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+/**
+ * Coordinates are multiples of 1/64: exact in float32 (the renderer keeps hull points as float32)
+ * and short in JSON.
+ */
+const snap = (value: number) => Math.round(value * 64) / 64;
+
+/**
+ * A random scene of `width × height` from `seed`: 1–5 features, each a convex polygon, a rotated
+ * box, a concave star or U, or a row of 3–8 touching square tiles (one hull each, on whole pixels
+ * like a tile map); hulls may overlap one another and reach past the image. Then 1–3 lights,
+ * anywhere within 8 pixels of the image, centre outside every hull (at least half a pixel from any
+ * outline) with a disk free to overlap hulls: radius 0 one time in five, else 1–30; range 20–100;
+ * white or coloured, intensity 0.5–1.5.
+ */
+export function randomScene(seed: number, width: number, height: number): ReferenceScene {
+  const random = createRandom(seed);
+  const between = (low: number, high: number) => low + (high - low) * random();
+  const integer = (low: number, high: number) => Math.floor(between(low, high + 1));
+  const hulls: Point[][] = [];
+  const featureCount = integer(1, 5);
+  for (let f = 0; f < featureCount; f++) {
+    const cx = between(0, width), cy = between(0, height);
+    const rotation = between(0, 2 * Math.PI);
+    const kind = integer(0, 4);
+    if (kind === 0) {
+      // Convex: 3–8 points on a circle at jittered angles, stretched into an ellipse and turned.
+      const count = integer(3, 8), radius = between(1.5, 14), stretch = between(0.4, 1);
+      const onCircle = polygon(count, (i) => [radius, (2 * Math.PI * (i + between(-0.3, 0.3))) / count], 0, 0);
+      hulls.push(transform(onCircle.map(([x, y]) => [x, y * stretch]), cx, cy, rotation, 1));
+    } else if (kind === 1) {
+      // A rotated box, from a thin post to a slab.
+      const w = between(2, 24), h = between(2, 12);
+      hulls.push(transform([[-w / 2, -h / 2], [w / 2, -h / 2], [w / 2, h / 2], [-w / 2, h / 2]], cx, cy, rotation, 1));
+    } else if (kind === 2) {
+      // Concave: a star of 5–10 points at alternating radii.
+      const count = integer(5, 10), outer = between(4, 16), inner = outer * between(0.3, 0.7);
+      hulls.push(polygon(count, (i) => [i % 2 === 0 ? outer : inner * between(0.8, 1.2), rotation + (2 * Math.PI * i) / count], cx, cy));
+    } else if (kind === 3) {
+      // Concave: a U (notch of random depth), rotated and scaled.
+      const depth = between(0.3, 0.8);
+      const u: Point[] = [[-1, -1], [-0.4, -1], [-0.4, 1 - 2 * depth], [0.4, 1 - 2 * depth], [0.4, -1], [1, -1], [1, 1], [-1, 1]];
+      hulls.push(transform(u, cx, cy, rotation, between(5, 15)));
+    } else {
+      // A row or column of touching square tiles on whole pixels.
+      const size = random() < 0.5 ? 4 : 8, count = integer(3, 8), horizontal = random() < 0.5;
+      const x0 = Math.round(cx - size), y0 = Math.round(cy - size);
+      for (let i = 0; i < count; i++) hulls.push(horizontal ? box(x0 + i * size, y0, size, size) : box(x0, y0 + i * size, size, size));
+    }
+  }
+  const geometry = new SceneGeometry(hulls);
+  const lights: ReferenceLight[] = [];
+  const lightCount = integer(1, 3);
+  for (let attempt = 0; lights.length < lightCount && attempt < 1000; attempt++) {
+    const position: Point = [snap(between(-8, width + 8)), snap(between(-8, height + 8))];
+    if (geometry.isInsideHull(...position) || geometry.isNearOutline(...position, 0.5)) continue;
+    const light: ReferenceLight = {
+      position, range: snap(between(20, 100)), radius: random() < 0.2 ? 0 : snap(between(1, 30)),
+    };
+    if (random() < 0.3) light.color = [snap(between(0.3, 1)), snap(between(0.3, 1)), snap(between(0.3, 1))];
+    const intensity = snap(between(0.5, 1.5));
+    if (intensity !== 1) light.intensity = intensity;
+    lights.push(light);
+  }
+  return { name: `random scene (seed ${seed})`, width, height, lights, hulls };
+}
+
+/** `count` points at (radius, angle) pairs around (cx, cy). */
+function polygon(count: number, pointAt: (i: number) => [number, number], cx: number, cy: number): Point[] {
+  return Array.from({ length: count }, (_, i) => {
+    const [radius, angle] = pointAt(i);
+    return [snap(cx + radius * Math.cos(angle)), snap(cy + radius * Math.sin(angle))];
+  });
+}
+
+/** Points scaled by `scale`, turned by `rotation` and moved to (cx, cy). */
+function transform(points: readonly Point[], cx: number, cy: number, rotation: number, scale: number): Point[] {
+  const cos = Math.cos(rotation), sin = Math.sin(rotation);
+  return points.map(([x, y]) => [snap(cx + scale * (x * cos - y * sin)), snap(cy + scale * (x * sin + y * cos))]);
+}
