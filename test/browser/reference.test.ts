@@ -6,14 +6,14 @@ import { build } from 'vite';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { lightmapToWorldRows } from '../reference/buildScene';
 import { compareToReference, formatErrorTable, type SceneErrors } from '../reference/compareToReference';
+import { MAX_LIMIT, MEAN_LIMIT, P99_LIMIT, UMBRA_LIMIT } from '../reference/limits';
 import { REFERENCE_SCENES, type ReferenceScene } from '../reference/scenes';
 import { computeReference } from '../reference/softShadowReference';
 import { collectPageErrors, launchChromium } from './chromium';
 import { serveDirectory, type StaticServer } from './staticServer';
 
-// The same targets as on headless-gl (test/gl/reference.test.ts), in units of full light.
-const MEAN_LIMIT = 0.01;
-const P99_LIMIT = 0.05;
+// The same limits as on headless-gl (test/gl/reference.test.ts, test/reference/limits.ts), in
+// units of full light, against the same exact CPU reference.
 
 let outDir: string;
 let server: StaticServer;
@@ -61,6 +61,12 @@ describe('reference scenes in Chromium', () => {
       expect(pageErrors).toEqual([]);
       expect(errors.all.mean).toBeLessThanOrEqual(MEAN_LIMIT);
       expect(errors.all.p99).toBeLessThanOrEqual(P99_LIMIT);
+      expect(errors.all.max).toBeLessThanOrEqual(MAX_LIMIT);
+      // Behind a tile wall no light may leak through the seams: dark to one step of the mask.
+      if (scene.darkUmbra) {
+        expect(errors.umbra.pixels).toBeGreaterThan(1000);
+        expect(errors.umbra.max).toBeLessThanOrEqual(UMBRA_LIMIT);
+      }
     });
   }
 
@@ -74,6 +80,7 @@ describe('reference scenes in Chromium', () => {
     const restored = compareToReference(scene, lightmapToWorldRows(after, scene.width, scene.height), reference);
     expect(restored.all.mean).toBeLessThanOrEqual(MEAN_LIMIT);
     expect(restored.all.p99).toBeLessThanOrEqual(P99_LIMIT);
+    expect(restored.all.max).toBeLessThanOrEqual(MAX_LIMIT);
     // Same scene on rebuilt resources: the same pixels.
     let largest = 0;
     for (let i = 0; i < before.length; i++) largest = Math.max(largest, Math.abs(before[i] - after[i]));

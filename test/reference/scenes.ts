@@ -21,6 +21,11 @@ export interface ReferenceScene {
   lights: ReferenceLight[];
   /** World-space outlines, in either winding. */
   hulls: Point[][];
+  /**
+   * Also held to UMBRA_LIMIT (test/reference/limits.ts) in its umbra: set on the tile walls, where
+   * light leaking through the seams between tiles shows as lit pixels the reference calls umbra.
+   */
+  darkUmbra?: boolean;
 }
 
 const WIDTH = 160;
@@ -40,6 +45,13 @@ const roundHull = (x: number, y: number, radius: number, count: number): Point[]
   Array.from({ length: count }, (_, i) => [x + radius * Math.cos((2 * Math.PI * i) / count), y + radius * Math.sin((2 * Math.PI * i) / count)]);
 /** A comb of three teeth pointing away from a light on its left: 12 points, concave. */
 const comb: Point[] = [[70, 30], [80, 30], [80, 45], [100, 45], [100, 55], [80, 55], [80, 65], [100, 65], [100, 75], [80, 75], [80, 90], [70, 90]];
+
+/** `count` touching square tiles of side `size` in a column from (x, y) downwards: a tile map's wall, one hull per tile. */
+const tileColumn = (x: number, y: number, size: number, count: number): Point[][] =>
+  Array.from({ length: count }, (_, i) => box(x, y + i * size, size, size));
+
+/** A U whose notch opens upwards (towards −y): 12 wide, 16 deep, between arms 8 wide. */
+const notchUp: Point[] = [[62, 70], [70, 70], [70, 86], [82, 86], [82, 70], [90, 70], [90, 96], [62, 96]];
 
 export const REFERENCE_SCENES: readonly ReferenceScene[] = [
   { name: 'convex, hard (r=0)', width: WIDTH, height: HEIGHT,
@@ -84,4 +96,43 @@ export const REFERENCE_SCENES: readonly ReferenceScene[] = [
     // where a grazing segment is neither clearly lit nor clearly hidden.
     lights: [{ position: [80.3, 60.2], range: 100, radius: 0 }],
     hulls: [box(95, 30, 12, 12), [[55, 75], [70, 85], [50, 95]], box(60, 40, 8, 8)] },
+
+  // Tile maps: a wall of touching 8×8 tiles, one hull per tile, with the light four tiles away. No
+  // light may pass between two tiles (their shared edges hide the disk together), and a disk as
+  // wide as a tile or two hides behind the wall only when the tiles' shadows are joined exactly.
+  { name: 'wall of 12 touching tiles (r=8)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [56, 60], range: 150, radius: 8 }], hulls: tileColumn(88, 12, 8, 12), darkUmbra: true },
+  { name: 'wall of 12 touching tiles (r=16)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [56, 60], range: 150, radius: 16 }], hulls: tileColumn(88, 12, 8, 12), darkUmbra: true },
+  // Thin posts with gaps across the light's axis: behind them the disk is cut into several slices
+  // by hulls that each hide a different part of it.
+  { name: 'row of three 2×2 posts (r=12)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [30, 60], range: 150, radius: 12 }], hulls: [box(70, 53, 2, 2), box(70, 59, 2, 2), box(70, 65, 2, 2)] },
+  // Four touching crates, each its own hull, lit from two sides: the lights add up, and neither
+  // may leak through the seams between crates.
+  { name: '2×2 touching crates, two lights (r=8, r=6)', width: WIDTH, height: HEIGHT,
+    lights: [
+      { position: [40, 35], range: 130, radius: 8 },
+      { position: [125, 90], range: 110, radius: 6, color: [1, 0.7, 0.4], intensity: 0.8 },
+    ],
+    hulls: [box(72, 48, 10, 10), box(82, 48, 10, 10), box(72, 58, 10, 10), box(82, 58, 10, 10)] },
+  // One post behind the other along the light's axis, offset sideways: from far behind both each
+  // hides a different middle slice of the disk, and the slices overlap in part.
+  { name: 'two posts along the axis, middle slices (r=12)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [30, 60], range: 150, radius: 12 }], hulls: [box(58, 57, 3, 3), box(86, 61, 3, 3)] },
+  // A light above a notch, looking into it: the notch's floor and walls see the disk past the
+  // arms, which hide parts of it from each other (a hull hiding itself).
+  { name: 'light above a concave notch (r=8)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [76, 52], range: 120, radius: 8 }], hulls: [notchUp] },
+  // Disks overlapping hulls (centres outside every hull): the part of the disk inside a hull is
+  // hidden from every pixel outside it.
+  // A torch on a wall: its centre half a pixel off the wall's top face, its disk half inside.
+  { name: 'torch half inside a wall (r=8)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [80, 59.5], range: 120, radius: 8 }], hulls: [box(30, 60, 100, 10), box(60, 28, 10, 10)] },
+  // A lamp whose disk takes in a crate's corner.
+  { name: 'lamp over a crate corner (r=10)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [74, 44], range: 120, radius: 10 }], hulls: [box(80, 50, 16, 16)] },
+  // A wide light whose disk reaches a little into two hulls on either side.
+  { name: 'wide light grazing two hulls (r=20)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [80, 60], range: 110, radius: 20 }], hulls: [box(44, 45, 18, 10), box(93, 73, 14, 14)] },
 ];
