@@ -1,7 +1,8 @@
 import { mat4 } from 'gl-matrix';
-import { PenumbraRenderer } from '../src/index';
 import { createContext, destroyContext } from '../test/gl/context';
+import { readExtraStats, type ExtraStats } from './extraStats';
 import { probeCalls, stubCalls } from './glProbe';
+import type { BenchRenderer, RendererLibrary } from './library';
 import { createScene, WORLD_HEIGHT, WORLD_WIDTH, type SceneSpec } from './scenes';
 import { summarize, type Summary } from './stats';
 
@@ -25,6 +26,8 @@ export interface CpuResult {
   heapBytesPerFrame: number | null;
   lightsDrawn: number;
   edges: number;
+  /** The renderer's optional figures (see bench/extraStats.ts) after the last real-GL frame. */
+  extra: ExtraStats;
 }
 
 export interface CpuOptions {
@@ -46,15 +49,15 @@ const HEAP_WARMUP_MS = 20_000;
 /** Frames run on the real context to count GL calls and time them. */
 const PROBED_FRAMES = 10;
 
-/** Runs one scene on a headless-gl WebGL2 context, the world mapped onto small targets. */
-export function runCpu(spec: SceneSpec, options: CpuOptions): CpuResult {
+/** Runs one scene with `library`'s renderer on a headless-gl WebGL2 context, the world mapped onto small targets. */
+export function runCpu(spec: SceneSpec, library: RendererLibrary, options: CpuOptions): CpuResult {
   const width = WORLD_WIDTH / TARGET_DIVISOR, height = WORLD_HEIGHT / TARGET_DIVISOR;
   const gl = createContext(width, height);
-  const renderer = new PenumbraRenderer(gl, {
+  const renderer = new library.PenumbraRenderer(gl, {
     ambientColor: [0.05, 0.05, 0.05], width, height,
     viewProjection: mat4.ortho(mat4.create(), 0, WORLD_WIDTH, WORLD_HEIGHT, 0, -1, 1),
   });
-  const scene = createScene(spec);
+  const scene = createScene(spec, library);
   for (const light of scene.lights) renderer.addLight(light);
   for (const hull of scene.hulls) renderer.addHull(hull);
   let frame = 0;
@@ -89,7 +92,7 @@ export function runCpu(spec: SceneSpec, options: CpuOptions): CpuResult {
   }
   const result: CpuResult = {
     js: summarize(js), gl: summarize(inGL), glCalls: calls / PROBED_FRAMES, heapBytesPerFrame,
-    lightsDrawn: renderer.stats.lightsDrawn, edges: renderer.stats.edges,
+    lightsDrawn: renderer.stats.lightsDrawn, edges: renderer.stats.edges, extra: readExtraStats(renderer.stats),
   };
   renderer.dispose();
   destroyContext(gl);
@@ -101,7 +104,7 @@ export function runCpu(spec: SceneSpec, options: CpuOptions): CpuResult {
  * frames during which no garbage collection ran: needs `--expose-gc` and a young generation large
  * enough (`--max-semi-space-size`) to hold the frames' garbage. A GC shows as a negative step.
  */
-function measureHeap(renderer: PenumbraRenderer, step: () => void): number | null {
+function measureHeap(renderer: BenchRenderer, step: () => void): number | null {
   const gc = (globalThis as { gc?: () => void }).gc;
   if (!gc) return null;
   const frames = 50;

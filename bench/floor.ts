@@ -1,4 +1,4 @@
-import type { Light } from '../src/index';
+import type { BenchLight } from './library';
 
 const VERTEX = `#version 300 es
 layout(location = 0) in vec2 a_corner;
@@ -47,7 +47,7 @@ export class FillFloor {
   }
 
   /** Draws the lights; the world is the target's pixel space (origin top-left, y down). */
-  render(lights: readonly Light[]): void {
+  render(lights: readonly BenchLight[]): void {
     const gl = this.gl;
     gl.bindFramebuffer(gl.FRAMEBUFFER, this.framebuffer);
     gl.viewport(0, 0, this.width, this.height);

@@ -1,29 +1,43 @@
 // The benchmark runner (built and started by bench/run.mjs): Node CPU figures on headless-gl, then
-// whole-frame and fill-floor times in Chromium; prints a table and writes bench/results/latest.json.
+// whole-frame and fill-floor times in Chromium, each for the working tree's renderer ("new") and the
+// baseline built from a git ref ("old", bench/build.mjs) in the same run; prints a table with a
+// new ÷ old row per scene and writes bench/results/latest.json.
+import { library as baselineLibrary, baseline } from 'virtual:penumbra-baseline';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { cpus } from 'node:os';
 import { resolve } from 'node:path';
 import { launchChromium } from '../test/browser/chromium';
 import { serveDirectory } from '../test/browser/staticServer';
 import { runCpu, type CpuResult } from './cpu';
+import { EXTRA_STATS, extraStatCells, type ExtraStats } from './extraStats';
+import { CURRENT } from './library';
 import { SCENES } from './scenes';
 import { summarize, type Summary } from './stats';
+import { printTable, ratioCell } from './table';
 import type { BenchPage } from './page/main';
 
-interface BrowserResult {
+/** One renderer's Chromium figures for a scene. */
+interface BrowserSide {
   frame: Summary;
-  floor: Summary;
   /** Median frame ÷ median floor. */
   ratio: number;
-  /** With --bounds: median frames with trivial shadow shading and with no hulls, ÷ median floor (see bench/page/bounds.ts). */
-  bounds?: { trivialShading: number; noHulls: number };
+}
+
+interface BrowserResult {
+  floor: Summary;
+  current: BrowserSide;
+  baseline?: BrowserSide;
+  /** With --bounds: median frames with trivial shadow shading (null: no such stages) and with no hulls, ÷ median floor (see bench/page/bounds.ts). */
+  bounds?: { trivialShading: number | null; noHulls: number };
+  /** The working tree renderer's optional figures after the last frame (bench/extraStats.ts). */
+  extra: ExtraStats;
 }
 
 interface SceneResult {
   scene: string;
   lights: number;
   hulls: number;
-  node?: CpuResult;
+  node?: { current: CpuResult; baseline?: CpuResult };
   browser?: BrowserResult;
 }
 
@@ -40,20 +54,27 @@ const withBounds = args.has('bounds');
 const root = process.cwd();
 /** Frames run in Chromium before the measured ones. */
 const BROWSER_WARMUP = 2;
+const oldName = baseline ? `old ${baseline.ref}` : 'old';
 
 const results: SceneResult[] = scenes.map((spec) => ({ scene: spec.name, lights: spec.lights, hulls: spec.hulls + spec.farHulls }));
 if (!args.has('no-node')) {
   for (const [i, spec] of scenes.entries()) {
-    process.stderr.write(`node ${spec.name}…\n`);
-    // Few real warm-up frames: the stubbed ones that follow warm the JIT up cheaply (see runCpu).
-    const node = runCpu(spec, { warmup: 5, frames: cpuFrames });
-    results[i].node = node;
-    process.stderr.write(`  JS ${node.js.median.toFixed(2)} ms, ${node.glCalls} GL calls, heap ${node.heapBytesPerFrame} B/frame\n`);
+    const contenders = [['new', CURRENT], ...(baselineLibrary ? [[oldName, baselineLibrary] as const] : [])] as const;
+    const measured: CpuResult[] = [];
+    for (const [name, library] of contenders) {
+      process.stderr.write(`node ${spec.name} ${name}…\n`);
+      // Few real warm-up frames: the stubbed ones that follow warm the JIT up cheaply (see runCpu).
+      const node = runCpu(spec, library, { warmup: 5, frames: cpuFrames });
+      measured.push(node);
+      process.stderr.write(`  JS ${node.js.median.toFixed(2)} ms, ${node.glCalls} GL calls, heap ${node.heapBytesPerFrame} B/frame\n`);
+    }
+    results[i].node = { current: measured[0], baseline: measured[1] };
   }
 }
 if (!args.has('no-browser')) {
   const server = await serveDirectory(resolve(root, 'bench/.build/page'));
   const browser = await launchChromium();
+  type Window = { penumbraBench: BenchPage };
   try {
     for (const [i, spec] of scenes.entries()) {
       process.stderr.write(`chromium ${spec.name}…\n`);
@@ -61,25 +82,34 @@ if (!args.has('no-browser')) {
       await page.goto(server.url, { waitUntil: 'load' });
       await page.waitForFunction('window.penumbraBench');
       // Evaluated in the page: each function must name the page's API itself.
-      await page.evaluate((name, scale, bounds) => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.setup(name, scale, bounds), spec.name, lightmapScale, withBounds);
-      const times: { frame: number[]; floor: number[]; trivialShading: number[]; noHulls: number[] } = { frame: [], floor: [], trivialShading: [], noHulls: [] };
+      await page.evaluate((name, scale, bounds) => (window as unknown as Window).penumbraBench.setup(name, scale, bounds), spec.name, lightmapScale, withBounds);
+      const times = { frame: [] as number[], baseline: [] as number[], floor: [] as number[], trivialShading: [] as number[], noHulls: [] as number[] };
       for (let frame = 0; frame < BROWSER_WARMUP + browserFrames; frame++) {
-        const measured = await page.evaluate(() => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.frame());
+        const measured = await page.evaluate(() => (window as unknown as Window).penumbraBench.frame());
         if (frame < BROWSER_WARMUP) continue;
         times.frame.push(measured.frame);
         times.floor.push(measured.floor);
+        if (measured.baseline !== undefined) times.baseline.push(measured.baseline);
         if (measured.trivialShading !== undefined) times.trivialShading.push(measured.trivialShading);
         if (measured.noHulls !== undefined) times.noHulls.push(measured.noHulls);
       }
-      await page.evaluate(() => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.teardown());
+      const extra = await page.evaluate(() => (window as unknown as Window).penumbraBench.extraStats());
+      await page.evaluate(() => (window as unknown as Window).penumbraBench.teardown());
       await page.close();
-      const frame = summarize(times.frame), floor = summarize(times.floor);
-      results[i].browser = { frame, floor, ratio: frame.median / floor.median };
+      const floor = summarize(times.floor);
+      const side = (samples: number[]): BrowserSide => {
+        const frame = summarize(samples);
+        return { frame, ratio: frame.median / floor.median };
+      };
+      const result: BrowserResult = { floor, current: side(times.frame), extra };
+      if (times.baseline.length > 0) result.baseline = side(times.baseline);
       if (withBounds) {
         const ofFloor = (samples: number[]) => summarize(samples).median / floor.median;
-        results[i].browser.bounds = { trivialShading: ofFloor(times.trivialShading), noHulls: ofFloor(times.noHulls) };
+        result.bounds = { trivialShading: times.trivialShading.length > 0 ? ofFloor(times.trivialShading) : null, noHulls: ofFloor(times.noHulls) };
       }
-      process.stderr.write(`  frame ${frame.median.toFixed(1)} ms, floor ${floor.median.toFixed(1)} ms\n`);
+      results[i].browser = result;
+      const oldFrame = result.baseline ? `, ${oldName} ${result.baseline.frame.median.toFixed(1)} ms` : '';
+      process.stderr.write(`  frame ${result.current.frame.median.toFixed(1)} ms${oldFrame}, floor ${floor.median.toFixed(1)} ms\n`);
     }
   } finally {
     await browser.close();
@@ -88,33 +118,57 @@ if (!args.has('no-browser')) {
 }
 
 const machine = `${cpus()[0]?.model ?? 'unknown CPU'} × ${cpus().length}, Node ${process.version}, no GPU (headless-gl on Mesa, Chromium on SwiftShader)`;
-printTable(results, machine);
+report(results, machine);
 mkdirSync(resolve(root, 'bench/results'), { recursive: true });
 const file = resolve(root, 'bench/results/latest.json');
-writeFileSync(file, JSON.stringify({ date: new Date().toISOString(), machine, cpuFrames, browserFrames, results }, null, 2));
+writeFileSync(file, JSON.stringify({ date: new Date().toISOString(), machine, baseline, cpuFrames, browserFrames, lightmapScale, results }, null, 2));
 console.log(`\nwritten ${file}`);
 
-function printTable(rows: SceneResult[], machine: string): void {
+function report(rows: SceneResult[], machine: string): void {
   const ms = (value: number) => value.toFixed(2);
   const pair = (summary: Summary | undefined) => (summary ? `${ms(summary.median)} / ${ms(summary.p95)}` : '–');
-  const table = [[
-    'scene', 'lights', 'hulls', 'drawn', 'edges', 'node JS ms (med / p95)', 'in GL ms (med)', 'GL calls', 'heap B/frame',
+  const table: string[][] = [[
+    'scene', 'renderer', 'lights', 'hulls', 'drawn', 'edges', 'node JS ms (med / p95)', 'in GL ms (med)', 'GL calls', 'heap B/frame',
     'chromium frame ms (med / p95)', 'floor ms (med / p95)', 'frame ÷ floor',
     ...(withBounds ? ['trivial shading ÷ floor', 'no hulls ÷ floor'] : []),
+    ...EXTRA_STATS.map(({ label }) => label),
   ]];
+  const bounds = (row: SceneResult) => (withBounds ? [row.browser?.bounds?.trivialShading?.toFixed(2) ?? '–', row.browser?.bounds?.noHulls.toFixed(2) ?? '–'] : []);
+  const blankBounds = withBounds ? ['', ''] : [];
+  const verdicts: string[] = [];
   for (const row of rows) {
+    const node = row.node?.current, oldNode = row.node?.baseline;
+    const browser = row.browser?.current, oldBrowser = row.browser?.baseline;
+    const nodeCells = (result: CpuResult | undefined) => [
+      String(result?.lightsDrawn ?? '–'), String(result?.edges ?? '–'),
+      pair(result?.js), result ? ms(result.gl.median) : '–', result ? result.glCalls.toFixed(0) : '–',
+      result?.heapBytesPerFrame == null ? '–' : result.heapBytesPerFrame.toFixed(0),
+    ];
+    // Chromium's figures (full resolution) over Node's (an eighth of it) where both have them.
+    const extra: ExtraStats = { ...row.node?.current.extra, ...row.browser?.extra };
     table.push([
-      row.scene, String(row.lights), String(row.hulls), String(row.node?.lightsDrawn ?? '–'), String(row.node?.edges ?? '–'),
-      pair(row.node?.js), row.node ? ms(row.node.gl.median) : '–', row.node ? row.node.glCalls.toFixed(0) : '–',
-      row.node?.heapBytesPerFrame == null ? '–' : row.node.heapBytesPerFrame.toFixed(0),
-      pair(row.browser?.frame), pair(row.browser?.floor), row.browser ? row.browser.ratio.toFixed(2) : '–',
-      ...(withBounds ? [row.browser?.bounds?.trivialShading.toFixed(2) ?? '–', row.browser?.bounds?.noHulls.toFixed(2) ?? '–'] : []),
+      row.scene, 'new', String(row.lights), String(row.hulls), ...nodeCells(node),
+      pair(browser?.frame), pair(row.browser?.floor), browser ? browser.ratio.toFixed(2) : '–', ...bounds(row),
+      ...extraStatCells(extra),
     ]);
+    if (!baselineLibrary) continue;
+    table.push([
+      row.scene, oldName, String(row.lights), String(row.hulls), ...nodeCells(oldNode),
+      pair(oldBrowser?.frame), pair(row.browser?.floor), oldBrowser ? oldBrowser.ratio.toFixed(2) : '–', ...blankBounds,
+      ...EXTRA_STATS.map(() => ''),
+    ]);
+    table.push([
+      row.scene, 'new ÷ old', '', '', ratioCell(node?.lightsDrawn, oldNode?.lightsDrawn), ratioCell(node?.edges, oldNode?.edges),
+      ratioCell(node?.js.median, oldNode?.js.median), ratioCell(node?.gl.median, oldNode?.gl.median),
+      ratioCell(node?.glCalls, oldNode?.glCalls), ratioCell(node?.heapBytesPerFrame, oldNode?.heapBytesPerFrame),
+      ratioCell(browser?.frame.median, oldBrowser?.frame.median), '', ratioCell(browser?.ratio, oldBrowser?.ratio), ...blankBounds,
+      ...EXTRA_STATS.map(() => ''),
+    ]);
+    if (browser && oldBrowser) verdicts.push(`${row.scene} ${(browser.frame.median / oldBrowser.frame.median).toFixed(2)}`);
   }
-  const widths = table[0].map((_, column) => Math.max(...table.map((line) => line[column].length)));
-  console.log(`penumbra-gl benchmark — ${machine}`);
-  for (const [n, line] of table.entries()) {
-    console.log(line.map((cell, column) => cell.padEnd(widths[column])).join(' | '));
-    if (n === 0) console.log(widths.map((width) => '-'.repeat(width)).join('-|-'));
+  printTable(`penumbra-gl benchmark — ${machine}${baseline ? `; old = ${baseline.ref} (${baseline.commit.slice(0, 12)})` : ''}`, table);
+  if (verdicts.length > 0) {
+    const slower = rows.filter((row) => row.browser?.baseline && row.browser.current.frame.median > row.browser.baseline.frame.median).map((row) => row.scene);
+    console.log(`\nchromium frame new ÷ old (median): ${verdicts.join(', ')}; ${slower.length === 0 ? 'no scene slower' : `slower: ${slower.join(', ')}`}`);
   }
 }

@@ -1,4 +1,4 @@
-import { Hull, PointLight, type Light } from '../src/index';
+import { CURRENT, type BenchHull, type BenchLight, type RendererLibrary } from './library';
 
 /** The benchmark world, in pixels (the renderer's default view maps it 1:1 onto a canvas of this size). */
 export const WORLD_WIDTH = 1280;
@@ -33,8 +33,8 @@ const PLACEMENT_TRIES = 64;
 /** A deterministic scene and its per-frame animation, which allocates nothing. */
 export interface BenchScene {
   spec: SceneSpec;
-  lights: Light[];
-  hulls: Hull[];
+  lights: BenchLight[];
+  hulls: BenchHull[];
   /** Moves every light a little and one hull in ten, for frame number `frame`. */
   step(frame: number): void;
 }
@@ -51,11 +51,16 @@ export function seededRandom(seed: number): () => number {
   };
 }
 
-/** Builds `spec` from `seed`: lights of range 150–350 and radius 5–25; hulls mostly convex (3–5 points), one in eight concave, placed so that no light centre is ever inside one. */
-export function createScene(spec: SceneSpec, seed = 1): BenchScene {
+/**
+ * Builds `spec` from `seed` with `library`'s classes (each renderer compared gets its own copy of
+ * the same scene): lights of range 150–350 and radius 5–25; hulls mostly convex (3–5 points), one
+ * in eight concave, placed so that no light centre is ever inside one.
+ */
+export function createScene(spec: SceneSpec, library: RendererLibrary = CURRENT, seed = 1): BenchScene {
+  const { Hull, PointLight } = library;
   const random = seededRandom(seed);
   const between = (low: number, high: number) => low + (high - low) * random();
-  const lights: Light[] = [];
+  const lights: BenchLight[] = [];
   const anchors = new Float64Array(spec.lights * 3);
   for (let i = 0; i < spec.lights; i++) {
     const x = between(0, WORLD_WIDTH), y = between(0, WORLD_HEIGHT);
@@ -65,7 +70,7 @@ export function createScene(spec: SceneSpec, seed = 1): BenchScene {
       color: [between(0.3, 1), between(0.3, 1), between(0.3, 1)], intensity: 0.6,
     }));
   }
-  const hulls: Hull[] = [];
+  const hulls: BenchHull[] = [];
   const hullAnchors: number[] = [];
   const total = spec.hulls + spec.farHulls;
   for (let i = 0; i < total; i++) {

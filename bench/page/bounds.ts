@@ -1,5 +1,5 @@
-import { PenumbraRenderer, type Hull, type Light, type PenumbraRendererOptions } from '../../src/index';
 import { shaderSources } from '../../src/passes/shaders';
+import { CURRENT, type BenchHull, type BenchLight, type BenchRenderer, type BenchRendererOptions } from '../library';
 
 /**
  * The renderer's frame with part of its work taken away, to show what is left to win: a bound on
@@ -10,16 +10,22 @@ import { shaderSources } from '../../src/passes/shaders';
  * - `noHulls`: the same lights and no hulls: the light pass and composite alone.
  */
 export interface FrameBounds {
-  trivialShading: PenumbraRenderer;
-  noHulls: PenumbraRenderer;
+  /** Null when the renderer has no separate shadow shading stages (see SHADING_STAGES). */
+  trivialShading: BenchRenderer | null;
+  noHulls: BenchRenderer;
 }
 
-const SHADING_STAGES: ReadonlySet<string> = new Set([
-  ...shaderSources.shadowHullFragment,
-  ...shaderSources.shadowConcaveFragment,
-  ...shaderSources.shadowEdgesFragment,
-  ...shaderSources.shadowCavityFragment,
-]);
+/**
+ * The shadow-mask shading stages: every source (or variant) under a `shadow…Fragment` key of
+ * `shaderSources`, each writing `o_mask` (the core of 8d3feef). A core without such stages (the
+ * shadow core v2 shades shadows in the light pass) gets no trivial-shading bound: '–'.
+ */
+const SHADING_STAGES: ReadonlySet<string> = new Set(
+  Object.entries(shaderSources as Record<string, unknown>)
+    .filter(([key]) => /^shadow\w*Fragment$/.test(key))
+    .flatMap(([, value]) => (typeof value === 'string' ? [value] : value && typeof value === 'object' ? Object.values(value) : []))
+    .filter((source): source is string => typeof source === 'string' && source.includes('o_mask')),
+);
 
 /** A shading stage that keeps its declarations (so the program links as before) and writes a mask constant. */
 function withConstantMask(source: string): string {
@@ -51,21 +57,23 @@ function withTrivialShading(gl: WebGL2RenderingContext, swapped: Set<string>): W
   });
 }
 
-export function createFrameBounds(gl: WebGL2RenderingContext, options: PenumbraRendererOptions, lights: readonly Light[], hulls: readonly Hull[]): FrameBounds {
-  const swapped = new Set<string>();
-  const trivialShading = new PenumbraRenderer(withTrivialShading(gl, swapped), options);
-  // The renderer links its programs when it is built; a stage it no longer uses would make this bound the full frame.
-  if (swapped.size !== SHADING_STAGES.size) throw new Error(`bench bounds: ${swapped.size} of the ${SHADING_STAGES.size} shadow shading stages were compiled`);
-  const noHulls = new PenumbraRenderer(gl, options);
-  for (const light of lights) {
-    trivialShading.addLight(light);
-    noHulls.addLight(light);
+/** Bounds for the working tree's renderer (they reach into its shader sources); `lights` and `hulls` made with CURRENT. */
+export function createFrameBounds(gl: WebGL2RenderingContext, options: BenchRendererOptions, lights: readonly BenchLight[], hulls: readonly BenchHull[]): FrameBounds {
+  let trivialShading: BenchRenderer | null = null;
+  if (SHADING_STAGES.size > 0) {
+    const swapped = new Set<string>();
+    trivialShading = new CURRENT.PenumbraRenderer(withTrivialShading(gl, swapped), options);
+    // The renderer links its programs when it is built; a stage it no longer uses would make this bound the full frame.
+    if (swapped.size !== SHADING_STAGES.size) throw new Error(`bench bounds: ${swapped.size} of the ${SHADING_STAGES.size} shadow shading stages were compiled`);
+    for (const light of lights) trivialShading.addLight(light);
+    for (const hull of hulls) trivialShading.addHull(hull);
   }
-  for (const hull of hulls) trivialShading.addHull(hull);
+  const noHulls = new CURRENT.PenumbraRenderer(gl, options);
+  for (const light of lights) noHulls.addLight(light);
   return { trivialShading, noHulls };
 }
 
 export function disposeFrameBounds(bounds: FrameBounds): void {
-  bounds.trivialShading.dispose();
+  bounds.trivialShading?.dispose();
   bounds.noHulls.dispose();
 }

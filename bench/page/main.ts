@@ -1,11 +1,15 @@
-import { PenumbraRenderer } from '../../src/index';
+import { library as baselineLibrary } from 'virtual:penumbra-baseline';
+import { readExtraStats, type ExtraStats } from '../extraStats';
 import { FillFloor } from '../floor';
+import { CURRENT, type BenchRenderer, type RendererLibrary } from '../library';
 import { createScene, SCENES, WORLD_HEIGHT, WORLD_WIDTH, type BenchScene } from '../scenes';
 import { createFrameBounds, disposeFrameBounds, type FrameBounds } from './bounds';
 
 /** Times of one frame in ms, each ended by a 1-pixel readPixels so the GPU work is included. */
 export interface FrameTimes {
   frame: number;
+  /** The baseline renderer's frame on the same scene (absent without a baseline). */
+  baseline?: number;
   floor: number;
   /** With bounds set up: the frame with trivial shadow shading, and with no hulls (see FrameBounds). */
   trivialShading?: number;
@@ -16,17 +20,25 @@ export interface FrameTimes {
 export interface BenchPage {
   setup(name: string, lightmapScale: number, withBounds: boolean): void;
   frame(): FrameTimes;
+  /** The working tree renderer's optional figures (bench/extraStats.ts) after the last frame. */
+  extraStats(): ExtraStats;
   teardown(): void;
+}
+
+/** One renderer with its own copy of the scene (lights and hulls are its version's classes). */
+interface Contender {
+  scene: BenchScene;
+  renderer: BenchRenderer;
 }
 
 const canvas = document.getElementById('canvas') as HTMLCanvasElement;
 const gl = canvas.getContext('webgl2', { antialias: false, preserveDrawingBuffer: false })!;
 const pixel = new Uint8Array(4);
 const floatPixel = new Float32Array(4);
-let current: { scene: BenchScene; renderer: PenumbraRenderer; floor: FillFloor; bounds: FrameBounds | null; frame: number } | null = null;
+let current: { now: Contender; old: Contender | null; floor: FillFloor; bounds: FrameBounds | null; frame: number } | null = null;
 
 /** One whole frame of `renderer` (scene cleared white, lightmap, composite), in ms. */
-function timeFrame(renderer: PenumbraRenderer): number {
+function timeFrame(renderer: BenchRenderer): number {
   const start = performance.now();
   renderer.beginDraw();
   gl.clearColor(1, 1, 1, 1);
@@ -36,36 +48,60 @@ function timeFrame(renderer: PenumbraRenderer): number {
   return performance.now() - start;
 }
 
+function contender(library: RendererLibrary, name: string, lightmapScale: number): Contender {
+  const spec = SCENES.find((scene) => scene.name === name);
+  if (!spec) throw new Error(`no scene ${name}`);
+  const scene = createScene(spec, library);
+  const renderer = new library.PenumbraRenderer(gl, { ambientColor: [0.05, 0.05, 0.05], lightmapScale });
+  for (const light of scene.lights) renderer.addLight(light);
+  for (const hull of scene.hulls) renderer.addHull(hull);
+  return { scene, renderer };
+}
+
 const page: BenchPage = {
   setup(name, lightmapScale, withBounds) {
-    const spec = SCENES.find((scene) => scene.name === name);
-    if (!spec) throw new Error(`no scene ${name}`);
-    const scene = createScene(spec);
-    const options = { ambientColor: [0.05, 0.05, 0.05] as const, lightmapScale };
-    const renderer = new PenumbraRenderer(gl, options);
-    for (const light of scene.lights) renderer.addLight(light);
-    for (const hull of scene.hulls) renderer.addHull(hull);
-    const bounds = withBounds ? createFrameBounds(gl, options, scene.lights, scene.hulls) : null;
-    current = { scene, renderer, floor: new FillFloor(gl, WORLD_WIDTH, WORLD_HEIGHT), bounds, frame: 0 };
+    const now = contender(CURRENT, name, lightmapScale);
+    const old = baselineLibrary ? contender(baselineLibrary, name, lightmapScale) : null;
+    const bounds = withBounds ? createFrameBounds(gl, { ambientColor: [0.05, 0.05, 0.05], lightmapScale }, now.scene.lights, now.scene.hulls) : null;
+    current = { now, old, floor: new FillFloor(gl, WORLD_WIDTH, WORLD_HEIGHT), bounds, frame: 0 };
   },
 
-  /** The renderer's whole frame, then the fill floor (and the bounds' frames), on the same moving scene. */
+  /**
+   * Both renderers' whole frames on the same moving scene (which goes first alternates from frame
+   * to frame), then the fill floor (and the bounds' frames).
+   */
   frame() {
     if (!current) throw new Error('setup() first');
-    const { scene, renderer, floor, bounds } = current;
-    scene.step(current.frame++);
-    const frame = timeFrame(renderer);
+    const { now, old, floor, bounds } = current;
+    const number = current.frame++;
+    now.scene.step(number);
+    old?.scene.step(number);
+    let frame: number, baseline: number | undefined;
+    if (old && number % 2 === 1) {
+      baseline = timeFrame(old.renderer);
+      frame = timeFrame(now.renderer);
+    } else {
+      frame = timeFrame(now.renderer);
+      baseline = old ? timeFrame(old.renderer) : undefined;
+    }
     const start = performance.now();
-    floor.render(scene.lights);
+    floor.render(now.scene.lights);
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.FLOAT, floatPixel);
     const floorTime = performance.now() - start;
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    if (!bounds) return { frame, floor: floorTime };
-    return { frame, floor: floorTime, trivialShading: timeFrame(bounds.trivialShading), noHulls: timeFrame(bounds.noHulls) };
+    const times: FrameTimes = { frame, baseline, floor: floorTime };
+    if (bounds) {
+      times.trivialShading = bounds.trivialShading ? timeFrame(bounds.trivialShading) : undefined;
+      times.noHulls = timeFrame(bounds.noHulls);
+    }
+    return times;
   },
 
+  extraStats: () => (current ? readExtraStats(current.now.renderer.stats) : {}),
+
   teardown() {
-    current?.renderer.dispose();
+    current?.now.renderer.dispose();
+    current?.old?.renderer.dispose();
     current?.floor.dispose();
     if (current?.bounds) disposeFrameBounds(current.bounds);
     current = null;

@@ -1,0 +1,31 @@
+/**
+ * Per-scene figures a renderer may report in its `stats` beyond what every version has (the
+ * shadow core v2 hooks). The bench prints a column per entry, '–' where the renderer's stats lack
+ * the key (the baseline, or a core that does not report it); nothing here reaches into the
+ * renderer. The figure is read after the last measured frame.
+ */
+export const EXTRA_STATS = [
+  { key: 'shadowVisitsPerPixel', label: 'hulls visited / shaded px', format: (value: number) => value.toFixed(2) },
+  { key: 'shadowSkipShare', label: 'px decided w/o loop', format: (value: number) => `${(value * 100).toFixed(1)}%` },
+] as const;
+
+export type ExtraStatKey = (typeof EXTRA_STATS)[number]['key'];
+export type ExtraStats = Partial<Record<ExtraStatKey, number>>;
+
+/** The EXTRA_STATS figures present in `stats` as finite numbers. */
+export function readExtraStats(stats: object): ExtraStats {
+  const found: ExtraStats = {};
+  for (const { key } of EXTRA_STATS) {
+    const value: unknown = (stats as Record<string, unknown>)[key];
+    if (typeof value === 'number' && Number.isFinite(value)) found[key] = value;
+  }
+  return found;
+}
+
+/** The table cells of `extra` (undefined: not measured), in EXTRA_STATS order. */
+export function extraStatCells(extra: ExtraStats | undefined): string[] {
+  return EXTRA_STATS.map(({ key, format }) => {
+    const value = extra?.[key];
+    return value === undefined ? '–' : format(value);
+  });
+}

@@ -1,0 +1,58 @@
+import type { ReadonlyMat4 } from 'gl-matrix';
+import * as current from '../src/index';
+
+/**
+ * The part of penumbra-gl's public API the bench uses, and that every renderer it compares has
+ * (the working tree's and the baseline built from a git ref, see bench/build.mjs). Kept to
+ * PenumbraRenderer, PointLight, Spotlight, TexturedLight and Hull and the members below, so that
+ * an older or newer core fits without the bench knowing its internals.
+ */
+export interface RendererLibrary {
+  PenumbraRenderer: new (gl: WebGL2RenderingContext, options?: BenchRendererOptions) => BenchRenderer;
+  PointLight: new (options: BenchLightOptions) => BenchLight;
+  Spotlight: new (options: BenchLightOptions & { coneAngle?: number; coneDecay?: number }) => BenchLight;
+  TexturedLight: new (options: BenchLightOptions & { texture: WebGLTexture; size?: readonly [number, number] }) => BenchLight;
+  Hull: new (points: readonly (readonly [number, number])[], options?: { position?: readonly [number, number]; rotation?: number }) => BenchHull;
+}
+
+export interface BenchRendererOptions {
+  ambientColor?: readonly [number, number, number];
+  width?: number;
+  height?: number;
+  viewProjection?: ReadonlyMat4 | null;
+  lightmapScale?: number;
+}
+
+export interface BenchRenderer {
+  /** `lightsDrawn` and `edges` in every version; a version may add figures (see bench/extraStats.ts). */
+  readonly stats: { readonly lightsDrawn: number; readonly edges: number };
+  addLight(light: BenchLight): unknown;
+  addHull(hull: BenchHull): unknown;
+  beginDraw(): void;
+  draw(): void;
+  renderLightmap(): void;
+  dispose(): void;
+}
+
+export interface BenchLightOptions {
+  position?: readonly [number, number];
+  range?: number;
+  radius?: number;
+  color?: readonly [number, number, number];
+  intensity?: number;
+}
+
+export interface BenchLight {
+  readonly position: readonly [number, number];
+  readonly range: number;
+  readonly color: readonly [number, number, number];
+  setPosition(x: number, y: number): unknown;
+}
+
+export interface BenchHull {
+  position: readonly [number, number];
+  rotation: number;
+}
+
+/** The working tree's renderer (fails to type-check if its public API no longer fits the bench). */
+export const CURRENT: RendererLibrary = current;
