@@ -3,8 +3,8 @@
 //   `git archive` into bench/.build/baseline/<commit>-v<n>/ and built there as one ES module
 //   (penumbra.mjs, gl-matrix left external), cached by commit;
 // - the bench bundles, which import it as 'virtual:penumbra-baseline' (typed in bench/baseline.d.ts;
-//   `library` is null with --no-baseline): the Chromium page (bench/.build/page/) and the Node runner
-//   (bench/.build/main.mjs).
+//   `library` is null with --no-baseline): the Chromium page (bench/.build/page/), the Node runner
+//   (bench/.build/main.mjs) and the Vulkan GPU mode (bench/.build/gpu.mjs).
 // Needs the ref's history in the clone (CI: fetch-depth 0); `npm test` never builds any of this.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, rmSync, writeFileSync } from 'node:fs';
@@ -84,7 +84,7 @@ function baselinePlugin(baseline) {
 }
 
 /**
- * Builds the bench bundles into bench/.build: `targets` among 'page', 'node'. `baseline` is
+ * Builds the bench bundles into bench/.build: `targets` among 'page', 'node', 'gpu'. `baseline` is
  * buildBaseline's answer or null.
  */
 export async function buildBench(root, { baseline, targets }) {
@@ -99,13 +99,13 @@ export async function buildBench(root, { baseline, targets }) {
       build: { outDir: resolve(out, 'page'), emptyOutDir: true },
     });
   }
-  for (const [target, entry, name] of [['node', 'bench/main.ts', 'main.mjs']]) {
+  for (const [target, entry, name] of [['node', 'bench/main.ts', 'main.mjs'], ['gpu', 'bench/gpu.ts', 'gpu.mjs']]) {
     if (!targets.includes(target)) continue;
     await build({
       ...quiet,
       plugins,
       root,
-      // Everything bundled but headless-gl (native) and puppeteer.
+      // Everything bundled but headless-gl (native) and puppeteer: gpu.mjs runs with only node_modules/gl beside it.
       ssr: { noExternal: true, external: ['gl', 'puppeteer'] },
       build: {
         ssr: resolve(root, entry),
