@@ -13,10 +13,12 @@
 // real GL calls, frames timed to gl.finish(); no X display. Needs libvulkan.so.1 beside
 // node_modules/gl/build/Release/libGLESv2.so (copied there from the system when missing) and a
 // Vulkan driver (the loader's own search, or VK_ICD_FILENAMES; here Mesa's lavapipe:
-// VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json).
+// VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json). For a machine with a GPU and no
+// repository, scripts/pack-gpu-bench.sh packs this mode with Node into one tarball.
 //   npm run bench -- --gpu --scenes=S1,S3 --frames=20 --warmup=5 --lightmap-scale=1 --out=bench/results/gpu-latest.json
 //
-// Both: --baseline=<ref> (default 8d3feef, the last commit before the shadow-core v2 rewrite) or --no-baseline.
+// Both: --baseline=<ref> (default 8d3feef, the last commit before the shadow-core v2 rewrite) or
+// --no-baseline; --build-only builds the mode's bundles into bench/.build and runs nothing.
 import { spawnSync } from 'node:child_process';
 import { copyFileSync, existsSync } from 'node:fs';
 import { resolve } from 'node:path';
@@ -26,12 +28,13 @@ const root = resolve(import.meta.dirname, '..');
 const args = process.argv.slice(2);
 const gpu = args.includes('--gpu');
 // Arguments for bench/main.ts or bench/gpu.ts: the build's own are consumed here.
-const passed = args.filter((arg) => !['--gpu', '--no-baseline'].includes(arg) && !arg.startsWith('--baseline='));
+const passed = args.filter((arg) => !['--gpu', '--no-baseline', '--build-only'].includes(arg) && !arg.startsWith('--baseline='));
 
 const ref = baselineRefFromArgs(args);
 const baseline = ref ? await buildBaseline(root, ref) : null;
 if (baseline) process.stderr.write(`baseline: ${baseline.ref} = ${baseline.commit}\n`);
 const out = await buildBench(root, { baseline, targets: gpu ? ['gpu'] : ['page', 'node'] });
+if (args.includes('--build-only')) process.exit(0);
 
 let result;
 if (gpu) {
