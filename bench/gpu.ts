@@ -71,6 +71,7 @@ if (!/vulkan/i.test(device.renderer) && !args.has('any-backend')) {
 }
 process.stderr.write(`renderer: ${device.renderer}\n`);
 
+const machine = `${cpus()[0]?.model ?? 'unknown CPU'} × ${cpus().length}, Node ${process.version}, headless-gl on ANGLE/Vulkan`;
 const results: GpuSceneResult[] = [];
 for (const spec of scenes) {
   process.stderr.write(`gpu ${spec.name}…\n`);
@@ -78,17 +79,20 @@ for (const spec of scenes) {
   const last = results[results.length - 1];
   const old = last.baseline ? `, ${oldName} ${last.baseline.frame.median.toFixed(2)} ms` : '';
   process.stderr.write(`  frame ${last.current.frame.median.toFixed(2)} ms${old}, floor ${last.floor.median.toFixed(2)} ms\n`);
+  // Written after every scene: a run stopped in a slow scene keeps the ones before.
+  writeResults();
 }
 destroyContext(gl);
-
-const machine = `${cpus()[0]?.model ?? 'unknown CPU'} × ${cpus().length}, Node ${process.version}, headless-gl on ANGLE/Vulkan`;
 report(results);
-mkdirSync(dirname(out), { recursive: true });
-writeFileSync(out, JSON.stringify({
-  date: new Date().toISOString(), machine, device, vkIcdFilenames: process.env.VK_ICD_FILENAMES ?? process.env.VK_DRIVER_FILES ?? null,
-  baseline, frames, warmup, lightmapScale, results,
-}, null, 2));
 console.log(`\nwritten ${out}`);
+
+function writeResults(): void {
+  mkdirSync(dirname(out), { recursive: true });
+  writeFileSync(out, JSON.stringify({
+    date: new Date().toISOString(), machine, device, vkIcdFilenames: process.env.VK_ICD_FILENAMES ?? process.env.VK_DRIVER_FILES ?? null,
+    baseline, frames, warmup, lightmapScale, results,
+  }, null, 2));
+}
 
 /** The context's renderer, version and vendor as the driver states them (headless-gl's own getParameter answers 'ANGLE'). */
 function describeDevice(context: WebGL2RenderingContext): { renderer: string; version: string; vendor: string } {
@@ -141,6 +145,7 @@ function runScene(spec: SceneSpec): GpuSceneResult {
   const contenders = [contender(spec, CURRENT), ...(baselineLibrary ? [contender(spec, baselineLibrary)] : [])];
   const floor = new FillFloor(gl, WORLD_WIDTH, WORLD_HEIGHT);
   const floorTimes: number[] = [];
+  let reported = performance.now();
   for (let frame = 0; frame < warmup + frames; frame++) {
     for (const { scene } of contenders) scene.step(frame);
     // Which renderer goes first alternates from frame to frame.
@@ -161,6 +166,12 @@ function runScene(spec: SceneSpec): GpuSceneResult {
     gl.finish();
     if (frame >= warmup) floorTimes.push(performance.now() - start);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    // Slow scenes (S4 on a CPU rasterizer takes minutes a frame) say where they are.
+    if (performance.now() - reported > 10_000) {
+      reported = performance.now();
+      const last = (entry: Contender) => (entry.frame.length > 0 ? `${entry.frame[entry.frame.length - 1].toFixed(0)} ms` : 'warm-up');
+      process.stderr.write(`  frame ${frame + 1} of ${warmup + frames}: ${contenders.map((entry, i) => `${i === 0 ? 'new' : oldName} ${last(entry)}`).join(', ')}\n`);
+    }
   }
   const floorSummary = summarize(floorTimes);
   // Read each renderer's frame of one more (same) scene state back, to see that it drew.

@@ -31,7 +31,13 @@ const gpu = args.includes('--gpu');
 const passed = args.filter((arg) => !['--gpu', '--no-baseline', '--build-only'].includes(arg) && !arg.startsWith('--baseline='));
 
 const ref = baselineRefFromArgs(args);
-const baseline = ref ? await buildBaseline(root, ref) : null;
+let baseline = null;
+try {
+  baseline = ref ? await buildBaseline(root, ref) : null;
+} catch (error) {
+  console.error(error instanceof Error ? error.message : error);
+  process.exit(1);
+}
 if (baseline) process.stderr.write(`baseline: ${baseline.ref} = ${baseline.commit}\n`);
 const out = await buildBench(root, { baseline, targets: gpu ? ['gpu'] : ['page', 'node'] });
 if (args.includes('--build-only')) process.exit(0);
