@@ -15,6 +15,7 @@ import { SCENES } from './scenes';
 import { summarize, type Summary } from './stats';
 import { printTable, ratioCell } from './table';
 import type { BenchPage } from './page/main';
+import { fitMicro, MICRO_CONFIGURATIONS, type MicroResult, type MicroRow } from './page/micro';
 
 /** One renderer's Chromium figures for a scene. */
 interface BrowserSide {
@@ -117,6 +118,27 @@ if (!args.has('no-browser')) {
   }
 }
 
+if (args.has('micro')) {
+  const server = await serveDirectory(resolve(root, 'bench/.build/page'));
+  const browser = await launchChromium();
+  try {
+    process.stderr.write('chromium micro-benchmark…\n');
+    const page = await browser.newPage();
+    await page.goto(server.url, { waitUntil: 'load' });
+    await page.waitForFunction('window.penumbraBench');
+    const rows: MicroRow[] = [];
+    for (let index = 0; index < MICRO_CONFIGURATIONS.length; index++) {
+      rows.push(await page.evaluate((i, frames) => (window as unknown as { penumbraBench: BenchPage }).penumbraBench.micro(i, frames), index, browserFrames));
+      process.stderr.write(`  ${rows[index].name}: ${rows[index].frame.toFixed(1)} ms\n`);
+    }
+    await page.close();
+    printMicro(fitMicro(rows));
+  } finally {
+    await browser.close();
+    await server.close();
+  }
+}
+
 const machine = `${cpus()[0]?.model ?? 'unknown CPU'} × ${cpus().length}, Node ${process.version}, no GPU (headless-gl on Mesa, Chromium on SwiftShader)`;
 report(results, machine);
 mkdirSync(resolve(root, 'bench/results'), { recursive: true });
@@ -171,4 +193,15 @@ function report(rows: SceneResult[], machine: string): void {
     const slower = rows.filter((row) => row.browser?.baseline && row.browser.current.frame.median > row.browser.baseline.frame.median).map((row) => row.scene);
     console.log(`\nchromium frame new ÷ old (median): ${verdicts.join(', ')}; ${slower.length === 0 ? 'no scene slower' : `slower: ${slower.join(', ')}`}`);
   }
+}
+
+/** The micro-benchmark's rows and fitted costs (see bench/page/micro.ts). */
+function printMicro(micro: MicroResult): void {
+  const table = [['configuration', 'frame ms', 'light px', 'records visited', 'visits / px', 'px decided w/o loop']];
+  for (const row of micro.rows) {
+    table.push([row.name, row.frame.toFixed(1), row.pixels.toFixed(0), row.visits.toFixed(0),
+      (row.visits / row.pixels).toFixed(2), `${((row.decidedWithoutLoop / row.pixels) * 100).toFixed(1)}%`]);
+  }
+  printTable('shadow loop micro-benchmark (Chromium, one light over the whole world)', table);
+  console.log(`\na light pixel whose loop makes no trip: +${micro.zeroTripPixel.toFixed(1)} ns; each record visited: ${micro.perVisit.toFixed(1)} ns`);
 }

@@ -4,6 +4,8 @@ import { FillFloor } from '../floor';
 import { CURRENT, type BenchRenderer, type RendererLibrary } from '../library';
 import { createScene, SCENES, WORLD_HEIGHT, WORLD_WIDTH, type BenchScene } from '../scenes';
 import { createFrameBounds, disposeFrameBounds, type FrameBounds } from './bounds';
+import { measureMicroRow, type MicroRow } from './micro';
+import { measureShadowStatistics } from './statistics';
 
 /** Times of one frame in ms, each ended by a 1-pixel readPixels so the GPU work is included. */
 export interface FrameTimes {
@@ -20,8 +22,10 @@ export interface FrameTimes {
 export interface BenchPage {
   setup(name: string, lightmapScale: number, withBounds: boolean): void;
   frame(): FrameTimes;
-  /** The working tree renderer's optional figures (bench/extraStats.ts) after the last frame. */
+  /** The working tree renderer's shadow-loop figures (bench/extraStats.ts) on the scene as it is now. */
   extraStats(): ExtraStats;
+  /** One configuration of the inner loop's micro-benchmark (see micro.ts). */
+  micro(index: number, frames: number): MicroRow;
   teardown(): void;
 }
 
@@ -97,7 +101,18 @@ const page: BenchPage = {
     return times;
   },
 
-  extraStats: () => (current ? readExtraStats(current.now.renderer.stats) : {}),
+  extraStats() {
+    if (!current) return {};
+    const { now } = current;
+    const statistics = measureShadowStatistics(gl, {}, now.scene.lights, now.scene.hulls);
+    return readExtraStats({
+      shadowVisitsPerPixel: statistics.visits / statistics.pixels,
+      shadowSkipShare: statistics.decidedWithoutLoop / statistics.pixels,
+      shadowQuadratureShare: statistics.seenPast / statistics.pixels,
+    });
+  },
+
+  micro: (index, frames) => measureMicroRow(gl, index, frames),
 
   teardown() {
     current?.now.renderer.dispose();
