@@ -219,70 +219,67 @@ int classifyRecord(out float low, out float high) {
 }
 
 // The quadrature over the records seen past, in the angle φ of directions from the pixel: the area
-// a record hides along the thin wedge at φ is ½ (far² − max(near, nearest)²) dφ, with near and far
-// where the direction enters and leaves the disk and nearest where it first meets a record seen
-// past. The integrand is smooth between the directions of those records' points (where the edge
-// nearest the pixel changes) and of the union's ends (where the records in front take over), so
-// the domain is split there (the "breaks"), pieces wider than MAX_STEP are split evenly, and each
-// piece gets two Gauss–Legendre nodes.
-const int MAX_BREAKS = 48;
-// Room for the domain's ends and the union's: records' breaks beyond the rest are dropped (the
-// pieces are still split by MAX_STEP).
-const int MAX_RECORD_BREAKS = MAX_BREAKS - 4 - 2 * MAX_MIDDLES;
-const int MAX_NODES = 2 * MAX_BREAKS + 32;
+// hidden along the thin wedge at φ is ½ (far² − max(near, nearest)²) dφ, with near and far where
+// the direction enters and leaves the disk and nearest where it first meets a record. The integrand
+// is smooth between "breaks": the directions of the records' points (where the nearest edge
+// changes), of their edges' crossings with the disk's rim, and of the union's ends (where the
+// records in front take over). The sweep goes from break to break (pieces wider than MAX_STEP are
+// cut), skips the pieces the union covers, and gives each piece two Gauss–Legendre nodes. It keeps
+// no arrays (they cost every fragment, even where unused): it scans the pixel's bin again for each
+// next break and each node. Directions in a piece outside the union miss every record in front, so
+// the scans need not tell records apart.
+const int MAX_PIECES = 64;
 const float MAX_STEP = PI / 16.0;
-float breaks[MAX_BREAKS];
-int breakCount;
-vec2 nodeDirections[MAX_NODES];
-float nodeNear[MAX_NODES];
-float nodeFar[MAX_NODES];
-float nodeWeights[MAX_NODES];
-float nodeNearest[MAX_NODES];
-int nodeCount;
-int pastCount;
+const float NO_BREAK = 1e9;
+
+// The light's bin for this pixel: its first entry and count.
+int binFirst;
+int binCount;
 // The angle of the direction to the disk's centre, and half the disk's angular width (π inside it).
 float axisAngle;
 float halfSpan;
 
-void addBreak(float angle) {
-  if (breakCount < MAX_BREAKS) breaks[breakCount++] = angle;
-}
-
-void addDirectionBreak(vec2 d) {
+// Angle from the axis of the direction `d`, in (−π, π].
+float angleOf(vec2 d) {
   float angle = atan(d.y, d.x) - axisAngle;
-  addBreak(angle > PI ? angle - 2.0 * PI : (angle <= -PI ? angle + 2.0 * PI : angle));
+  return angle > PI ? angle - 2.0 * PI : (angle <= -PI ? angle + 2.0 * PI : angle);
 }
 
-// Breaks, as angles from the axis in (−π, π], at the directions of the loaded record's points and of
-// the points where its edges cross the disk's rim (where the hidden part of a wedge starts or stops
-// being all of it).
-void addRecordBreaks() {
+// The smallest of `next` and the loaded record's breaks after `after`.
+float nextRecordBreak(float after, float next) {
   vec2 c = centre - pixel;
   for (int k = 0; k < RECORD_TEXELS * 2; k++) {
-    if (k >= pointCount || breakCount >= MAX_RECORD_BREAKS) break;
+    if (k >= pointCount) break;
     vec2 a = points[k], edge = points[k + 1 == pointCount ? 0 : k + 1] - a;
-    addDirectionBreak(a);
+    float angle = angleOf(a);
+    if (angle > after) next = min(next, angle);
     // |a + u·edge − c|² = r²: u² |edge|² + 2u edge·(a − c) + |a − c|² − r² = 0.
-    float length2 = dot(edge, edge), half_b = dot(edge, a - c), constant = dot(a - c, a - c) - radius * radius;
-    float discriminant = half_b * half_b - length2 * constant;
+    float length2 = dot(edge, edge), halfB = dot(edge, a - c), constant = dot(a - c, a - c) - radius * radius;
+    float discriminant = halfB * halfB - length2 * constant;
     if (length2 <= 0.0 || discriminant <= 0.0) continue;
     float root = sqrt(discriminant);
-    float u0 = (-half_b - root) / length2, u1 = (-half_b + root) / length2;
-    if (u0 > 0.0 && u0 < 1.0) addDirectionBreak(a + u0 * edge);
-    if (u1 > 0.0 && u1 < 1.0) addDirectionBreak(a + u1 * edge);
+    for (int end = 0; end < 2; end++) {
+      float u = (-halfB + (end == 0 ? -root : root)) / length2;
+      float crossing = angleOf(a + u * edge);
+      if (u > 0.0 && u < 1.0 && crossing > after) next = min(next, crossing);
+    }
   }
+  return next;
 }
 
-// Breaks at the union's ends (chord heights t are directions at asin(t / distance) off the axis).
-void addUnionBreaks() {
+// The smallest of `next` and the union's ends after `after` (chord height t is at asin(t / distance)).
+float nextUnionBreak(float after, float next) {
   float scale = 1.0 / distanceInRadii;
-  addBreak(asin(clamp(lowCover * scale, -1.0, 1.0)));
-  addBreak(asin(clamp(highCover * scale, -1.0, 1.0)));
+  float lowEnd = asin(clamp(lowCover * scale, -1.0, 1.0)), highEnd = asin(clamp(highCover * scale, -1.0, 1.0));
+  if (lowEnd > after) next = min(next, lowEnd);
+  if (highEnd > after) next = min(next, highEnd);
   for (int k = 0; k < MAX_MIDDLES; k++) {
     if (k >= middleCount) break;
-    addBreak(asin(middles[k].x * scale));
-    addBreak(asin(middles[k].y * scale));
+    float low = asin(middles[k].x * scale), high = asin(middles[k].y * scale);
+    if (low > after) next = min(next, low);
+    if (high > after) next = min(next, high);
   }
+  return next;
 }
 
 // Whether the direction at `angle` off the axis lies in the union of the records in front.
@@ -296,79 +293,68 @@ bool inUnion(float angle) {
   return false;
 }
 
-void addNode(float angle, float weight) {
-  if (nodeCount >= MAX_NODES) return;
+// The records of entry `i` of the pixel's bin, first and last; (-1, -1) when that hull and all after
+// it are farther from the centre than the pixel: they hide nothing.
+ivec2 recordsOfEntry(int i) {
+  int e = binFirst + i;
+  vec4 two = texelAt(u_entries, e / 2);
+  vec2 entry = e % 2 == 0 ? two.xy : two.zw;
+  if (distanceToLight < entry.y) return ivec2(-1);
+  int code = int(entry.x);
+  int first = code / ENTRY_MAX_RECORDS;
+  return ivec2(first, first + code % ENTRY_MAX_RECORDS);
+}
+
+// The next break after `after`, at most `limit`.
+float nextBreak(float after, float limit) {
+  float next = nextUnionBreak(after, limit);
+  for (int i = 0; i < binCount; i++) {
+    ivec2 records = recordsOfEntry(i);
+    if (records.x < 0) break;
+    for (int record = records.x; record <= records.y; record++) {
+      loadRecord(record);
+      next = nextRecordBreak(after, next);
+    }
+  }
+  return min(next, limit);
+}
+
+// ½ (far² − max(near, nearest)²) along the direction at `angle` off the axis.
+float hiddenAlong(float angle) {
   vec2 axis = toLight / distanceInRadii;
   float cosine = cos(angle), sine = sin(angle);
   vec2 direction = vec2(axis.x * cosine - axis.y * sine, axis.x * sine + axis.y * cosine);
   vec2 c = centre - pixel;
   float along = dot(c, direction), off = cross2(c, direction);
-  float half_ = sqrt(max(0.0, radius * radius - off * off));
-  nodeDirections[nodeCount] = direction;
-  nodeNear[nodeCount] = max(0.0, along - half_);
-  nodeFar[nodeCount] = max(0.0, along + half_);
-  nodeNearest[nodeCount] = nodeFar[nodeCount];
-  nodeWeights[nodeCount] = weight;
-  nodeCount++;
-}
-
-// Sorts the breaks, then places the nodes on the pieces between them that the union leaves open:
-// two per step, steps of at most MAX_STEP, or wider where MAX_NODES would not suffice.
-void prepareNodes() {
-  addBreak(-halfSpan);
-  addBreak(halfSpan);
-  if (!insideDisk) addUnionBreaks();
-  for (int i = 1; i < MAX_BREAKS; i++) {
-    if (i >= breakCount) break;
-    float value = breaks[i];
-    int j = i - 1;
-    for (; j >= 0 && breaks[j] > value; j--) breaks[j + 1] = breaks[j];
-    breaks[j + 1] = value;
-  }
-  float openWidth = 0.0;
-  int openPieces = 0;
-  for (int i = 0; i + 1 < MAX_BREAKS; i++) {
-    if (i + 1 >= breakCount) break;
-    float from = max(breaks[i], -halfSpan), to = min(breaks[i + 1], halfSpan);
-    if (to <= from || (!insideDisk && inUnion(0.5 * (from + to)))) continue;
-    openWidth += to - from;
-    openPieces++;
-  }
-  // Σ ceil(width / step) ≤ openWidth / step + openPieces ≤ MAX_NODES / 2.
-  float maxStep = max(MAX_STEP, openWidth / max(1.0, float(MAX_NODES / 2 - openPieces)));
-  nodeCount = 0;
-  const float offset = 0.28867513; // 1 / (2√3): Gauss–Legendre's two nodes on a unit piece
-  for (int i = 0; i + 1 < MAX_BREAKS; i++) {
-    if (i + 1 >= breakCount) break;
-    float from = max(breaks[i], -halfSpan), to = min(breaks[i + 1], halfSpan);
-    if (to <= from || (!insideDisk && inUnion(0.5 * (from + to)))) continue;
-    int steps = int(ceil((to - from) / maxStep));
-    float step = (to - from) / float(steps);
-    for (int k = 0; k < steps; k++) {
-      float middle = from + (float(k) + 0.5) * step;
-      addNode(middle - offset * step, 0.5 * step);
-      addNode(middle + offset * step, 0.5 * step);
+  float halfChord = sqrt(max(0.0, radius * radius - off * off));
+  float far = max(0.0, along + halfChord), nearest = far;
+  for (int i = 0; i < binCount; i++) {
+    ivec2 records = recordsOfEntry(i);
+    if (records.x < 0) break;
+    for (int record = records.x; record <= records.y; record++) {
+      loadRecord(record);
+      nearest = min(nearest, entryDistance(direction));
     }
   }
+  nearest = max(nearest, max(0.0, along - halfChord));
+  return 0.5 * max(0.0, far * far - nearest * nearest);
 }
 
-// Brings the loaded record (seen past) into every node's nearest hit.
-void narrowNodes() {
-  for (int j = 0; j < MAX_NODES; j++) {
-    if (j >= nodeCount) break;
-    nodeNearest[j] = min(nodeNearest[j], entryDistance(nodeDirections[j]));
+// The disk area (fraction) the records seen past hide outside the union.
+float hiddenPast() {
+  const float offset = 0.28867513; // 1 / (2√3): Gauss–Legendre's two nodes on a unit piece
+  float hidden = 0.0, from = -halfSpan;
+  for (int piece = 0; piece < MAX_PIECES; piece++) {
+    if (from >= halfSpan) break;
+    // The last piece allowed takes the rest of the domain.
+    float to = piece == MAX_PIECES - 1 ? halfSpan : nextBreak(from, min(halfSpan, from + MAX_STEP));
+    float middle = 0.5 * (from + to), step = to - from;
+    if (insideDisk || !inUnion(middle)) {
+      hidden += 0.5 * step * (hiddenAlong(middle - offset * step) + hiddenAlong(middle + offset * step));
+    }
+    from = to;
   }
-}
-
-// The disk area (fraction) the records seen past hide.
-float hiddenAtNodes() {
-  float hidden = 0.0;
-  for (int j = 0; j < MAX_NODES; j++) {
-    if (j >= nodeCount) break;
-    float nearest = max(nodeNearest[j], nodeNear[j]);
-    hidden += nodeWeights[j] * max(0.0, nodeFar[j] * nodeFar[j] - nearest * nearest);
-  }
-  return hidden * 0.5 / (PI * radius * radius);
+  return hidden / (PI * radius * radius);
 }
 
 // Pseudo-angle of a direction, in [0, 4), as `pseudoAngle` in src/geometry/shadowLayout.ts.
@@ -382,9 +368,10 @@ float pseudoAngle(vec2 d) {
 int visitedRecords = 0;
 #endif
 
-// Two passes over the pixel's bin, each stopping at the first hull farther from the light than the
-// pixel. The first merges the records in front into the union and counts the records seen past;
-// only if there are some, the second brings each of them into the quadrature's cells.
+// A pass over the pixel's bin, stopping at the first hull farther from the light than the pixel:
+// merges the records in front into the union and counts the records seen past; only where there
+// are some (a loop of no trips elsewhere: SwiftShader runs both sides of a branch, but leaves a loop
+// that no pixel of the quad is in), the quadrature adds what they hide.
 float shadowVisibility() {
   pixel = v_world;
   centre = v_shadow.xy;
@@ -398,51 +385,35 @@ float shadowVisibility() {
   lowCover = -1.0;
   highCover = 1.0;
   middleCount = 0;
-  pastCount = 0;
-  breakCount = 0;
-  axisAngle = atan(c.y, c.x);
-  halfSpan = insideDisk ? PI : asin(1.0 / distanceInRadii);
+  int pastCount = 0;
 
   int bin = min(int(pseudoAngle(-c) * (float(BIN_COUNT) / 4.0)), BIN_COUNT - 1);
   vec4 binEntries = texelFetch(u_bins, ivec2(bin, int(v_shadow.w)), 0);
-  int first = int(binEntries.x), count = int(binEntries.y);
-  for (int pass = 0; pass < 2; pass++) {
-    if (pass == 1) {
-      if (pastCount == 0) break;
-      prepareNodes();
-    }
-    for (int i = 0; i < count; i++) {
-      int e = first + i;
-      vec4 two = texelAt(u_entries, e / 2);
-      vec2 entry = e % 2 == 0 ? two.xy : two.zw;
-      // This hull and all after it are farther from the centre than the pixel: they hide nothing.
-      if (distanceToLight < entry.y) break;
-      int code = int(entry.x);
-      int firstRecord = code / ENTRY_MAX_RECORDS, lastRecord = firstRecord + code % ENTRY_MAX_RECORDS;
-      for (int record = firstRecord; record <= lastRecord; record++) {
+  binFirst = int(binEntries.x);
+  binCount = int(binEntries.y);
+  for (int i = 0; i < binCount; i++) {
+    ivec2 records = recordsOfEntry(i);
+    if (records.x < 0) break;
+    for (int record = records.x; record <= records.y; record++) {
 #ifdef SHADOW_STATISTICS
-        if (pass == 0) visitedRecords++;
+      visitedRecords++;
 #endif
-        loadRecord(record);
-        float low, high;
-        int kind = classifyRecord(low, high);
-        if (pass == 1) {
-          if (kind == SEEN_PAST) narrowNodes();
-        } else if (kind == HOLDS_PIXEL) {
-          return illuminated ? 1.0 : 0.0;
-        } else if (kind == IN_FRONT) {
-          insertInterval(low, high);
-        } else if (kind == SEEN_PAST) {
-          pastCount++;
-          addRecordBreaks();
-        }
-      }
-      // Whole: only an Illuminated light's hull pixels are left to find.
-      if (pass == 0 && coverIsWhole() && !illuminated) return 0.0;
+      loadRecord(record);
+      float low, high;
+      int kind = classifyRecord(low, high);
+      if (kind == HOLDS_PIXEL) return illuminated ? 1.0 : 0.0;
+      if (kind == IN_FRONT) insertInterval(low, high);
+      if (kind == SEEN_PAST) pastCount++;
     }
+    // Whole: only an Illuminated light's hull pixels are left to find.
+    if (coverIsWhole() && !illuminated) return 0.0;
   }
   if (coverIsWhole()) return 0.0;
   float hidden = insideDisk ? 0.0 : coveredBetween(-1.0, 1.0);
-  if (pastCount > 0) hidden += hiddenAtNodes();
+  for (int once = 0; once < (pastCount > 0 ? 1 : 0); once++) {
+    axisAngle = atan(c.y, c.x);
+    halfSpan = insideDisk ? PI : asin(1.0 / distanceInRadii);
+    hidden += hiddenPast();
+  }
   return clamp(1.0 - hidden, 0.0, 1.0);
 }
