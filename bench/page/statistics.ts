@@ -71,7 +71,8 @@ function sumLightmap(gl: WebGL2RenderingContext, texture: WebGLTexture): ShadowS
   gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, texels);
   gl.bindFramebuffer(gl.FRAMEBUFFER, null);
   gl.deleteFramebuffer(framebuffer);
-  const sums: ShadowStatistics = { pixels: 0, visits: 0, decidedWithoutLoop: 0, seenPast: 0 };
+  // The lightmap is cleared to alpha 1: every texel starts with one that no light wrote.
+  const sums: ShadowStatistics = { pixels: 0, visits: 0, decidedWithoutLoop: 0, seenPast: -width * height };
   for (let i = 0; i < texels.length; i += 4) {
     sums.pixels += texels[i];
     sums.visits += texels[i + 1];

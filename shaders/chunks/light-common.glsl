@@ -29,14 +29,15 @@ float distanceFalloff() {
 // The shadow is computed only where the light adds something.
 void writeLight(float strength) {
 #ifdef SHADOW_STATISTICS
-  // The benchmark's statistics build: per light pixel, 1, the records visited, 1 when none was.
+  // The benchmark's statistics build: per light pixel 1, the records visited, 1 when none was, and 1
+  // when it sees records past (the quadrature's pixels).
   lightVisibility();
 #ifdef SHADOWED
-  float visited = float(visitedRecords);
+  float visited = float(visitedRecords), past = seenPastRecords ? 1.0 : 0.0;
 #else
-  float visited = 0.0;
+  float visited = 0.0, past = 0.0;
 #endif
-  o_light = strength > 0.0 ? vec4(1.0, visited, visited == 0.0 ? 1.0 : 0.0, 0.0) : vec4(0.0);
+  o_light = strength > 0.0 ? vec4(1.0, visited, visited == 0.0 ? 1.0 : 0.0, past) : vec4(0.0);
 #else
   o_light = vec4(v_color * (strength > 0.0 ? strength * lightVisibility() : 0.0), 0.0);
 #endif

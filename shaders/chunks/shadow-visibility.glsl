@@ -366,6 +366,7 @@ float pseudoAngle(vec2 d) {
 #ifdef SHADOW_STATISTICS
 // Records the first pass visited, for the benchmark's statistics build (see light-common).
 int visitedRecords = 0;
+bool seenPastRecords = false;
 #endif
 
 // A pass over the pixel's bin, stopping at the first hull farther from the light than the pixel:
@@ -404,6 +405,9 @@ float shadowVisibility() {
       if (kind == HOLDS_PIXEL) return illuminated ? 1.0 : 0.0;
       if (kind == IN_FRONT) insertInterval(low, high);
       if (kind == SEEN_PAST) pastCount++;
+#ifdef SHADOW_STATISTICS
+      seenPastRecords = pastCount > 0;
+#endif
     }
     // Whole: only an Illuminated light's hull pixels are left to find.
     if (coverIsWhole() && !illuminated) return 0.0;
