@@ -29,4 +29,6 @@ void main() {
   v_shadow = u_shadow;
   v_illuminated = u_illuminated;
   gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
+  // Depth ½ whatever the view: the quadrature pass tests it against the main pass's marks (LightPass).
+  gl_Position.z = 0.0;
 }

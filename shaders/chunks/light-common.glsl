@@ -11,27 +11,27 @@ in vec2 v_uv;
 flat in vec3 v_color;
 out vec4 o_light;
 
-// Fraction of the light disk visible from this pixel.
-float lightVisibility() {
-#ifdef SHADOWED
-  return shadowVisibility();
-#else
-  return 1.0;
-#endif
-}
-
 // Linear falloff: 1 at the centre, 0 at the range.
 float distanceFalloff() {
   return max(0.0, 1.0 - length(v_fromLight));
 }
 
-// Alpha is 0 so additive blending leaves the lightmap's alpha untouched.
-// The shadow is computed only where the light adds something.
+// Writes colour × strength × the visible fraction of the disk. Alpha is 0 so additive blending
+// leaves the lightmap's alpha untouched. In the main shadowed build, a pixel that sees records past
+// gets no light here and depth 0 instead of 1: the quadrature build, drawn next with a depth test,
+// shades only those pixels (see LightPass).
 void writeLight(float strength) {
-#ifdef SHADOW_STATISTICS
+#ifdef SHADOWED
+  float visible = strength > 0.0 ? shadowVisibility() : 0.0;
+#ifndef SHADOW_QUADRATURE
+  gl_FragDepth = visible < 0.0 ? 1.0 : 0.0;
+#endif
+#else
+  float visible = 1.0;
+#endif
+#if defined(SHADOW_STATISTICS)
   // The benchmark's statistics build: per light pixel 1, the records visited, 1 when none was, and 1
-  // when it sees records past (the quadrature's pixels).
-  lightVisibility();
+  // when the quadrature takes the pixel.
 #ifdef SHADOWED
   float visited = float(visitedRecords), past = seenPastRecords ? 1.0 : 0.0;
 #else
@@ -39,6 +39,6 @@ void writeLight(float strength) {
 #endif
   o_light = strength > 0.0 ? vec4(1.0, visited, visited == 0.0 ? 1.0 : 0.0, past) : vec4(0.0);
 #else
-  o_light = vec4(v_color * (strength > 0.0 ? strength * lightVisibility() : 0.0), 0.0);
+  o_light = vec4(v_color * (strength * visible), 0.0);
 #endif
 }

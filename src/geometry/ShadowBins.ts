@@ -21,9 +21,8 @@ const ASIN_CUBIC = Math.PI / 2 - 1;
  * asin(r / (d − ρ)) of that direction. A hull reaching into the disk (d − ρ ≤ r) is filed in every bin.
  * And since a segment between two points within distance ρ' ≥ r of c stays within ρ', a pixel
  * nearer to c than d − ρ > r is never shaded by the hull: that bound orders the lists (0 for a hull
- * reaching into the disk, which may shade any pixel). The order is by buckets of that distance,
- * and each entry carries its bucket's lower end, so that a pixel may stop at the first entry whose
- * distance exceeds its own.
+ * reaching into the disk, which may shade any pixel). The order is by buckets of that distance: a
+ * pixel stops at the first entry whose bound exceeds its own distance by a bucket's width.
  *
  * Costs one square root and three divisions per light and hull in range, and writes about
  * 1 + (angular width of the hull's shadow) / (bin width) entries. All arrays are reused from frame
@@ -34,7 +33,7 @@ export class ShadowBins {
   bins = new Float32Array(BIN_COUNT * BIN_FLOATS * 8);
   rowCount = 0;
   /** Entries of all rows' bins, in whole rows of the entries texture. */
-  entries = new Float32Array(TEXTURE_WIDTH * 4);
+  entries = new Float32Array(TEXTURE_WIDTH * ENTRY_FLOATS);
   entryCount = 0;
   /** Candidates of the current light, in parallel arrays: hull, distance bucket, first bin and bin count. */
   private candidateHulls = new Int32Array(64);
@@ -114,26 +113,29 @@ export class ShadowBins {
       }
     }
     const firstEntry = this.entryCount;
-    this.entries = grow(this.entries, firstEntry * ENTRY_FLOATS, total * ENTRY_FLOATS, TEXTURE_WIDTH * 4);
+    this.entries = grow(this.entries, firstEntry * ENTRY_FLOATS, total * ENTRY_FLOATS, TEXTURE_WIDTH * ENTRY_FLOATS);
     const bins = this.bins;
     for (let bin = 0, start = firstEntry, size = wrapping; bin < BIN_COUNT; bin++) {
       size += cursors[bin];
       const b = (row * BIN_COUNT + bin) * BIN_FLOATS;
       bins[b] = start;
       bins[b + 1] = size;
+      bins[b + 2] = this.bucketWidth;
       cursors[bin] = start;
       start += size;
     }
-    const entries = this.entries, order = this.order, buckets = this.candidateBuckets, width = this.bucketWidth;
+    const entries = this.entries, order = this.order, circles = geometry.circles;
     for (let n = 0; n < count; n++) {
       const i = order[n], hull = hulls[i], binCount = binCounts[i];
-      const distance = buckets[i] * width;
+      const x = circles[3 * hull], y = circles[3 * hull + 1], hullRadius = circles[3 * hull + 2];
       for (let record = firstRecords[hull], end = record + recordCounts[hull]; record < end; record += ENTRY_MAX_RECORDS) {
         const code = record * ENTRY_MAX_RECORDS + Math.min(ENTRY_MAX_RECORDS, end - record) - 1;
         for (let k = 0, bin = firstBins[i]; k < binCount; k++) {
           const e = cursors[bin]++ * ENTRY_FLOATS;
           entries[e] = code;
-          entries[e + 1] = distance;
+          entries[e + 1] = x;
+          entries[e + 2] = y;
+          entries[e + 3] = hullRadius;
           if (++bin === BIN_COUNT) bin = 0;
         }
       }

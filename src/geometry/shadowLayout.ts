@@ -10,19 +10,20 @@
  *   a concave hull is its triangles. A segment is blocked by a hull exactly when it is blocked by one
  *   of its records, so the union over records is the union over hulls.
  * - **Entries** (per frame): per light and angular bin, the hulls whose shadow can reach the bin,
- *   two entries per texel: `(first record × ENTRY_MAX_RECORDS + record count − 1, distance)`,
- *   where no pixel nearer than `distance` to the light's centre can be shaded by the hull. A hull
- *   of more than {@link ENTRY_MAX_RECORDS} records takes several entries.
+ *   ordered by distance buckets of the light's bin row, nearest first: `(first record ×
+ *   ENTRY_MAX_RECORDS + record count − 1, x, y, radius)` with a circle around the hull, from which
+ *   the shader tells whether the hull can be between the pixel and the disk. A hull of more than
+ *   {@link ENTRY_MAX_RECORDS} records takes several entries.
  * - **Bins** (per frame): one row per shadowed light, {@link BIN_COUNT} texels; bin `k` holds the
  *   directions from the light's centre whose pseudo-angle (see `pseudoAngle`) lies in
- *   `[4k / N, 4(k + 1) / N)`: `(first entry, entry count, 0, 0)`.
+ *   `[4k / N, 4(k + 1) / N)`: `(first entry, entry count, distance bucket width, 0)`.
  *
  * Records are found by number: floats hold integers exactly below 2^24, so a scene may have up to
  * 2^24 / ENTRY_MAX_RECORDS records.
  */
 
-/** Points per record: a tile (4) or an octagon (8) is one record. */
-export const RECORD_POINTS = 8;
+/** Points per record: a tile or a box is one record, a triangle repeats its last point. */
+export const RECORD_POINTS = 4;
 /** Texels per record: two points each. */
 export const RECORD_TEXELS = RECORD_POINTS / 2;
 /** Floats per record. */
@@ -31,8 +32,8 @@ export const RECORD_FLOATS = RECORD_POINTS * 2;
 export const TEXTURE_WIDTH = 1024;
 /** Records per row of the records texture. */
 export const RECORDS_PER_ROW = TEXTURE_WIDTH / RECORD_TEXELS;
-/** Floats per entry: two entries per texel. */
-export const ENTRY_FLOATS = 2;
+/** Floats per entry: one texel. */
+export const ENTRY_FLOATS = 4;
 /** The most records one entry covers. */
 export const ENTRY_MAX_RECORDS = 32;
 /** Angular bins per light: the width of the bins texture. */

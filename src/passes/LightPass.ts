@@ -4,7 +4,7 @@ import { createProgram, type Program } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import type { LightShapes } from '../gl/LightShapes';
 import { ShadowType, Spotlight, TexturedLight, type LightKind } from '../scene/lights';
-import { shaderSources } from './shaders';
+import { shaderSources, type LightStages } from './shaders';
 import { ShadowUnits } from './ShadowTextures';
 
 const COOKIE_UNIT = 2;
@@ -19,7 +19,7 @@ const COOKIE_UNIT = 2;
 export class LightPass {
   readonly lightmap: RenderTarget;
   /** Per kind of light, its program for a light with no hull in range and for one with some. */
-  private readonly programs: Record<LightKind, { unshadowed: Program; shadowed: Program }>;
+  private readonly programs: Record<LightKind, Record<keyof LightStages, Program>>;
   private readonly programList: readonly Program[];
   private readonly clearValue = new Float32Array(4);
   // Uniform values go through reused typed arrays: doubles passed to a GL call one by one are boxed
@@ -32,7 +32,7 @@ export class LightPass {
   private readonly coneDecay = new Float32Array(1);
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly shapes: LightShapes, format: TargetFormat, width: number, height: number) {
-    const programsOf = (name: string, fragment: { unshadowed: string; shadowed: string }) => ({
+    const programsOf = (name: string, fragment: LightStages) => ({
       unshadowed: createProgram(gl, name, shaderSources.lightVertex, fragment.unshadowed),
       shadowed: createProgram(gl, `${name} with shadows`, shaderSources.lightVertex, fragment.shadowed),
     });
@@ -41,7 +41,7 @@ export class LightPass {
       spot: programsOf('spotlight', shaderSources.lightSpotFragment),
       textured: programsOf('textured light', shaderSources.lightTexturedFragment),
     };
-    this.programList = Object.values(this.programs).flatMap(({ unshadowed, shadowed }) => [unshadowed, shadowed]);
+    this.programList = Object.values(this.programs).flatMap((programs) => Object.values(programs));
     for (const program of this.programList) {
       gl.useProgram(program.handle);
       const uniforms = program.uniforms;
@@ -88,29 +88,31 @@ export class LightPass {
     const gl = this.gl;
     const light = draw.light;
     const programs = this.programs[light.kind];
-    const shadowed = draw.hullCount > 0;
-    const program = shadowed ? programs.shadowed : programs.unshadowed;
+    this.writeLightUniforms(draw);
+    if (light instanceof TexturedLight) {
+      gl.activeTexture(gl.TEXTURE0 + COOKIE_UNIT);
+      gl.bindTexture(gl.TEXTURE_2D, light.texture);
+    }
+    this.drawWith(draw.hullCount > 0 ? programs.shadowed : programs.unshadowed, draw);
+  }
+
+  /** Draws the light's shape with `program`, setting its uniforms from the arrays `writeLightUniforms` filled. */
+  private drawWith(program: Program, draw: LightDraw): void {
+    const gl = this.gl;
+    const light = draw.light;
     const uniforms = program.uniforms;
     gl.useProgram(program.handle);
-    this.writeLightUniforms(draw);
     gl.uniform2fv(uniforms.u_quad, draw.quad);
     gl.uniform3fv(uniforms.u_lightColor, this.lightColor);
     gl.uniform3fv(uniforms.u_light, this.lightPositionAndRange);
-    if (shadowed) {
+    if (uniforms.u_shadow) {
       gl.uniform4fv(uniforms.u_shadow, this.shadow);
       gl.uniform1f(uniforms.u_illuminated, light.shadowType === ShadowType.Illuminated ? 1 : 0);
     }
     if (light instanceof Spotlight) {
-      this.direction[0] = Math.cos(light.rotation);
-      this.direction[1] = Math.sin(light.rotation);
-      this.coneHalfAngle[0] = light.coneAngle / 2;
-      this.coneDecay[0] = light.coneDecay;
       gl.uniform2fv(uniforms.u_direction, this.direction);
       gl.uniform1fv(uniforms.u_coneHalfAngle, this.coneHalfAngle);
       gl.uniform1fv(uniforms.u_coneDecay, this.coneDecay);
-    } else if (light instanceof TexturedLight) {
-      gl.activeTexture(gl.TEXTURE0 + COOKIE_UNIT);
-      gl.bindTexture(gl.TEXTURE_2D, light.texture);
     }
     if (light.isConfinedToRangeDisk()) this.shapes.drawDisk();
     else this.shapes.drawQuad(gl.TRIANGLE_FAN);
@@ -130,6 +132,12 @@ export class LightPass {
     this.shadow[1] = light.position[1];
     this.shadow[2] = light.radius;
     this.shadow[3] = draw.binRow;
+    if (light instanceof Spotlight) {
+      this.direction[0] = Math.cos(light.rotation);
+      this.direction[1] = Math.sin(light.rotation);
+      this.coneHalfAngle[0] = light.coneAngle / 2;
+      this.coneDecay[0] = light.coneDecay;
+    }
   }
 
   dispose(): void {

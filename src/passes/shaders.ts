@@ -7,20 +7,34 @@ import lightPointFragment from '../../shaders/light-point.frag.glsl?raw';
 import lightSpotFragment from '../../shaders/light-spot.frag.glsl?raw';
 import lightTexturedFragment from '../../shaders/light-textured.frag.glsl?raw';
 import lightVertex from '../../shaders/light.vert.glsl?raw';
+import shadowQuadrature from '../../shaders/chunks/shadow-quadrature.glsl?raw';
 import shadowVisibility from '../../shaders/chunks/shadow-visibility.glsl?raw';
 import { SHADOW_DEFINES } from '../geometry/shadowLayout';
 import { resolveIncludes, withDefines } from '../gl/program';
 
-/** Chunks may include chunks: light-common includes shadow-visibility. */
+const chunks = { 'light-common': lightCommon, 'shadow-visibility': shadowVisibility, 'shadow-quadrature': shadowQuadrature };
+
+/** Resolves includes until none is left: chunks include chunks (light-common → shadow-visibility → shadow-quadrature). */
 function resolveChunks(source: string): string {
-  const chunks = { 'light-common': lightCommon, 'shadow-visibility': shadowVisibility };
-  return resolveIncludes(resolveIncludes(source, chunks), chunks);
+  for (let resolved = resolveIncludes(source, chunks); ; source = resolved, resolved = resolveIncludes(source, chunks)) {
+    if (resolved === source) return resolved;
+  }
 }
 
-/** A light pass's fragment stage for a light with no hull in range, and with some (`SHADOWED`). */
-function lightStage(source: string): { unshadowed: string; shadowed: string } {
+/** The fragment stages of a light pass (see the chunk light-common). */
+export interface LightStages {
+  /** For a light with no hull in range. */
+  unshadowed: string;
+  /** For a light with hulls in range (`SHADOWED`). */
+  shadowed: string;
+}
+
+function lightStage(source: string): LightStages {
   const resolved = resolveChunks(source);
-  return { unshadowed: resolved, shadowed: withDefines(resolved, { SHADOWED: '', ...SHADOW_DEFINES }) };
+  return {
+    unshadowed: resolved,
+    shadowed: withDefines(resolved, { SHADOWED: '', ...SHADOW_DEFINES }),
+  };
 }
 
 /** The GLSL sources, inlined at build time, with their chunks resolved. */

@@ -84,14 +84,14 @@ describe('FramePlan culling', () => {
   });
 });
 
-/** The entries of bin `bin` of the first draw's light: `[first record, record count, distance]` each. */
+/** The entries of bin `bin` of the first draw's light: `[first record, record count, circle x, y, radius]` each. */
 function binEntries(framePlan: FramePlan, bin: number): number[][] {
   const { bins, entries } = framePlan.bins;
   const b = (framePlan.draws[0].binRow * BIN_COUNT + bin) * BIN_FLOATS;
   const out: number[][] = [];
   for (let e = bins[b]; e < bins[b] + bins[b + 1]; e++) {
     const code = entries[e * ENTRY_FLOATS];
-    out.push([Math.floor(code / ENTRY_MAX_RECORDS), (code % ENTRY_MAX_RECORDS) + 1, entries[e * ENTRY_FLOATS + 1]]);
+    out.push([Math.floor(code / ENTRY_MAX_RECORDS), (code % ENTRY_MAX_RECORDS) + 1, ...entries.subarray(e * ENTRY_FLOATS + 1, e * ENTRY_FLOATS + 4)]);
   }
   return out;
 }
@@ -126,27 +126,28 @@ describe('FramePlan shadow bins', () => {
     for (const degrees of [80, -80, 180]) expect(filedAt(degrees)).toBe(0);
   });
 
-  it('lists each bin nearest first, and files a hull that reaches into the disk in every bin, at distance 0', () => {
+  it('lists each bin nearest first with a circle around each hull, and files a hull that reaches into the disk in every bin, first', () => {
     const centre: [number, number] = [50, 50];
     const framePlan = plan([light(centre, 5)], [box(120, 45), box(90, 45), box(53, 40, 10, 20)]);
     const listed = binEntries(framePlan, binAt(centre, 0));
     expect(listed.map(([record]) => record)).toEqual([2, 1, 0]);
-    // Distances are bucket floors (160 / 32 = 5 units each) below each hull's bounding circle: 37.9 and 67.9.
-    expect(listed.map(([, , distance]) => distance)).toEqual([0, 35, 65]);
-    for (let bin = 0; bin < BIN_COUNT; bin++) expect(binEntries(framePlan, bin)[0]).toEqual([2, 1, 0]);
+    expect(listed[1].slice(2)).toEqual([95, 50, Math.fround(Math.hypot(5, 5))]);
+    // Distance buckets of 160 / 32 = 5 units (the bins' third value).
+    expect(framePlan.bins.bins[framePlan.draws[0].binRow * BIN_COUNT * BIN_FLOATS + 2]).toBe(5);
+    for (let bin = 0; bin < BIN_COUNT; bin++) expect(binEntries(framePlan, bin)[0].slice(0, 2)).toEqual([2, 1]);
   });
 
-  it('makes a concave hull its triangles and a convex hull of more than 8 points a fan of records', () => {
+  it('makes a concave hull its triangles and a convex hull of more than 4 points a fan of records', () => {
     const u = new Hull([[80, 30], [100, 30], [100, 60], [80, 60], [80, 55], [95, 55], [95, 35], [80, 35]]);
     const round = new Hull(Array.from({ length: 16 }, (_, i): [number, number] => [150 + 10 * Math.cos((Math.PI * i) / 8), 50 + 10 * Math.sin((Math.PI * i) / 8)]));
     const geometry = new ShadowGeometry();
     geometry.update([u, round]);
     geometry.prepare(0);
     geometry.prepare(1);
-    expect(Array.from(geometry.recordCounts.subarray(0, 2))).toEqual([6, 3]);
-    // Records of a fan: points 0–7, then 0 and 7–13, then 0 and 13–15; every record has positive area.
-    expect(Array.from(geometry.recordPointCounts.subarray(6, 9))).toEqual([8, 8, 4]);
-    for (let record = 0; record < 9; record++) {
+    expect(Array.from(geometry.recordCounts.subarray(0, 2))).toEqual([6, 7]);
+    // Records of a fan: points 0–3, then 0, 3, 4, 5, and so on to 0, 13, 14, 15; every record has positive area.
+    expect(Array.from(geometry.recordPointCounts.subarray(6, 13))).toEqual([4, 4, 4, 4, 4, 4, 4]);
+    for (let record = 0; record < 13; record++) {
       const count = geometry.recordPointCounts[record];
       const points = geometry.records.subarray(record * RECORD_FLOATS, record * RECORD_FLOATS + 2 * count);
       expect(signedArea2(points)).toBeGreaterThan(0);
