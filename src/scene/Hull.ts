@@ -152,7 +152,7 @@ export class Hull {
     return this._shapeValid && this._scale[0] !== 0 && this._scale[1] !== 0;
   }
 
-  /** Whether the hull is valid and convex (a convex hull of up to 8 points is one shadow record; a concave one is its triangles). */
+  /** Whether the hull is valid and convex (its shadow records are a fan of its points, four at a time; a concave hull's are its triangles). */
   get convex(): boolean {
     return this._convex && this.valid;
   }
