@@ -6,8 +6,8 @@
 // directions of the records' points (where the nearest edge changes), of their edges' crossings
 // with the disk's rim, and of the union's ends (where the records in front take over). The sweep
 // goes from break to break (pieces wider than MAX_STEP are cut), skips the pieces the union covers,
-// and gives each piece two Gauss–Legendre nodes. It keeps no arrays (ANGLE zeroes them, which cost
-// SwiftShader 4 µs a fragment): it scans the pixel's bin again for each next break and each node.
+// and gives each piece two Gauss–Legendre nodes. It keeps no arrays (ANGLE zeroes them in every
+// fragment, used or not; see docs/performance.md): it scans the pixel's bin again for each next break and each node.
 // Directions in a piece outside the union miss every record in front, so the scans need not tell
 // records apart.
 const int MAX_PIECES = 64;

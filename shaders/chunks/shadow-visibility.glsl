@@ -305,7 +305,7 @@ float shadowVisibility() {
   }
   if (coverIsWhole()) return 0.0;
   float hidden = insideDisk ? 0.0 : coveredBetween(-1.0, 1.0);
-  // A loop of no trips where no record is seen past (a branch would cost SwiftShader both sides).
+  // A loop of no trips where no record is seen past: skipped as a whole, where a branch may run both sides.
   for (int once = 0; once < (pastCount > 0 ? 1 : 0); once++) hidden += hiddenPast();
   return clamp(1.0 - hidden, 0.0, 1.0);
 }
