@@ -15,36 +15,45 @@ export function signedArea2(coords: ArrayLike<number>, count = coords.length >> 
 
 /**
  * Removes consecutive duplicate points and points collinear with their neighbours (neither
- * changes the shape), returning a new flat array.
+ * changes the shape), returning a new flat array. Linear time: a point is dropped as soon as the
+ * next one shows it removable, and whatever that exposes is checked at once, so every point is
+ * pushed and popped at most once.
  */
 export function simplifyPolygon(coords: ArrayLike<number>): number[] {
   const out: number[] = [];
-  for (let i = 0; i < coords.length; i += 2) out.push(coords[i], coords[i + 1]);
-  let changed = true;
-  while (changed && out.length >= 6) {
-    changed = false;
-    const n = out.length >> 1;
-    for (let i = 0; i < n; i++) {
-      const p = (i + n - 1) % n;
-      const q = (i + 1) % n;
-      const cross = (out[2 * i] - out[2 * p]) * (out[2 * q + 1] - out[2 * p + 1])
-        - (out[2 * i + 1] - out[2 * p + 1]) * (out[2 * q] - out[2 * p]);
-      const duplicate = out[2 * i] === out[2 * p] && out[2 * i + 1] === out[2 * p + 1];
-      if (duplicate || (cross === 0 && isBetween(out, p, i, q))) {
-        out.splice(2 * i, 2);
-        changed = true;
-        break;
-      }
-    }
+  for (let i = 0; i + 1 < coords.length; i += 2) {
+    const x = coords[i], y = coords[i + 1];
+    while (out.length >= 4 && isRemovable(out, out.length - 4, out.length - 2, x, y)) out.length -= 2;
+    if (out.length < 2 || out[out.length - 2] !== x || out[out.length - 1] !== y) out.push(x, y);
   }
-  return out;
+  return closeSeam(out);
 }
 
-/** True when point `i` lies on the segment p–q (so removing it keeps the outline). */
-function isBetween(c: number[], p: number, i: number, q: number): boolean {
-  const dot = (c[2 * i] - c[2 * p]) * (c[2 * q] - c[2 * p]) + (c[2 * i + 1] - c[2 * p + 1]) * (c[2 * q + 1] - c[2 * p + 1]);
-  const len2 = (c[2 * q] - c[2 * p]) ** 2 + (c[2 * q + 1] - c[2 * p + 1]) ** 2;
-  return dot >= 0 && dot <= len2;
+/**
+ * Finishes {@link simplifyPolygon} where the outline wraps around: only the points next to the
+ * seam can have become removable, so it drops the last or the first point until neither is.
+ */
+function closeSeam(out: number[]): number[] {
+  let first = 0;
+  while (out.length - first >= 6) {
+    const last = out.length - 2;
+    if (isRemovable(out, last - 2, last, out[first], out[first + 1])) out.length -= 2;
+    else if (isRemovable(out, last, first, out[first + 2], out[first + 3])) first += 2;
+    else break;
+  }
+  return first === 0 ? out : out.slice(first);
+}
+
+/**
+ * Whether the point at offset `i` of `c` can go between the point at offset `p` and `(qx, qy)`:
+ * it repeats `p`, or lies on the segment between them.
+ */
+function isRemovable(c: number[], p: number, i: number, qx: number, qy: number): boolean {
+  const px = c[p], py = c[p + 1], ix = c[i], iy = c[i + 1];
+  if (ix === px && iy === py) return true;
+  if ((ix - px) * (qy - py) - (iy - py) * (qx - px) !== 0) return false;
+  const dot = (ix - px) * (qx - px) + (iy - py) * (qy - py);
+  return dot >= 0 && dot <= (qx - px) ** 2 + (qy - py) ** 2;
 }
 
 function orientation(ax: number, ay: number, bx: number, by: number, cx: number, cy: number): number {
@@ -74,23 +83,175 @@ export function segmentsIntersect(
 
 /**
  * True for a simple polygon: at least 3 points, non-zero area, and no two edges meeting
- * anywhere but at their shared end point.
+ * anywhere but at their shared end point (so also no outline folding back along itself).
+ * O(n log n): after linear checks of the points, a sweep line (Shamos–Hoey) tests only edges
+ * that become neighbours in the order the sweep meets them.
  */
 export function isSimplePolygon(coords: ArrayLike<number>): boolean {
   const n = coords.length >> 1;
   if (n < 3 || signedArea2(coords, n) === 0) return false;
+  const order = sortedPoints(coords, n);
+  return !hasRepeatedPoint(coords, order) && !foldsBack(coords, n) && !sweepFindsCrossing(coords, n, order);
+}
+
+/** Point indices in sweep order: by x, then y. */
+function sortedPoints(coords: ArrayLike<number>, n: number): Int32Array {
+  const order = new Int32Array(n);
+  for (let i = 0; i < n; i++) order[i] = i;
+  return order.sort((a, b) => comparePoints(coords, a, b));
+}
+
+function comparePoints(coords: ArrayLike<number>, a: number, b: number): number {
+  return coords[2 * a] - coords[2 * b] || coords[2 * a + 1] - coords[2 * b + 1];
+}
+
+/** Whether two points coincide (the outline touches itself there); `order` puts equal points side by side. */
+function hasRepeatedPoint(coords: ArrayLike<number>, order: Int32Array): boolean {
+  for (let k = 1; k < order.length; k++) if (comparePoints(coords, order[k - 1], order[k]) === 0) return true;
+  return false;
+}
+
+/**
+ * Whether the outline turns back along itself at a point: neighbouring edges can meet anywhere
+ * but at their shared point only by overlapping that way, so the sweep need not test them.
+ */
+function foldsBack(coords: ArrayLike<number>, n: number): boolean {
   for (let i = 0; i < n; i++) {
-    const i2 = (i + 1) % n;
-    for (let j = i + 1; j < n; j++) {
-      const j2 = (j + 1) % n;
-      if (j === i2 || j2 === i) continue;
-      if (segmentsIntersect(
-        coords[2 * i], coords[2 * i + 1], coords[2 * i2], coords[2 * i2 + 1],
-        coords[2 * j], coords[2 * j + 1], coords[2 * j2], coords[2 * j2 + 1],
-      )) return false;
-    }
+    const p = (i + n - 1) % n, q = (i + 1) % n;
+    const ux = coords[2 * p] - coords[2 * i], uy = coords[2 * p + 1] - coords[2 * i + 1];
+    const vx = coords[2 * q] - coords[2 * i], vy = coords[2 * q + 1] - coords[2 * i + 1];
+    if (ux * vy - uy * vx === 0 && ux * vx + uy * vy > 0) return true;
   }
-  return true;
+  return false;
+}
+
+/**
+ * The sweep: visits the points in `order`; at each it removes the edges that end there and
+ * inserts the edges that start there into the edges the sweep line crosses, ordered from below
+ * to above. Points are distinct (checked before), so the edges meeting at a point are exactly
+ * its two edges. Returns at the first crossing found: until then the order is well defined.
+ */
+function sweepFindsCrossing(coords: ArrayLike<number>, n: number, order: Int32Array): boolean {
+  const sweep = new SweepLine(coords, n);
+  for (const point of order) {
+    const before = (point + n - 1) % n;
+    if (sweep.endsAt(before, point) && sweep.remove(before)) return true;
+    if (sweep.endsAt(point, point) && sweep.remove(point)) return true;
+    if (!sweep.endsAt(before, point) && sweep.insert(before)) return true;
+    if (!sweep.endsAt(point, point) && sweep.insert(point)) return true;
+  }
+  return false;
+}
+
+function orientationOf(coords: ArrayLike<number>, a: number, b: number, c: number): number {
+  return orientation(coords[2 * a], coords[2 * a + 1], coords[2 * b], coords[2 * b + 1], coords[2 * c], coords[2 * c + 1]);
+}
+
+/**
+ * The edges (edge i runs from point i to the next) that the sweep line crosses, from below to
+ * above, as a skip list over edge indices: O(log n) expected insertion by comparison, O(1) removal
+ * and neighbours. Node levels come from a fixed-seed generator, so a polygon always takes the
+ * same steps. Each insertion and removal tests the edges it makes neighbours.
+ */
+class SweepLine {
+  /** The end of each edge that the sweep meets first, and the other. */
+  private readonly start: Int32Array;
+  private readonly end: Int32Array;
+  private readonly levels: number;
+  /** Links: `next[level * (n + 1) + node]`; node n is the head, before every edge; −1 past the last. */
+  private readonly next: Int32Array;
+  private readonly previous: Int32Array;
+  private readonly nodeLevels: Uint8Array;
+  private seed = 0x9e3779b9;
+
+  constructor(private readonly coords: ArrayLike<number>, private readonly n: number) {
+    this.start = new Int32Array(n);
+    this.end = new Int32Array(n);
+    for (let edge = 0; edge < n; edge++) {
+      const next = (edge + 1) % n, forward = comparePoints(coords, edge, next) < 0;
+      this.start[edge] = forward ? edge : next;
+      this.end[edge] = forward ? next : edge;
+    }
+    // Enough levels for the expected O(log n) a search.
+    this.levels = 32 - Math.clz32(n);
+    this.next = new Int32Array(this.levels * (n + 1)).fill(-1);
+    this.previous = new Int32Array(this.levels * (n + 1)).fill(-1);
+    this.nodeLevels = new Uint8Array(n);
+  }
+
+  /** Whether edge `edge` ends (rather than starts) at point `point`. */
+  endsAt(edge: number, point: number): boolean {
+    return this.end[edge] === point;
+  }
+
+  /** Inserts `edge` in its place; true when it touches an edge it passes or becomes neighbour of. */
+  insert(edge: number): boolean {
+    const n = this.n, level = this.randomLevel();
+    this.nodeLevels[edge] = level;
+    let at = n;
+    for (let l = this.levels - 1; l >= 0; l--) {
+      for (let next = this.next[l * (n + 1) + at]; next >= 0; next = this.next[l * (n + 1) + at]) {
+        const side = this.compareAtStart(edge, next);
+        if (side === 0) return true;
+        if (side < 0) break;
+        at = next;
+      }
+      if (l < level) this.link(at, edge, l);
+    }
+    return this.cross(this.previous[edge], edge) || this.cross(edge, this.next[edge]);
+  }
+
+  /** Removes `edge`; true when the edges that become neighbours cross. */
+  remove(edge: number): boolean {
+    const n = this.n;
+    for (let l = 0; l < this.nodeLevels[edge]; l++) {
+      const previous = this.previous[l * (n + 1) + edge], next = this.next[l * (n + 1) + edge];
+      this.next[l * (n + 1) + previous] = next;
+      if (next >= 0) this.previous[l * (n + 1) + next] = previous;
+    }
+    return this.cross(this.previous[edge], this.next[edge]);
+  }
+
+  /**
+   * Where `edge` goes, at its start, relative to `other` already crossed by the sweep line: 1
+   * above, −1 below, 0 when its start lies on `other`. Two edges leaving the same point are
+   * ordered by where they go.
+   */
+  private compareAtStart(edge: number, other: number): number {
+    const start = this.start[edge], otherStart = this.start[other], otherEnd = this.end[other];
+    const side = orientationOf(this.coords, otherStart, otherEnd, start);
+    if (side !== 0 || otherStart !== start) return side;
+    return orientationOf(this.coords, start, otherEnd, this.end[edge]);
+  }
+
+  /** Whether two edges that the sweep made neighbours (the head or −1: none) cross; edges sharing a point cannot (see `foldsBack`). */
+  private cross(a: number, b: number): boolean {
+    const n = this.n, co = this.coords;
+    if (a < 0 || b < 0 || a === n || b === n || (a + 1) % n === b || (b + 1) % n === a) return false;
+    const a2 = (a + 1) % n, b2 = (b + 1) % n;
+    return segmentsIntersect(
+      co[2 * a], co[2 * a + 1], co[2 * a2], co[2 * a2 + 1],
+      co[2 * b], co[2 * b + 1], co[2 * b2], co[2 * b2 + 1],
+    );
+  }
+
+  private link(after: number, node: number, level: number): void {
+    const row = level * (this.n + 1), next = this.next[row + after];
+    this.next[row + node] = next;
+    this.previous[row + node] = after;
+    this.next[row + after] = node;
+    if (next >= 0) this.previous[row + next] = node;
+  }
+
+  /** 1 + the trailing zero bits of a xorshift32 draw (level k with probability 2^−k), at most `levels`. */
+  private randomLevel(): number {
+    let x = this.seed;
+    x ^= x << 13;
+    x ^= x >>> 17;
+    x ^= x << 5;
+    this.seed = x >>> 0;
+    return Math.min(this.levels, 32 - Math.clz32(this.seed & -this.seed));
+  }
 }
 
 /** Whether a simple counter-clockwise polygon is convex: it never turns clockwise. */
@@ -123,36 +284,179 @@ export function isInsidePolygon(coords: ArrayLike<number>, point: ArrayLike<numb
 /**
  * Ear-clipping triangulation of a simple counter-clockwise polygon. Returns point indices,
  * three per triangle; the triangulation survives any affine transform of the points.
+ *
+ * It walks the outline clipping ears as it meets them, in O(n) ear tests for most outlines.
+ * When any point of the outline lies in a candidate ear, one that does not turn left does (the
+ * classic lemma of ear clipping), and clipping only ever makes points turn left, never the other
+ * way: so only the points that do not turn left at the start are bucketed, once, in a grid, and
+ * an ear is tested against the cells it overlaps.
  */
 export function triangulate(coords: ArrayLike<number>): number[] {
-  const remaining: number[] = [];
-  for (let i = 0; i < coords.length >> 1; i++) remaining.push(i);
+  const n = coords.length >> 1;
+  const outline = new Outline(coords, n);
+  const blockers = new PointGrid(coords, outline.pointsNotTurningLeft());
   const triangles: number[] = [];
-  let guard = remaining.length * remaining.length;
-  while (remaining.length > 3 && guard-- > 0) {
-    for (let k = 0; k < remaining.length; k++) {
-      const a = remaining[(k + remaining.length - 1) % remaining.length];
-      const b = remaining[k];
-      const c = remaining[(k + 1) % remaining.length];
-      if (isEar(coords, remaining, a, b, c)) {
-        triangles.push(a, b, c);
-        remaining.splice(k, 1);
-        break;
-      }
+  let remaining = n;
+  let ear = 0, stop = 0;
+  while (remaining > 3) {
+    const a = outline.previous[ear], c = outline.next[ear];
+    if (outline.turnsLeft(ear) && !blockers.anyInTriangle(a, ear, c, (p) => p !== a && p !== c && !outline.turnsLeft(p))) {
+      triangles.push(a, ear, c);
+      outline.remove(ear);
+      remaining--;
+      // Going on from the next point keeps the walk local: a run of points in a line, whose
+      // middles are no ears, is then crossed once, not once for each ear clipped beyond it.
+      ear = stop = c;
+      continue;
     }
+    ear = outline.next[ear];
+    // A whole turn without an ear: the outline is not simple (or rounding hides its ears).
+    if (ear === stop) return triangles;
   }
-  if (remaining.length === 3) triangles.push(remaining[0], remaining[1], remaining[2]);
+  if (remaining === 3) triangles.push(outline.previous[ear], ear, outline.next[ear]);
   return triangles;
 }
 
-function isEar(c: ArrayLike<number>, remaining: number[], a: number, b: number, d: number): boolean {
-  const ax = c[2 * a], ay = c[2 * a + 1], bx = c[2 * b], by = c[2 * b + 1], dx = c[2 * d], dy = c[2 * d + 1];
-  if ((bx - ax) * (dy - ay) - (by - ay) * (dx - ax) <= 0) return false;
-  for (const p of remaining) {
-    if (p === a || p === b || p === d) continue;
-    const px = c[2 * p], py = c[2 * p + 1];
-    if (orientation(ax, ay, bx, by, px, py) >= 0 && orientation(bx, by, dx, dy, px, py) >= 0
-      && orientation(dx, dy, ax, ay, px, py) >= 0) return false;
+/** The points of a polygon still to triangulate, as a doubly linked ring. */
+class Outline {
+  readonly next: Int32Array;
+  readonly previous: Int32Array;
+  private readonly removed: Uint8Array;
+
+  constructor(private readonly coords: ArrayLike<number>, n: number) {
+    this.next = new Int32Array(n);
+    this.previous = new Int32Array(n);
+    this.removed = new Uint8Array(n);
+    for (let i = 0; i < n; i++) {
+      this.next[i] = (i + 1) % n;
+      this.previous[i] = (i + n - 1) % n;
+    }
   }
-  return true;
+
+  /** Whether point `i`, still on the outline, turns strictly left (is convex) between its neighbours. */
+  turnsLeft(i: number): boolean {
+    return !this.removed[i] && orientationOf(this.coords, this.previous[i], i, this.next[i]) > 0;
+  }
+
+  pointsNotTurningLeft(): number[] {
+    const points: number[] = [];
+    for (let i = 0; i < this.next.length; i++) if (!this.turnsLeft(i)) points.push(i);
+    return points;
+  }
+
+  remove(i: number): void {
+    this.removed[i] = 1;
+    this.next[this.previous[i]] = this.next[i];
+    this.previous[this.next[i]] = this.previous[i];
+  }
+}
+
+/**
+ * Points bucketed in a uniform grid over their bounds, about one a cell; the grid's cells keep
+ * the aspect of the bounds so that thin polygons get thin cells.
+ */
+class PointGrid {
+  private readonly minX: number;
+  private readonly minY: number;
+  private readonly columns: number;
+  private readonly rows: number;
+  private readonly cellWidth: number;
+  private readonly cellHeight: number;
+  /** Points of cell k: `points[start[k]]` to `points[start[k + 1] - 1]`. */
+  private readonly start: Int32Array;
+  private readonly points: Int32Array;
+  /** Scratch `[min x, max x]` of {@link PointGrid.triangleSpanInRow}. */
+  private readonly span = new Float64Array(2);
+
+  constructor(private readonly coords: ArrayLike<number>, indices: readonly number[]) {
+    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+    for (const i of indices) {
+      minX = Math.min(minX, coords[2 * i]);
+      maxX = Math.max(maxX, coords[2 * i]);
+      minY = Math.min(minY, coords[2 * i + 1]);
+      maxY = Math.max(maxY, coords[2 * i + 1]);
+    }
+    const width = maxX - minX, height = maxY - minY;
+    const cells = Math.max(1, indices.length);
+    this.columns = width > 0 && height > 0 ? Math.min(cells, Math.max(1, Math.round(Math.sqrt((cells * width) / height)))) : width > 0 ? cells : 1;
+    this.rows = Math.max(1, Math.ceil(cells / this.columns));
+    this.minX = minX;
+    this.minY = minY;
+    this.cellWidth = width / this.columns || 1;
+    this.cellHeight = height / this.rows || 1;
+    [this.start, this.points] = this.bucket(indices);
+  }
+
+  /**
+   * Whether any bucketed point that `accept`s lies inside or on the triangle of points a, b, c
+   * (counter-clockwise).
+   */
+  anyInTriangle(a: number, b: number, c: number, accept: (point: number) => boolean): boolean {
+    const co = this.coords;
+    const ax = co[2 * a], ay = co[2 * a + 1], bx = co[2 * b], by = co[2 * b + 1], cx = co[2 * c], cy = co[2 * c + 1];
+    const row0 = this.row(Math.min(ay, by, cy)), row1 = this.row(Math.max(ay, by, cy));
+    for (let row = row0; row <= row1; row++) {
+      // Only the cells the triangle overlaps in this row: a long thin triangle covers few of its bounds' cells.
+      const span = this.triangleSpanInRow(ax, ay, bx, by, cx, cy, row);
+      for (let column = this.column(span[0]) - 1, last = this.column(span[1]) + 1; column <= last; column++) {
+        if (column < 0 || column >= this.columns) continue;
+        const cell = row * this.columns + column;
+        for (let k = this.start[cell]; k < this.start[cell + 1]; k++) {
+          const p = this.points[k], px = co[2 * p], py = co[2 * p + 1];
+          if (orientation(ax, ay, bx, by, px, py) >= 0 && orientation(bx, by, cx, cy, px, py) >= 0
+            && orientation(cx, cy, ax, ay, px, py) >= 0 && accept(p)) return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  /**
+   * The x extent of the triangle within `row`'s band of y, widened by a millionth of a cell so
+   * that rounding in the band's bounds loses no point.
+   */
+  private triangleSpanInRow(ax: number, ay: number, bx: number, by: number, cx: number, cy: number, row: number): Float64Array {
+    const slack = this.cellHeight * 1e-6;
+    const low = this.minY + row * this.cellHeight - slack, high = low + this.cellHeight + 2 * slack;
+    const span = this.span;
+    span[0] = Infinity;
+    span[1] = -Infinity;
+    extendBySegmentInBand(span, ax, ay, bx, by, low, high);
+    extendBySegmentInBand(span, bx, by, cx, cy, low, high);
+    extendBySegmentInBand(span, cx, cy, ax, ay, low, high);
+    return span;
+  }
+
+  /** Counting sort of `indices` by cell. */
+  private bucket(indices: readonly number[]): [Int32Array, Int32Array] {
+    const start = new Int32Array(this.columns * this.rows + 1);
+    const cellOf = indices.map((i) => this.row(this.coords[2 * i + 1]) * this.columns + this.column(this.coords[2 * i]));
+    for (const cell of cellOf) start[cell + 1]++;
+    for (let k = 1; k < start.length; k++) start[k] += start[k - 1];
+    const points = new Int32Array(indices.length);
+    const filled = start.slice(0, -1);
+    indices.forEach((i, k) => { points[filled[cellOf[k]]++] = i; });
+    return [start, points];
+  }
+
+  private column(x: number): number {
+    return Math.min(this.columns - 1, Math.max(0, Math.floor((x - this.minX) / this.cellWidth)));
+  }
+
+  private row(y: number): number {
+    return Math.min(this.rows - 1, Math.max(0, Math.floor((y - this.minY) / this.cellHeight)));
+  }
+}
+
+/** Widens `span` ([min x, max x]) to the part of segment (x0, y0)–(x1, y1) with y in [low, high]. */
+function extendBySegmentInBand(span: Float64Array, x0: number, y0: number, x1: number, y1: number, low: number, high: number): void {
+  if (y0 > y1) {
+    extendBySegmentInBand(span, x1, y1, x0, y0, low, high);
+    return;
+  }
+  if (y1 < low || y0 > high) return;
+  const from = y0 >= low ? x0 : x0 + ((x1 - x0) * (low - y0)) / (y1 - y0);
+  const to = y1 <= high ? x1 : x0 + ((x1 - x0) * (high - y0)) / (y1 - y0);
+  span[0] = Math.min(span[0], from, to);
+  span[1] = Math.max(span[1], from, to);
 }
