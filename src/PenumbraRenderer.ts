@@ -11,7 +11,7 @@ import { LightPass } from './passes/LightPass';
 import { ShadowTextures } from './passes/ShadowTextures';
 import { Hull } from './scene/Hull';
 import { Light } from './scene/lights';
-import { assertFinite, copyColor, type ColorLike } from './scene/validate';
+import { assertFinite, frozenColor, type ColorLike } from './scene/validate';
 
 /** Options of a {@link PenumbraRenderer}; every field has the default shown. */
 export interface PenumbraRendererOptions {
@@ -93,7 +93,7 @@ export class PenumbraRenderer {
   private readonly gl: WebGL2RenderingContext;
   private readonly _lights: Light[] = [];
   private readonly _hulls: Hull[] = [];
-  private readonly _ambient: [number, number, number] = [0.2, 0.2, 0.2];
+  private _ambient: readonly [number, number, number] = Object.freeze([0.2, 0.2, 0.2] as const);
   private readonly _viewProjection = mat4.create();
   private customViewProjection = false;
   private readonly geometry = new ShadowGeometry();
@@ -117,7 +117,7 @@ export class PenumbraRenderer {
     this.gl = gl;
     this.debug = options.debug ?? false;
     this.measureCpuTime = options.measureCpuTime ?? false;
-    if (options.ambientColor) this.ambientColor = options.ambientColor;
+    if (options.ambientColor !== undefined) this.ambientColor = options.ambientColor;
     this.width = checkSize('width', options.width ?? gl.drawingBufferWidth);
     this.height = checkSize('height', options.height ?? gl.drawingBufferHeight);
     this.lightmapScale = checkScale(options.lightmapScale ?? 1);
@@ -135,12 +135,12 @@ export class PenumbraRenderer {
     this.canvas?.addEventListener('webglcontextrestored', this.onContextRestored);
   }
 
-  /** Colour of unlit areas `[r, g, b]`, 0..1 per channel. */
+  /** Colour of unlit areas `[r, g, b]`, 0..1 per channel; a frozen array, as the lights' vectors: assign a new one to change it. */
   get ambientColor(): readonly [number, number, number] {
     return this._ambient;
   }
   set ambientColor(value: ColorLike) {
-    copyColor('PenumbraRenderer.ambientColor', value, this._ambient);
+    this._ambient = frozenColor('PenumbraRenderer.ambientColor', value);
   }
 
   /**

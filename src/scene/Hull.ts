@@ -1,5 +1,5 @@
 import { isConvexPolygon, isSimplePolygon, signedArea2, simplifyPolygon, triangulate } from '../geometry/polygon';
-import { assertFinite, copyVec2, type Vec2Like } from './validate';
+import { assertBoolean, assertFinite, assertOptions, describeValue, frozenPair, frozenVec2, type Vec2Like } from './validate';
 
 /** Options of a {@link Hull}; every field has the default shown. */
 export interface HullOptions {
@@ -21,12 +21,18 @@ export interface HullOptions {
  *
  * A hull with fewer than 3 distinct points, crossing edges or zero area is kept but flagged
  * `valid === false` and ignored by the renderer; giving it correct points makes it valid again.
+ * Checking and triangulating the points takes O(n log n) for most outlines.
+ *
+ * Setters and options are checked as the lights' are (`TypeError` for a wrong type, `RangeError`
+ * for NaN or ∞, naming the property). `points`, `position`, `origin` and `scale` are frozen
+ * arrays: snapshots that never change and cannot be written to; assign a new value, or call
+ * {@link Hull.setPosition}, to change them.
  */
 export class Hull {
-  private _points: ReadonlyArray<readonly [number, number]> = [];
-  private readonly _position: [number, number] = [0, 0];
-  private readonly _origin: [number, number] = [0, 0];
-  private readonly _scale: [number, number] = [1, 1];
+  private _points: ReadonlyArray<readonly [number, number]> = Object.freeze([]);
+  private _position: readonly [number, number] = Object.freeze([0, 0] as const);
+  private _origin: readonly [number, number] = Object.freeze([0, 0] as const);
+  private _scale: readonly [number, number] = Object.freeze([1, 1] as const);
   private _rotation = 0;
   private _enabled = true;
   private _shapeValid = false;
@@ -57,25 +63,22 @@ export class Hull {
   readonly coarseBounds = new Float64Array(4);
 
   constructor(points: ReadonlyArray<Vec2Like>, options: HullOptions = {}) {
+    assertOptions('Hull', options);
     this.points = points;
-    if (options.position) this.position = options.position;
-    if (options.origin) this.origin = options.origin;
+    if (options.position !== undefined) this.position = options.position;
+    if (options.origin !== undefined) this.origin = options.origin;
     if (options.rotation !== undefined) this.rotation = options.rotation;
     if (options.scale !== undefined) this.scale = options.scale;
     if (options.enabled !== undefined) this.enabled = options.enabled;
   }
 
-  /** The points as given (local space). Assign a new array to reshape the hull. */
+  /** The points as given (local space), frozen, pairs too. Assign a new array to reshape the hull. */
   get points(): ReadonlyArray<readonly [number, number]> {
     return this._points;
   }
   set points(points: ReadonlyArray<Vec2Like>) {
-    if (!Array.isArray(points)) throw new TypeError(`Hull.points must be an array of [x, y] pairs, got ${String(points)}`);
-    const copy = points.map((p, i) => {
-      const v: [number, number] = [0, 0];
-      copyVec2(`Hull.points[${i}]`, p, v);
-      return v as readonly [number, number];
-    });
+    if (!Array.isArray(points)) throw new TypeError(`Hull.points must be an array of [x, y] pairs, got ${describeValue(points)}`);
+    const copy = Array.from(points, (p, i) => frozenVec2(`Hull.points[${i}]`, p));
     this._points = Object.freeze(copy);
     const cleaned = simplifyPolygon(copy.flat());
     this._shapeValid = isSimplePolygon(cleaned);
@@ -90,28 +93,27 @@ export class Hull {
     this.touch();
   }
 
-  /** World position of `origin`. */
+  /** World position of `origin`, frozen. */
   get position(): readonly [number, number] {
     return this._position;
   }
   set position(value: Vec2Like) {
-    copyVec2('Hull.position', value, this._position);
+    this._position = frozenVec2('Hull.position', value);
     this.touch();
   }
-  /** Moves the hull without allocating. */
+  /** Moves the hull; allocates only the frozen pair that `position` then returns. */
   setPosition(x: number, y: number): this {
-    this._position[0] = assertFinite('Hull.position[0]', x);
-    this._position[1] = assertFinite('Hull.position[1]', y);
+    this._position = frozenPair('Hull.position', x, y);
     this.touch();
     return this;
   }
 
-  /** Pivot in local space. */
+  /** Pivot in local space, frozen. */
   get origin(): readonly [number, number] {
     return this._origin;
   }
   set origin(value: Vec2Like) {
-    copyVec2('Hull.origin', value, this._origin);
+    this._origin = frozenVec2('Hull.origin', value);
     this.pivotRadius = NaN;
     this.touch();
   }
@@ -125,16 +127,13 @@ export class Hull {
     this.touch();
   }
 
-  /** Scale `[sx, sy]` around `origin`; assign a number for uniform scale. Negative mirrors. */
+  /** Scale `[sx, sy]` around `origin`, frozen; assign a number for uniform scale. Negative mirrors. */
   get scale(): readonly [number, number] {
     return this._scale;
   }
   set scale(value: number | Vec2Like) {
-    if (typeof value === 'number') {
-      this._scale[0] = this._scale[1] = assertFinite('Hull.scale', value);
-    } else {
-      copyVec2('Hull.scale', value, this._scale);
-    }
+    if (typeof value === 'number') assertFinite('Hull.scale', value);
+    this._scale = typeof value === 'number' ? frozenPair('Hull.scale', value, value) : frozenVec2('Hull.scale', value);
     this.touch();
   }
 
@@ -143,7 +142,7 @@ export class Hull {
     return this._enabled;
   }
   set enabled(value: boolean) {
-    this._enabled = Boolean(value);
+    this._enabled = assertBoolean('Hull.enabled', value);
     this.touch();
   }
 

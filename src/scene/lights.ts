@@ -1,5 +1,8 @@
-import type { Hull } from './Hull';
-import { assertFinite, assertNonNegative, copyColor, copyVec2, type ColorLike, type Vec2Like } from './validate';
+import { Hull } from './Hull';
+import {
+  assertBoolean, assertFinite, assertNonNegative, assertOneOf, assertOptions, describeValue, frozenColor, frozenPair, frozenVec2,
+  type ColorLike, type Vec2Like,
+} from './validate';
 
 /** How a light treats the inside of the hulls it shines on. */
 export const ShadowType = {
@@ -40,71 +43,83 @@ export interface LightOptions {
 /** The kind of a light, used by the renderer to pick its light pass. */
 export type LightKind = 'point' | 'spot' | 'textured';
 
+/** The public class of each kind, for messages: a minifier renames the classes themselves. */
+const CLASS_NAMES: Readonly<Record<LightKind, string>> = { point: 'PointLight', spot: 'Spotlight', textured: 'TexturedLight' };
+
 /**
  * Common state of every light. Lights are plain data: add them to a renderer with
  * `renderer.addLight(light)`; every change shows in the next frame.
+ *
+ * Every setter and constructor option is checked: a value of the wrong type throws a
+ * `TypeError`, one out of range (NaN, ∞, negative) a `RangeError`, both naming the property.
+ * Vector getters (`position`, `origin`, `color`, `size`) return frozen arrays: a snapshot that
+ * never changes and cannot be written to. To change a vector, assign a new one or call
+ * {@link Light.setPosition}. `ignoredHulls` is a live set: adding and deleting hulls takes effect.
  */
 export abstract class Light {
-  /** Which light pass draws this light. */
-  abstract readonly kind: LightKind;
-  private readonly _position: [number, number] = [0, 0];
-  private readonly _origin: [number, number] = [0.5, 0.5];
-  private readonly _color: [number, number, number] = [1, 1, 1];
+  private _position: readonly [number, number] = Object.freeze([0, 0] as const);
+  private _origin: readonly [number, number] = Object.freeze([0.5, 0.5] as const);
+  private _color: readonly [number, number, number] = Object.freeze([1, 1, 1] as const);
   private _range = 100;
   private _radius = 0;
   private _intensity = 1;
   private _rotation = 0;
-  /** A disabled light is not drawn. */
-  enabled = true;
-  /** When false the light passes through every hull. */
-  castsShadows = true;
-  /** Whether the light lights the inside of hulls; see {@link ShadowType}. */
-  shadowType: ShadowType = ShadowType.Illuminated;
+  private _enabled = true;
+  private _castsShadows = true;
+  private _shadowType: ShadowType = ShadowType.Illuminated;
   /** Hulls this light passes through: they neither shadow it nor make it skip when its centre is inside them. */
   readonly ignoredHulls = new Set<Hull>();
 
   constructor(options: LightOptions = {}) {
-    if (options.position) this.position = options.position;
+    assertOptions(this.className, options);
+    if (options.position !== undefined) this.position = options.position;
     if (options.range !== undefined) this.range = options.range;
     if (options.radius !== undefined) this.radius = options.radius;
-    if (options.color) this.color = options.color;
+    if (options.color !== undefined) this.color = options.color;
     if (options.intensity !== undefined) this.intensity = options.intensity;
     if (options.rotation !== undefined) this.rotation = options.rotation;
-    if (options.origin) this.origin = options.origin;
+    if (options.origin !== undefined) this.origin = options.origin;
     if (options.shadowType !== undefined) this.shadowType = options.shadowType;
     if (options.enabled !== undefined) this.enabled = options.enabled;
     if (options.castsShadows !== undefined) this.castsShadows = options.castsShadows;
-    for (const hull of options.ignoredHulls ?? []) this.ignoredHulls.add(hull);
+    if (options.ignoredHulls !== undefined) this.ignoreHulls(options.ignoredHulls);
   }
 
-  /** World position of the light's centre. */
+  /** Which light pass draws this light. A getter, not a field: the constructor names the class by it. */
+  abstract get kind(): LightKind;
+
+  /** The class name that messages show. */
+  protected get className(): string {
+    return CLASS_NAMES[this.kind];
+  }
+
+  /** World position of the light's centre, frozen. */
   get position(): readonly [number, number] {
     return this._position;
   }
   set position(value: Vec2Like) {
-    copyVec2(`${this.constructor.name}.position`, value, this._position);
+    this._position = frozenVec2(`${this.className}.position`, value);
   }
-  /** Moves the light without allocating. */
+  /** Moves the light; allocates only the frozen pair that `position` then returns. */
   setPosition(x: number, y: number): this {
-    this._position[0] = assertFinite(`${this.constructor.name}.position[0]`, x);
-    this._position[1] = assertFinite(`${this.constructor.name}.position[1]`, y);
+    this._position = frozenPair(`${this.className}.position`, x, y);
     return this;
   }
 
-  /** Normalised pivot of the light's quad placed at `position` (matters for textured lights). */
+  /** Normalised pivot of the light's quad placed at `position` (matters for textured lights), frozen. */
   get origin(): readonly [number, number] {
     return this._origin;
   }
   set origin(value: Vec2Like) {
-    copyVec2(`${this.constructor.name}.origin`, value, this._origin);
+    this._origin = frozenVec2(`${this.className}.origin`, value);
   }
 
-  /** Linear RGB colour. */
+  /** Linear RGB colour, frozen. */
   get color(): readonly [number, number, number] {
     return this._color;
   }
   set color(value: ColorLike) {
-    copyColor(`${this.constructor.name}.color`, value, this._color);
+    this._color = frozenColor(`${this.className}.color`, value);
   }
 
   /** Distance at which the light reaches zero. */
@@ -112,7 +127,7 @@ export abstract class Light {
     return this._range;
   }
   set range(value: number) {
-    this._range = assertNonNegative(`${this.constructor.name}.range`, value);
+    this._range = assertNonNegative(`${this.className}.range`, value);
   }
 
   /** Radius of the emitting disk. */
@@ -120,7 +135,7 @@ export abstract class Light {
     return this._radius;
   }
   set radius(value: number) {
-    this._radius = assertNonNegative(`${this.constructor.name}.radius`, value);
+    this._radius = assertNonNegative(`${this.className}.radius`, value);
   }
 
   /** Multiplier on the colour. */
@@ -128,7 +143,7 @@ export abstract class Light {
     return this._intensity;
   }
   set intensity(value: number) {
-    this._intensity = assertNonNegative(`${this.constructor.name}.intensity`, value);
+    this._intensity = assertNonNegative(`${this.className}.intensity`, value);
   }
 
   /** Rotation in radians. */
@@ -136,7 +151,44 @@ export abstract class Light {
     return this._rotation;
   }
   set rotation(value: number) {
-    this._rotation = assertFinite(`${this.constructor.name}.rotation`, value);
+    this._rotation = assertFinite(`${this.className}.rotation`, value);
+  }
+
+  /** A disabled light is not drawn. */
+  get enabled(): boolean {
+    return this._enabled;
+  }
+  set enabled(value: boolean) {
+    this._enabled = assertBoolean(`${this.className}.enabled`, value);
+  }
+
+  /** When false the light passes through every hull. */
+  get castsShadows(): boolean {
+    return this._castsShadows;
+  }
+  set castsShadows(value: boolean) {
+    this._castsShadows = assertBoolean(`${this.className}.castsShadows`, value);
+  }
+
+  /** Whether the light lights the inside of hulls; see {@link ShadowType}. */
+  get shadowType(): ShadowType {
+    return this._shadowType;
+  }
+  set shadowType(value: ShadowType) {
+    this._shadowType = assertOneOf(`${this.className}.shadowType`, value, SHADOW_TYPES);
+  }
+
+  /** Adds `hulls` to {@link Light.ignoredHulls} after checking that every one is a `Hull`; on an error none is added. */
+  private ignoreHulls(hulls: Iterable<Hull>): void {
+    const name = `${this.className}.ignoredHulls`;
+    if (typeof hulls !== 'object' || hulls === null || typeof (hulls as Partial<Iterable<Hull>>)[Symbol.iterator] !== 'function') {
+      throw new TypeError(`${name} must be an iterable of Hulls, got ${describeValue(hulls)}`);
+    }
+    const list = [...hulls];
+    list.forEach((hull, i) => {
+      if (!(hull instanceof Hull)) throw new TypeError(`${name}[${i}] must be a Hull, got ${describeValue(hull)}`);
+    });
+    for (const hull of list) this.ignoredHulls.add(hull);
   }
 
   /**
@@ -192,10 +244,14 @@ export abstract class Light {
 }
 
 const CENTRE = [0.5, 0.5] as const;
+const SHADOW_TYPES: readonly ShadowType[] = Object.values(ShadowType);
+
 
 /** An isotropic light: full at its centre, falling linearly to zero at `range`. */
 export class PointLight extends Light {
-  readonly kind = 'point';
+  get kind(): 'point' {
+    return 'point';
+  }
 }
 
 /** Options of a {@link Spotlight}. */
@@ -215,7 +271,10 @@ export interface SpotlightOptions extends LightOptions {
  * distance falloff times a cone falloff set by `coneAngle` and `coneDecay`.
  */
 export class Spotlight extends Light {
-  readonly kind = 'spot';
+  get kind(): 'spot' {
+    return 'spot';
+  }
+
   private _coneAngle = Math.PI / 2;
   private _coneDecay = 1;
 
@@ -259,28 +318,46 @@ export interface TexturedLightOptions extends LightOptions {
  * from `position` over the whole quad; `range` sets the default `size`.
  */
 export class TexturedLight extends Light {
-  readonly kind = 'textured';
-  /** The light cookie texture. */
-  texture: WebGLTexture;
-  private _size: [number, number] | null = null;
+  private _texture: WebGLTexture;
+  private _size: readonly [number, number] | null = null;
 
   constructor(options: TexturedLightOptions) {
     super(options);
-    if (!options || options.texture == null) throw new TypeError('TexturedLight.texture is required');
-    this.texture = options.texture;
-    if (options.size) this.size = options.size;
+    if (options?.texture === undefined) throw new TypeError('TexturedLight.texture is required');
+    this._texture = checkTexture(options.texture);
+    if (options.size !== undefined) this.size = options.size;
   }
 
-  /** Size of the quad in world units; defaults to `2 × range` on each side. */
+  get kind(): 'textured' {
+    return 'textured';
+  }
+
+  /** The light cookie texture: any object (WebGL textures are opaque handles), checked when set. */
+  get texture(): WebGLTexture {
+    return this._texture;
+  }
+  set texture(value: WebGLTexture) {
+    this._texture = checkTexture(value);
+  }
+
+  /** Size of the quad in world units, frozen; `2 × range` on each side unless a size was given. */
   get size(): readonly [number, number] {
-    return this._size ?? [2 * this.range, 2 * this.range];
+    return this._size ?? Object.freeze([2 * this.range, 2 * this.range] as const);
   }
   set size(value: Vec2Like) {
-    const size: [number, number] = [0, 0];
-    copyVec2('TexturedLight.size', value, size);
+    const size = frozenVec2('TexturedLight.size', value);
     assertNonNegative('TexturedLight.size[0]', size[0]);
     assertNonNegative('TexturedLight.size[1]', size[1]);
     this._size = size;
+  }
+
+  /**
+   * The size given, or null while the quad follows `range`: a scene file saves null then, since
+   * `2 × range` can overflow where `range` does not.
+   * @internal
+   */
+  get givenSize(): readonly [number, number] | null {
+    return this._size;
   }
 
   protected override quadWidth(): number {
@@ -306,4 +383,9 @@ export class TexturedLight extends Light {
   override isConfinedToRangeDisk(): boolean {
     return false;
   }
+}
+
+function checkTexture(value: WebGLTexture): WebGLTexture {
+  if (typeof value !== 'object' || value === null) throw new TypeError(`TexturedLight.texture must be a WebGLTexture, got ${describeValue(value)}`);
+  return value;
 }

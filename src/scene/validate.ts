@@ -3,42 +3,132 @@ export type Vec2Like = readonly [number, number] | ArrayLike<number>;
 /** An RGB colour with channels in 0..1 (values above 1 are allowed and over-brighten). */
 export type ColorLike = readonly [number, number, number] | ArrayLike<number>;
 
-/** Throws a `RangeError` naming `name` unless `value` is a finite number. */
+/**
+ * Checks of values given to the scene classes. A value of the wrong type is a `TypeError`, one of
+ * the right type out of range (NaN, ∞, a negative range, an unknown name) a `RangeError`; every
+ * message names the property (`PointLight.position[1]`) and shows the value, cut short.
+ */
+
+/** Throws unless `value` is a finite number. */
 export function assertFinite(name: string, value: number): number {
-  if (typeof value !== 'number' || !Number.isFinite(value)) {
-    throw new RangeError(`${name} must be a finite number, got ${String(value)}`);
-  }
+  if (typeof value !== 'number') throw new TypeError(`${name} must be a finite number, got ${describeValue(value)}`);
+  if (!Number.isFinite(value)) throw new RangeError(`${name} must be a finite number, got ${describeValue(value)}`);
   return value;
 }
 
-/** Throws a `RangeError` naming `name` unless `value` is a finite number ≥ 0. */
+/** Throws unless `value` is a finite number ≥ 0. */
 export function assertNonNegative(name: string, value: number): number {
   assertFinite(name, value);
   if (value < 0) throw new RangeError(`${name} must not be negative, got ${value}`);
   return value;
 }
 
-/** Validates a 2D vector and copies it into `target`. */
-export function copyVec2(name: string, value: Vec2Like, target: [number, number]): void {
-  if (value == null || typeof value.length !== 'number' || value.length < 2) {
-    throw new RangeError(`${name} must be an [x, y] pair, got ${describe(value)}`);
-  }
-  target[0] = assertFinite(`${name}[0]`, value[0]);
-  target[1] = assertFinite(`${name}[1]`, value[1]);
+/** Throws a `TypeError` naming the class unless a constructor's `options` is an object. */
+export function assertOptions(className: string, options: object): void {
+  if (typeof options !== 'object' || options === null) throw new TypeError(`${className} options must be an object, got ${describeValue(options)}`);
 }
 
-/** Validates an RGB colour (finite, non-negative channels) and copies it into `target`. */
-export function copyColor(name: string, value: ColorLike, target: [number, number, number]): void {
-  if (value == null || typeof value.length !== 'number' || value.length < 3) {
-    throw new RangeError(`${name} must be an [r, g, b] triple, got ${describe(value)}`);
-  }
-  for (let i = 0; i < 3; i++) target[i] = assertNonNegative(`${name}[${i}]`, value[i]);
+/** Throws a `TypeError` unless `value` is `true` or `false` (no truthy stand-ins). */
+export function assertBoolean(name: string, value: boolean): boolean {
+  if (typeof value !== 'boolean') throw new TypeError(`${name} must be true or false, got ${describeValue(value)}`);
+  return value;
 }
 
-function describe(value: unknown): string {
+/** Throws a `RangeError` unless `value` is one of `choices`. */
+export function assertOneOf<T>(name: string, value: T, choices: readonly T[]): T {
+  if (!choices.includes(value)) {
+    throw new RangeError(`${name} must be one of ${choices.map(describeValue).join(', ')}, got ${describeValue(value)}`);
+  }
+  return value;
+}
+
+/**
+ * Validates a 2D vector (extra elements are ignored) and returns it as a new frozen pair: the
+ * scene classes hold their vectors frozen, so a vector handed out by a getter can never change.
+ */
+export function frozenVec2(name: string, value: Vec2Like): readonly [number, number] {
+  assertArrayLike(name, value, 2, 'an [x, y] pair');
+  return frozenPair(name, value[0], value[1]);
+}
+
+/** Validates `x` and `y` as the components of the 2D vector `name` and returns them as a new frozen pair. */
+export function frozenPair(name: string, x: number, y: number): readonly [number, number] {
+  return Object.freeze([assertFinite(`${name}[0]`, x), assertFinite(`${name}[1]`, y)] as const);
+}
+
+/** Validates an RGB colour (finite, non-negative channels) and returns it as a new frozen triple. */
+export function frozenColor(name: string, value: ColorLike): readonly [number, number, number] {
+  assertArrayLike(name, value, 3, 'an [r, g, b] triple');
+  return Object.freeze([
+    assertNonNegative(`${name}[0]`, value[0]), assertNonNegative(`${name}[1]`, value[1]), assertNonNegative(`${name}[2]`, value[2]),
+  ] as const);
+}
+
+function assertArrayLike(name: string, value: ArrayLike<number>, length: number, expected: string): void {
+  if (typeof value !== 'object' || value === null || typeof value.length !== 'number') {
+    throw new TypeError(`${name} must be ${expected}, got ${describeValue(value)}`);
+  }
+  if (value.length < length) throw new RangeError(`${name} must be ${expected}, got ${describeValue(value)}`);
+}
+
+/** How many characters of a value or key an error message shows: input may be megabytes long. */
+const SHOWN_LENGTH = 80;
+/** How deep {@link describeValue} shows nested arrays and objects: input may nest thousands deep, or loop. */
+const SHOWN_DEPTH = 3;
+
+/** `text`, cut to about 80 characters with an ellipsis. */
+export function shortened(text: string): string {
+  return text.length > SHOWN_LENGTH ? `${text.slice(0, SHOWN_LENGTH - 1)}…` : text;
+}
+
+/**
+ * A short, JSON-like rendering of any value for an error message (`[1,NaN]`, `"text"`, `10n`,
+ * `Symbol(x)`, holes as `[,1]`): at most about 80 characters and 3 levels deep, so cycles end.
+ * It never throws and never runs the value's own code (no `toString`, no getters).
+ */
+export function describeValue(value: unknown): string {
   try {
-    return JSON.stringify(value) ?? String(value);
+    return shortened(render(value, 0));
   } catch {
-    return String(value);
+    // A revoked proxy or a proxy whose traps throw.
+    return 'an unreadable object';
   }
+}
+
+function render(value: unknown, depth: number): string {
+  switch (typeof value) {
+    case 'string': return JSON.stringify(shortened(value));
+    case 'number': return Object.is(value, -0) ? '-0' : String(value);
+    case 'bigint': return `${shortened(String(value))}n`;
+    case 'symbol': return shortened(value.toString());
+    case 'function': return 'a function';
+    case 'object': return value === null ? 'null' : renderObject(value, depth);
+    default: return String(value);
+  }
+}
+
+/** An array as `[a,b]` (a hole as nothing), another object as `{"key":value}`; stops once past the shown length. */
+function renderObject(value: object, depth: number): string {
+  const isArray = Array.isArray(value);
+  if (depth >= SHOWN_DEPTH) return isArray ? '[…]' : '{…}';
+  const keys = isArray ? arrayIndices(value) : Object.keys(value);
+  const parts: string[] = [];
+  let length = 0;
+  for (const key of keys) {
+    if (length > SHOWN_LENGTH) {
+      parts.push('…');
+      break;
+    }
+    const descriptor = Object.getOwnPropertyDescriptor(value, key);
+    const shown = descriptor === undefined ? '' : 'value' in descriptor ? render(descriptor.value, depth + 1) : 'a getter';
+    const part = isArray ? shown : `${JSON.stringify(shortened(key))}:${shown}`;
+    parts.push(part);
+    length += part.length + 1;
+  }
+  return isArray ? `[${parts.join(',')}]` : `{${parts.join(',')}}`;
+}
+
+/** The indices of an array, lazily: a sparse array may be billions long. */
+function* arrayIndices(array: readonly unknown[]): Generator<string> {
+  for (let i = 0; i < array.length; i++) yield String(i);
 }
