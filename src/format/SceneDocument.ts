@@ -10,6 +10,14 @@ export const SCENE_FORMAT = 'penumbra-scene';
 /** The format version this package writes; {@link readScene} rejects any other. */
 export const SCENE_FORMAT_VERSION = 1;
 
+/**
+ * The most points a hull of a scene file may have; {@link readScene} rejects a file with more
+ * before reading them. Checking and triangulating a hull takes O(n log n) for most outlines, but
+ * up to O(n²) for some crafted ones: the cap bounds what a hostile file can cost (a 20,000-point
+ * hull loads in well under a second). Hulls built in code have no cap.
+ */
+export const SCENE_MAX_HULL_POINTS = 20_000;
+
 /** A whole scene file, version 1. */
 export interface SceneDocument {
   /** Always `"penumbra-scene"`. */
@@ -36,7 +44,10 @@ export interface SceneCamera {
 
 /** A hull, with the fields of `Hull` and `HullOptions`. */
 export interface SceneHull {
-  /** Local points `[x, y]`, either winding. Any count: an invalid polygon is kept and flagged by the renderer. */
+  /**
+   * Local points `[x, y]`, either winding, at most {@link SCENE_MAX_HULL_POINTS}. An invalid
+   * polygon is kept and flagged by the renderer.
+   */
   points: [number, number][];
   /** Optional, default `[0, 0]`. */
   position: [number, number];

@@ -2,8 +2,9 @@ import {
   booleanField, childPath, choiceField, colorField, nameField, numberField, positiveField, readArray, readObject,
   readVec2, vec2Field, type Fields,
 } from './fields';
+import { describeValue, shortened } from '../scene/validate';
 import {
-  SCENE_FORMAT, SCENE_FORMAT_VERSION,
+  SCENE_FORMAT, SCENE_FORMAT_VERSION, SCENE_MAX_HULL_POINTS,
   type SceneCamera, type SceneDocument, type SceneHull, type SceneLight, type SceneLightBase,
 } from './SceneDocument';
 import { SceneFormatError } from './SceneFormatError';
@@ -19,17 +20,30 @@ const KIND_FIELDS = { point: [], spot: ['coneAngle', 'coneDecay'], textured: ['c
 const LIGHT_KINDS = ['point', 'spot', 'textured'] as const;
 
 /**
- * Reads a scene file (its JSON text, or the already parsed value) and checks every field.
+ * Reads a scene file (its JSON text, or the already parsed value) and checks every field. Only
+ * own data fields count: inherited properties are ignored and getters are never run.
  *
  * @returns a complete {@link SceneDocument} with defaults filled in; it shares nothing with the input.
- * @throws {SceneFormatError} naming the path of the first bad field, e.g.
- *   `hulls[3].points[1]: expected two finite numbers, got [1,null]`; also for text that is not JSON,
- *   another `format`, or a `version` other than {@link SCENE_FORMAT_VERSION}.
+ * @throws {SceneFormatError} and nothing else, for any input, naming the path of the first bad
+ *   field, e.g. `hulls[3].points[1]: expected two finite numbers, got [1,null]`; also for text
+ *   that is not JSON, another `format`, a `version` other than {@link SCENE_FORMAT_VERSION}, a hole
+ *   in an array, or a hull of more than {@link SCENE_MAX_HULL_POINTS} points. Bad values are shown
+ *   cut to about 80 characters and 3 levels deep.
  */
 export function readScene(input: string | unknown): SceneDocument {
-  const root = readObject(typeof input === 'string' ? parseJson(input) : input, '', DOCUMENT_FIELDS);
+  try {
+    return readDocument(typeof input === 'string' ? parseJson(input) : input);
+  } catch (error) {
+    if (error instanceof SceneFormatError) throw error;
+    // Plain data never gets here; an exotic value does (a proxy whose traps throw).
+    throw new SceneFormatError('(root)', `could not be read (${describeError(error)})`);
+  }
+}
+
+function readDocument(input: unknown): SceneDocument {
+  const root = readObject(input, '', DOCUMENT_FIELDS);
   if (root.value.format !== SCENE_FORMAT) {
-    throw new SceneFormatError('format', `expected "${SCENE_FORMAT}", got ${JSON.stringify(root.value.format) ?? 'nothing'}`);
+    throw new SceneFormatError('format', `expected "${SCENE_FORMAT}", got ${describeValue(root.value.format)}`);
   }
   const version = numberField(root, 'version');
   if (version !== SCENE_FORMAT_VERSION) {
@@ -47,11 +61,15 @@ export function readScene(input: string | unknown): SceneDocument {
   };
 }
 
+function describeError(error: unknown): string {
+  return error instanceof Error ? shortened(error.message) : describeValue(error);
+}
+
 function parseJson(text: string): unknown {
   try {
     return JSON.parse(text);
   } catch (error) {
-    throw new SceneFormatError('(root)', `not valid JSON (${(error as Error).message})`);
+    throw new SceneFormatError('(root)', `not valid JSON (${describeError(error)})`);
   }
 }
 
@@ -70,7 +88,7 @@ function readHull(value: unknown, path: string): SceneHull {
   const pointsPath = childPath(path, 'points');
   if (hull.value.points === undefined) throw new SceneFormatError(pointsPath, 'required field is missing');
   return {
-    points: readArray(hull.value.points, pointsPath).map((point, i) => readVec2(point, `${pointsPath}[${i}]`)),
+    points: readArray(hull.value.points, pointsPath, SCENE_MAX_HULL_POINTS, 'points').map((point, i) => readVec2(point, `${pointsPath}[${i}]`)),
     position: vec2Field(hull, 'position', [0, 0]),
     origin: vec2Field(hull, 'origin', [0, 0]),
     rotation: numberField(hull, 'rotation', 0),
@@ -123,11 +141,16 @@ function readIgnoredHulls(light: Fields, hullCount: number): number[] {
   const path = childPath(light.path, 'ignoredHulls');
   const value = light.value.ignoredHulls;
   if (value === undefined) return [];
-  return readArray(value, path).map((index, i) => {
+  const indices = readArray(value, path);
+  const listed = new Set<unknown>();
+  indices.forEach((index, i) => {
     if (typeof index !== 'number' || !Number.isInteger(index) || index < 0 || index >= hullCount) {
       const expected = hullCount === 0 ? 'no hull index (the file has no hulls)' : `a hull index from 0 to ${hullCount - 1}`;
-      throw new SceneFormatError(`${path}[${i}]`, `expected ${expected}, got ${JSON.stringify(index)}`);
+      throw new SceneFormatError(`${path}[${i}]`, `expected ${expected}, got ${describeValue(index)}`);
     }
-    return index;
+    // A light keeps a set of hulls: a repeated index would not survive being saved again.
+    if (listed.has(index)) throw new SceneFormatError(`${path}[${i}]`, `hull ${index} is already listed`);
+    listed.add(index);
   });
+  return indices as number[];
 }

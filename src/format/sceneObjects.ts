@@ -1,5 +1,6 @@
 import { Hull } from '../scene/Hull';
 import { Light, PointLight, Spotlight, TexturedLight } from '../scene/lights';
+import { describeValue } from '../scene/validate';
 import { SCENE_FORMAT, SCENE_FORMAT_VERSION, type SceneCamera, type SceneDocument, type SceneLight } from './SceneDocument';
 import { SceneFormatError } from './SceneFormatError';
 
@@ -33,7 +34,7 @@ function createLight(light: SceneLight, index: number, hulls: readonly Hull[], r
       return new Spotlight({ ...options, coneAngle: light.coneAngle, coneDecay: light.coneDecay });
     case 'textured': {
       const texture = resolveCookie(light.cookie);
-      if (!texture) throw new SceneFormatError(`lights[${index}].cookie`, `unknown cookie ${JSON.stringify(light.cookie)}`);
+      if (!texture) throw new SceneFormatError(`lights[${index}].cookie`, `unknown cookie ${describeValue(light.cookie)}`);
       return new TexturedLight({ ...options, texture, size: light.size ?? undefined });
     }
   }
@@ -86,7 +87,8 @@ function describeLight(light: Light, hullIndex: ReadonlyMap<Hull, number>, cooki
   };
   if (light instanceof Spotlight) return { kind: 'spot', ...base, coneAngle: light.coneAngle, coneDecay: light.coneDecay };
   if (light instanceof TexturedLight) {
-    return { kind: 'textured', ...base, cookie: cookieName(light.texture), size: [...light.size] };
+    const size = light.givenSize;
+    return { kind: 'textured', ...base, cookie: cookieName(light.texture), size: size && [size[0], size[1]] };
   }
   return { kind: 'point', ...base };
 }

@@ -1,48 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import {
-  createSceneObjects, describeScene, readScene, SceneFormatError, Spotlight, TexturedLight, writeScene,
-  type SceneDocument,
-} from '../../src/index';
-
-/** A complete scene with every kind of light and every field set away from its default. */
-function fullScene(): SceneDocument {
-  return {
-    format: 'penumbra-scene',
-    version: 1,
-    ambient: [0.1, 0.2, 0.3],
-    camera: { center: [120, -40], zoom: 1.5 },
-    hulls: [
-      { points: [[0, 0], [40, 0], [40, 30], [0, 30]], position: [200, 100], origin: [20, 15], rotation: 0.3, scale: [1, -2], enabled: true },
-      { points: [[0, 0], [60, 0], [60, 20], [20, 20], [20, 60], [0, 60]], position: [400, 300], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: false },
-    ],
-    lights: [
-      {
-        kind: 'point', position: [10, 20], range: 300, radius: 12, color: [1, 0.8, 0.6], intensity: 1.5, rotation: 0,
-        origin: [0.5, 0.5], shadowType: 'solid', enabled: true, castsShadows: false, ignoredHulls: [1],
-      },
-      {
-        kind: 'spot', position: [50, 60], range: 250, radius: 4, color: [0.5, 0.5, 1], intensity: 1, rotation: 1.2,
-        origin: [0.5, 0.5], shadowType: 'illuminated', enabled: false, castsShadows: true, ignoredHulls: [],
-        coneAngle: 0.9, coneDecay: 2,
-      },
-      {
-        kind: 'textured', position: [70, 80], range: 200, radius: 8, color: [1, 0.6, 0.2], intensity: 2, rotation: -0.4,
-        origin: [0.25, 0.75], shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [0, 1],
-        cookie: 'flame', size: [160, 120],
-      },
-    ],
-  };
-}
-
-function errorOf(input: unknown): SceneFormatError {
-  try {
-    readScene(input);
-  } catch (error) {
-    expect(error).toBeInstanceOf(SceneFormatError);
-    return error as SceneFormatError;
-  }
-  throw new Error('readScene accepted a bad scene');
-}
+import { createSceneObjects, describeScene, readScene, SceneFormatError, Spotlight, TexturedLight, writeScene } from '../../src/index';
+import { errorOf, fullScene } from './sceneDocuments';
 
 /** A full scene with one field replaced (or deleted, with `undefined`) at a path of keys. */
 function withField(path: (string | number)[], value: unknown): unknown {
@@ -154,10 +112,10 @@ describe('scene format', () => {
   it('rejects NaN and Infinity in a scene given as a value', () => {
     const scene = fullScene();
     scene.lights[0].range = Number.NaN;
-    expect(errorOf(scene).message).toBe('lights[0].range: expected a finite number, got null');
+    expect(errorOf(scene).message).toBe('lights[0].range: expected a finite number, got NaN');
     scene.lights[0].range = 1;
     scene.hulls[1].points[2] = [Infinity, 0];
-    expect(errorOf(scene).message).toBe('hulls[1].points[2]: expected two finite numbers, got [null,0]');
+    expect(errorOf(scene).message).toBe('hulls[1].points[2]: expected two finite numbers, got [Infinity,0]');
   });
 
   it('refers to no hull when there are none', () => {
