@@ -7,7 +7,7 @@
 export const EXTRA_STATS = [
   { key: 'shadowVisitsPerPixel', label: 'hulls visited / shaded px', format: (value: number) => value.toFixed(2) },
   { key: 'shadowSkipShare', label: 'px decided w/o loop', format: (value: number) => `${(value * 100).toFixed(1)}%` },
-  { key: 'shadowQuadratureShare', label: 'px seeing hulls past', format: (value: number) => `${(value * 100).toFixed(2)}%` },
+  { key: 'shadowQuadratureShare', label: 'px swept (quadrature)', format: (value: number) => `${(value * 100).toFixed(2)}%` },
 ] as const;
 
 export type ExtraStatKey = (typeof EXTRA_STATS)[number]['key'];

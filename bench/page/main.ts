@@ -108,7 +108,7 @@ const page: BenchPage = {
     return readExtraStats({
       shadowVisitsPerPixel: statistics.visits / statistics.pixels,
       shadowSkipShare: statistics.decidedWithoutLoop / statistics.pixels,
-      shadowQuadratureShare: statistics.seenPast / statistics.pixels,
+      shadowQuadratureShare: statistics.swept / statistics.pixels,
     });
   },
 

@@ -8,15 +8,15 @@ export interface ShadowStatistics {
   visits: number;
   /** Light pixels that visited none: lights with no hull in range, and pixels nearer than every hull in their bin. */
   decidedWithoutLoop: number;
-  /** Light pixels that see records past: the quadrature's. */
-  seenPast: number;
+  /** Light pixels the quadrature takes (records seen past that the closed form does not cover). */
+  swept: number;
 }
 
 /**
  * Renders one frame of the working tree's renderer with the light pass's statistics build: on a
  * `Proxy` of the context, each light fragment stage gets `#define SHADOW_STATISTICS` (the chunk
- * light-common then writes 1, the records visited, whether none was and whether records were seen
- * past, instead of light) and the
+ * light-common then writes 1, the records visited, whether none was and whether the quadrature
+ * took the pixel, instead of light) and the
  * lightmap becomes RGBA32F (half floats would round the sums). Reads the lightmap back and sums it.
  * Needs EXT_color_buffer_float and EXT_float_blend.
  */
@@ -72,12 +72,12 @@ function sumLightmap(gl: WebGL2RenderingContext, texture: WebGLTexture): ShadowS
   gl.bindFramebuffer(gl.FRAMEBUFFER, null);
   gl.deleteFramebuffer(framebuffer);
   // The lightmap is cleared to alpha 1: every texel starts with one that no light wrote.
-  const sums: ShadowStatistics = { pixels: 0, visits: 0, decidedWithoutLoop: 0, seenPast: -width * height };
+  const sums: ShadowStatistics = { pixels: 0, visits: 0, decidedWithoutLoop: 0, swept: -width * height };
   for (let i = 0; i < texels.length; i += 4) {
     sums.pixels += texels[i];
     sums.visits += texels[i + 1];
     sums.decidedWithoutLoop += texels[i + 2];
-    sums.seenPast += texels[i + 3];
+    sums.swept += texels[i + 3];
   }
   return sums;
 }

@@ -16,15 +16,10 @@ float distanceFalloff() {
 }
 
 // Writes colour × strength × the visible fraction of the disk. Alpha is 0 so additive blending
-// leaves the lightmap's alpha untouched. In the main shadowed build, a pixel that sees records past
-// gets no light here and depth 0 instead of 1: the quadrature build, drawn next with a depth test,
-// shades only those pixels (see LightPass).
+// leaves the lightmap's alpha untouched.
 void writeLight(float strength) {
 #ifdef SHADOWED
   float visible = strength > 0.0 ? shadowVisibility() : 0.0;
-#ifndef SHADOW_QUADRATURE
-  gl_FragDepth = visible < 0.0 ? 1.0 : 0.0;
-#endif
 #else
   float visible = 1.0;
 #endif
@@ -32,7 +27,7 @@ void writeLight(float strength) {
   // The benchmark's statistics build: per light pixel 1, the records visited, 1 when none was, and 1
   // when the quadrature takes the pixel.
 #ifdef SHADOWED
-  float visited = float(visitedRecords), past = seenPastRecords ? 1.0 : 0.0;
+  float visited = float(visitedRecords), past = sweptPixel ? 1.0 : 0.0;
 #else
   float visited = 0.0, past = 0.0;
 #endif

@@ -89,6 +89,9 @@ int binFirst;
 int binCount;
 float bucketWidth;
 
+// Whether the last entry recordsOfEntry read holds a whole convex hull's fan of records.
+bool entryIsFan;
+
 // The records of entry `i` of the pixel's bin, first and last: (-1, -1) when that hull and all after
 // it are farther from the centre than the pixel, (0, -1) when this one cannot hide anything from it.
 ivec2 recordsOfEntry(int i) {
@@ -107,8 +110,10 @@ ivec2 recordsOfEntry(int i) {
     && length(hull) - hullRadius < distanceToLight + radius
     && (nearest <= radius || distanceToLight >= nearest);
   int code = int(entry.x);
-  int first = code / ENTRY_MAX_RECORDS;
-  return between ? ivec2(first, first + code % ENTRY_MAX_RECORDS) : ivec2(0, -1);
+  entryIsFan = code % 2 == 1;
+  int records = code / 2;
+  int first = records / ENTRY_MAX_RECORDS;
+  return between ? ivec2(first, first + records % ENTRY_MAX_RECORDS) : ivec2(0, -1);
 }
 
 // What a record does to the pixel's view of the disk.
@@ -225,6 +230,10 @@ bool coverIsWhole() {
   return lowCover >= highCover;
 }
 
+bool coverIsEmpty() {
+  return lowCover <= -1.0 && highCover >= 1.0 && middleCount == 0;
+}
+
 // Disk area (fraction) of the union within the chord heights [low, high].
 float coveredBetween(float low, float high) {
   float covered = max(0.0, diskAreaBelow(min(high, lowCover)) - diskAreaBelow(low))
@@ -246,10 +255,33 @@ float pseudoAngle(vec2 d) {
 // Records the main loop visited, and whether some were seen past, for the benchmark's statistics
 // build (see light-common).
 int visitedRecords = 0;
-bool seenPastRecords = false;
+bool sweptPixel = false;
 #endif
 
+#include "shadow-behind"
 #include "shadow-quadrature"
+
+// The records seen past, when they are one record or one convex hull's fan (else pastFirst is -1):
+// what hiddenBehind takes.
+int pastFirst;
+int pastLast;
+bool pastIsFan;
+
+void addPastRecord(int record, ivec2 entryRecords) {
+  if (pastCount == 0) {
+    pastFirst = record;
+    pastLast = record;
+    pastIsFan = false;
+  } else if (entryIsFan && pastFirst >= entryRecords.x && pastFirst <= entryRecords.y) {
+    pastFirst = entryRecords.x;
+    pastLast = entryRecords.y;
+    pastIsFan = true;
+  } else {
+    pastFirst = -1;
+  }
+  pastCount++;
+  pastRecord = record;
+}
 
 // Sets the pixel, the light and the empty union, and finds the pixel's bin.
 void beginShadow() {
@@ -292,20 +324,19 @@ float shadowVisibility() {
       int kind = classifyRecord(low, high);
       if (kind == HOLDS_PIXEL) return illuminated ? 1.0 : 0.0;
       if (kind == IN_FRONT) insertInterval(low, high);
-      if (kind == SEEN_PAST) {
-        pastCount++;
-        pastRecord = record;
-      }
-#ifdef SHADOW_STATISTICS
-      seenPastRecords = pastCount > 0;
-#endif
+      if (kind == SEEN_PAST) addPastRecord(record, records);
     }
     // Whole: only an Illuminated light's hull pixels are left to find.
     if (coverIsWhole() && !illuminated) return 0.0;
   }
   if (coverIsWhole()) return 0.0;
   float hidden = insideDisk ? 0.0 : coveredBetween(-1.0, 1.0);
-  // A loop of no trips where no record is seen past: skipped as a whole, where a branch may run both sides.
-  for (int once = 0; once < (pastCount > 0 ? 1 : 0); once++) hidden += hiddenPast();
+  // Loops of no trips where they do not apply: skipped as a whole, where a branch may run both sides.
+  bool closedForm = pastCount > 0 && pastFirst >= 0 && (insideDisk || coverIsEmpty());
+  for (int once = 0; once < (closedForm ? 1 : 0); once++) hidden += hiddenBehind(pastFirst, pastLast, pastIsFan);
+  for (int once = 0; once < (pastCount > 0 && !closedForm ? 1 : 0); once++) hidden += hiddenPast();
+#ifdef SHADOW_STATISTICS
+  sweptPixel = pastCount > 0 && !closedForm;
+#endif
   return clamp(1.0 - hidden, 0.0, 1.0);
 }

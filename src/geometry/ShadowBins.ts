@@ -1,5 +1,5 @@
 import type { ShadowGeometry } from './ShadowGeometry';
-import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, pseudoAngle, TEXTURE_WIDTH } from './shadowLayout';
+import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, entryCode, pseudoAngle, TEXTURE_WIDTH } from './shadowLayout';
 
 /** Distance buckets of the counting sort that orders each bin's list, nearest first. */
 const DISTANCE_BUCKETS = 32;
@@ -97,7 +97,7 @@ export class ShadowBins {
     this.bins = grow(this.bins, row * BIN_COUNT * BIN_FLOATS, BIN_COUNT * BIN_FLOATS);
     this.sortByBucket();
     const count = this.candidateCount, firstBins = this.candidateFirstBins, binCounts = this.candidateBinCounts, hulls = this.candidateHulls;
-    const recordCounts = geometry.recordCounts, firstRecords = geometry.firstRecords;
+    const recordCounts = geometry.recordCounts, firstRecords = geometry.firstRecords, convex = geometry.convex;
     // Entries per bin, as differences from the previous bin: constant time per candidate.
     const cursors = this.binCursors.fill(0);
     let total = 0, wrapping = 0;
@@ -128,8 +128,9 @@ export class ShadowBins {
     for (let n = 0; n < count; n++) {
       const i = order[n], hull = hulls[i], binCount = binCounts[i];
       const x = circles[3 * hull], y = circles[3 * hull + 1], hullRadius = circles[3 * hull + 2];
+      const fan = convex[hull] === 1 && recordCounts[hull] <= ENTRY_MAX_RECORDS;
       for (let record = firstRecords[hull], end = record + recordCounts[hull]; record < end; record += ENTRY_MAX_RECORDS) {
-        const code = record * ENTRY_MAX_RECORDS + Math.min(ENTRY_MAX_RECORDS, end - record) - 1;
+        const code = entryCode(record, Math.min(ENTRY_MAX_RECORDS, end - record), fan);
         for (let k = 0, bin = firstBins[i]; k < binCount; k++) {
           const e = cursors[bin]++ * ENTRY_FLOATS;
           entries[e] = code;

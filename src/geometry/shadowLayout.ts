@@ -10,16 +10,16 @@
  *   a concave hull is its triangles. A segment is blocked by a hull exactly when it is blocked by one
  *   of its records, so the union over records is the union over hulls.
  * - **Entries** (per frame): per light and angular bin, the hulls whose shadow can reach the bin,
- *   ordered by distance buckets of the light's bin row, nearest first: `(first record ×
- *   ENTRY_MAX_RECORDS + record count − 1, x, y, radius)` with a circle around the hull, from which
- *   the shader tells whether the hull can be between the pixel and the disk. A hull of more than
+ *   ordered by distance buckets of the light's bin row, nearest first: `(code, x, y, radius)` with
+ *   the records' code ({@link entryCode}) and a circle around the hull, from which the shader tells
+ *   whether the hull can be between the pixel and the disk. A hull of more than
  *   {@link ENTRY_MAX_RECORDS} records takes several entries.
  * - **Bins** (per frame): one row per shadowed light, {@link BIN_COUNT} texels; bin `k` holds the
  *   directions from the light's centre whose pseudo-angle (see `pseudoAngle`) lies in
  *   `[4k / N, 4(k + 1) / N)`: `(first entry, entry count, distance bucket width, 0)`.
  *
  * Records are found by number: floats hold integers exactly below 2^24, so a scene may have up to
- * 2^24 / ENTRY_MAX_RECORDS records.
+ * 2^24 / (2 × ENTRY_MAX_RECORDS) records.
  */
 
 /** Points per record: a tile or a box is one record, a triangle repeats its last point. */
@@ -36,6 +36,15 @@ export const RECORDS_PER_ROW = TEXTURE_WIDTH / RECORD_TEXELS;
 export const ENTRY_FLOATS = 4;
 /** The most records one entry covers. */
 export const ENTRY_MAX_RECORDS = 32;
+/**
+ * An entry's first record, record count and whether they are a whole convex hull's fan (the shader
+ * then takes the hull's outline as the records' edges less the fan's inner diagonals), in one float:
+ * `(first × ENTRY_MAX_RECORDS + count − 1) × 2 + fan`.
+ */
+export function entryCode(first: number, count: number, fan: boolean): number {
+  return (first * ENTRY_MAX_RECORDS + count - 1) * 2 + (fan ? 1 : 0);
+}
+
 /** Angular bins per light: the width of the bins texture. */
 export const BIN_COUNT = 32;
 /** Floats per bin. */

@@ -7,14 +7,15 @@ import lightPointFragment from '../../shaders/light-point.frag.glsl?raw';
 import lightSpotFragment from '../../shaders/light-spot.frag.glsl?raw';
 import lightTexturedFragment from '../../shaders/light-textured.frag.glsl?raw';
 import lightVertex from '../../shaders/light.vert.glsl?raw';
+import shadowBehind from '../../shaders/chunks/shadow-behind.glsl?raw';
 import shadowQuadrature from '../../shaders/chunks/shadow-quadrature.glsl?raw';
 import shadowVisibility from '../../shaders/chunks/shadow-visibility.glsl?raw';
 import { SHADOW_DEFINES } from '../geometry/shadowLayout';
 import { resolveIncludes, withDefines } from '../gl/program';
 
-const chunks = { 'light-common': lightCommon, 'shadow-visibility': shadowVisibility, 'shadow-quadrature': shadowQuadrature };
+const chunks = { 'light-common': lightCommon, 'shadow-visibility': shadowVisibility, 'shadow-behind': shadowBehind, 'shadow-quadrature': shadowQuadrature };
 
-/** Resolves includes until none is left: chunks include chunks (light-common → shadow-visibility → shadow-quadrature). */
+/** Resolves includes until none is left: chunks include chunks (light-common → shadow-visibility → shadow-behind, shadow-quadrature). */
 function resolveChunks(source: string): string {
   for (let resolved = resolveIncludes(source, chunks); ; source = resolved, resolved = resolveIncludes(source, chunks)) {
     if (resolved === source) return resolved;

@@ -84,14 +84,14 @@ describe('FramePlan culling', () => {
   });
 });
 
-/** The entries of bin `bin` of the first draw's light: `[first record, record count, circle x, y, radius]` each. */
+/** The entries of bin `bin` of the first draw's light: `[first record, record count, circle x, y, radius, fan (1 or 0)]` each. */
 function binEntries(framePlan: FramePlan, bin: number): number[][] {
   const { bins, entries } = framePlan.bins;
   const b = (framePlan.draws[0].binRow * BIN_COUNT + bin) * BIN_FLOATS;
   const out: number[][] = [];
   for (let e = bins[b]; e < bins[b] + bins[b + 1]; e++) {
-    const code = entries[e * ENTRY_FLOATS];
-    out.push([Math.floor(code / ENTRY_MAX_RECORDS), (code % ENTRY_MAX_RECORDS) + 1, ...entries.subarray(e * ENTRY_FLOATS + 1, e * ENTRY_FLOATS + 4)]);
+    const code = entries[e * ENTRY_FLOATS], records = Math.floor(code / 2);
+    out.push([Math.floor(records / ENTRY_MAX_RECORDS), (records % ENTRY_MAX_RECORDS) + 1, ...entries.subarray(e * ENTRY_FLOATS + 1, e * ENTRY_FLOATS + 4), code % 2]);
   }
   return out;
 }
@@ -131,7 +131,7 @@ describe('FramePlan shadow bins', () => {
     const framePlan = plan([light(centre, 5)], [box(120, 45), box(90, 45), box(53, 40, 10, 20)]);
     const listed = binEntries(framePlan, binAt(centre, 0));
     expect(listed.map(([record]) => record)).toEqual([2, 1, 0]);
-    expect(listed[1].slice(2)).toEqual([95, 50, Math.fround(Math.hypot(5, 5))]);
+    expect(listed[1].slice(2, 5)).toEqual([95, 50, Math.fround(Math.hypot(5, 5))]);
     // Distance buckets of 160 / 32 = 5 units (the bins' third value).
     expect(framePlan.bins.bins[framePlan.draws[0].binRow * BIN_COUNT * BIN_FLOATS + 2]).toBe(5);
     for (let bin = 0; bin < BIN_COUNT; bin++) expect(binEntries(framePlan, bin)[0].slice(0, 2)).toEqual([2, 1]);
@@ -152,6 +152,11 @@ describe('FramePlan shadow bins', () => {
       const points = geometry.records.subarray(record * RECORD_FLOATS, record * RECORD_FLOATS + 2 * count);
       expect(signedArea2(points)).toBeGreaterThan(0);
     }
+    // Only the convex hull's entry is marked a fan (the shader then drops its inner diagonals).
+    const centre: [number, number] = [120, 45];
+    const framePlan = plan([light(centre, 2)], [u, round]);
+    expect(binEntries(framePlan, binAt(centre, 180)).map(([record, count, , , , fan]) => [record, count, fan])).toEqual([[0, 6, 0]]);
+    expect(binEntries(framePlan, binAt(centre, 0)).map(([record, count, , , , fan]) => [record, count, fan])).toEqual([[6, 7, 1]]);
   });
 
   it('writes each light its reach: the range, or the farthest corner of a textured quad', () => {
