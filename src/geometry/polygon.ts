@@ -398,8 +398,7 @@ class PointGrid {
     for (let row = row0; row <= row1; row++) {
       // Only the cells the triangle overlaps in this row: a long thin triangle covers few of its bounds' cells.
       const span = this.triangleSpanInRow(ax, ay, bx, by, cx, cy, row);
-      for (let column = this.column(span[0]) - 1, last = this.column(span[1]) + 1; column <= last; column++) {
-        if (column < 0 || column >= this.columns) continue;
+      for (let column = this.column(span[0]), last = this.column(span[1]); column <= last; column++) {
         const cell = row * this.columns + column;
         for (let k = this.start[cell]; k < this.start[cell + 1]; k++) {
           const p = this.points[k], px = co[2 * p], py = co[2 * p + 1];
@@ -412,18 +411,21 @@ class PointGrid {
   }
 
   /**
-   * The x extent of the triangle within `row`'s band of y, widened by a millionth of a cell so
-   * that rounding in the band's bounds loses no point.
+   * The x extent of the triangle within `row`'s band of y. Band and extent are widened by a
+   * millionth of a cell, so that rounding (in the band's bounds, in a point's cell, in where an
+   * edge crosses the band) loses no point that lies on the triangle.
    */
   private triangleSpanInRow(ax: number, ay: number, bx: number, by: number, cx: number, cy: number, row: number): Float64Array {
-    const slack = this.cellHeight * 1e-6;
-    const low = this.minY + row * this.cellHeight - slack, high = low + this.cellHeight + 2 * slack;
+    const slackY = this.cellHeight * 1e-6, slackX = this.cellWidth * 1e-6;
+    const low = this.minY + row * this.cellHeight - slackY, high = low + this.cellHeight + 2 * slackY;
     const span = this.span;
     span[0] = Infinity;
     span[1] = -Infinity;
     extendBySegmentInBand(span, ax, ay, bx, by, low, high);
     extendBySegmentInBand(span, bx, by, cx, cy, low, high);
     extendBySegmentInBand(span, cx, cy, ax, ay, low, high);
+    span[0] -= slackX;
+    span[1] += slackX;
     return span;
   }
 

@@ -80,7 +80,9 @@ export class Hull {
     if (!Array.isArray(points)) throw new TypeError(`Hull.points must be an array of [x, y] pairs, got ${describeValue(points)}`);
     const copy = Array.from(points, (p, i) => frozenVec2(`Hull.points[${i}]`, p));
     this._points = Object.freeze(copy);
-    const cleaned = simplifyPolygon(copy.flat());
+    const coords = new Float64Array(2 * copy.length);
+    copy.forEach((point, i) => coords.set(point, 2 * i));
+    const cleaned = simplifyPolygon(coords);
     this._shapeValid = isSimplePolygon(cleaned);
     if (this._shapeValid && signedArea2(cleaned) < 0) reversePoints(cleaned);
     this.localPoints = Float64Array.from(cleaned);
