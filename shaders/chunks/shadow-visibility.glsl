@@ -12,14 +12,16 @@
 // side of the disk plus up to MAX_MIDDLES floating intervals: no max, no sum.
 //
 // A record the pixel sees past (the disk overlaps it, or the pixel looks past it at the disk, or
-// the pixel is inside the disk) hides only the far part of each wedge. Per direction the union of
-// those far parts is the one beyond the nearest record, so the hidden area is an integral over the
-// directions outside the union of the records in front (see the chunk shadow-quadrature).
+// the pixel is inside the disk) hides only the far part of each wedge. When those records are one
+// record or one convex hull's fan, and the union has no middle, what they hide in the directions
+// outside the union is a circle–polygon area in closed form (the chunk shadow-behind); otherwise
+// the hidden area is an integral over those directions of the part beyond the nearest record (the
+// chunk shadow-quadrature).
 //
 // Accuracy: exact (to float rounding and G's polynomial, 2.2e-4) for pixels whose records are all
 // in front, with at most MAX_MIDDLES disjoint middle intervals (beyond that the last one widens:
-// darker, never lighter); the quadrature is exact between breaks up to its order (worst error of the
-// random-scene test, 240 scenes: 0.007 of full light).
+// darker, never lighter), and for the closed form; the quadrature is exact between breaks up to its
+// order (worst error of the random-scene test, 1,020 scenes: 0.084 at one pixel, 0.003 at p99).
 //
 // Needs: v_world (the pixel's world position), v_shadow (light centre xy, disk radius, bin row) and
 // v_illuminated (1: hulls themselves are lit, 0: dark).
@@ -230,10 +232,6 @@ bool coverIsWhole() {
   return lowCover >= highCover;
 }
 
-bool coverIsEmpty() {
-  return lowCover <= -1.0 && highCover >= 1.0 && middleCount == 0;
-}
-
 // Disk area (fraction) of the union within the chord heights [low, high].
 float coveredBetween(float low, float high) {
   float covered = max(0.0, diskAreaBelow(min(high, lowCover)) - diskAreaBelow(low))
@@ -332,8 +330,8 @@ float shadowVisibility() {
   if (coverIsWhole()) return 0.0;
   float hidden = insideDisk ? 0.0 : coveredBetween(-1.0, 1.0);
   // Loops of no trips where they do not apply: skipped as a whole, where a branch may run both sides.
-  bool closedForm = pastCount > 0 && pastFirst >= 0 && (insideDisk || coverIsEmpty());
-  for (int once = 0; once < (closedForm ? 1 : 0); once++) hidden += hiddenBehind(pastFirst, pastLast, pastIsFan);
+  bool closedForm = pastCount > 0 && pastFirst >= 0 && (insideDisk || middleCount == 0);
+  for (int once = 0; once < (closedForm ? 1 : 0); once++) hidden += hiddenBehind(pastFirst, pastLast, pastIsFan, !insideDisk, lowCover, highCover);
   for (int once = 0; once < (pastCount > 0 && !closedForm ? 1 : 0); once++) hidden += hiddenPast();
 #ifdef SHADOW_STATISTICS
   sweptPixel = pastCount > 0 && !closedForm;
