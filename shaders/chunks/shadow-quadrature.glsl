@@ -24,10 +24,8 @@ bool inUnion(vec2 direction) {
   return false;
 }
 
-// The number of records seen past, and the last of them: with one, the sweep reads that record
-// alone rather than scanning the bin.
+// The number of records seen past.
 int pastCount;
-int pastRecord;
 
 // Distance along the unit `direction` from the pixel to where it enters the loaded record (positive
 // area, not holding the pixel), or a huge value when it misses.
@@ -50,11 +48,7 @@ float hiddenAlong(vec2 direction) {
   float along = dot(c, direction), off = cross2(c, direction);
   float halfChord = sqrt(max(0.0, radius * radius - off * off));
   float far = max(0.0, along + halfChord), nearest = far;
-  if (pastCount == 1) {
-    loadRecord(pastRecord);
-    nearest = min(nearest, entryDistance(direction));
-  }
-  for (int i = 0; i < (pastCount == 1 ? 0 : binCount); i++) {
+  for (int i = 0; i < binCount; i++) {
     ivec2 records = recordsOfEntry(i);
     if (records.x < 0) break;
     for (int record = records.x; record <= records.y; record++) {
@@ -66,11 +60,19 @@ float hiddenAlong(vec2 direction) {
   return 0.5 * max(0.0, far * far - nearest * nearest);
 }
 
+// The angle off the direction to the centre of a turnOf value.
+float angleOfTurn(float turn) {
+  float p = turn > 1.0 ? 2.0 - turn : (turn < -1.0 ? -2.0 - turn : turn);
+  float angle = atan(p, abs(turn) > 1.0 ? abs(p) - 1.0 : 1.0 - abs(p));
+  // atan gives π, not −π, for the turn of −2 (straight back, reached clockwise).
+  return turn < 0.0 && angle > 0.0 ? angle - 2.0 * PI : angle;
+}
+
 // The disk area (fraction) the records seen past hide outside the union.
 float hiddenPast() {
   float halfSpan = insideDisk ? PI : asin(1.0 / distanceInRadii);
   // Only the directions the records seen past cover can hide anything more.
-  float from = max(-halfSpan, pastFrom), to = min(halfSpan, pastTo);
+  float from = max(-halfSpan, angleOfTurn(pastFrom)), to = min(halfSpan, angleOfTurn(pastTo));
   float step = max(to - from, 0.0) / float(DIRECTIONS);
   // Directions by turning the first by one step at a time: no trigonometry in the loop.
   vec2 axis = toLight / distanceInRadii;
