@@ -4,11 +4,26 @@ const CAPABILITIES = [
 ] as const;
 
 /**
+ * Every pixel-store parameter that changes how `texImage2D`/`texSubImage2D` read an array, with the
+ * value the renderer's uploads assume (tightly packed rows of RGBA32F, top row first, unchanged).
+ * The renderer never sets pixel-store state itself, so only what the host left elsewhere is
+ * changed on entry and put back on restore.
+ */
+const UNPACK_PARAMETERS = [
+  'UNPACK_ALIGNMENT', 'UNPACK_ROW_LENGTH', 'UNPACK_SKIP_PIXELS', 'UNPACK_SKIP_ROWS', 'UNPACK_IMAGE_HEIGHT',
+  'UNPACK_SKIP_IMAGES', 'UNPACK_FLIP_Y_WEBGL', 'UNPACK_PREMULTIPLY_ALPHA_WEBGL',
+] as const;
+const UNPACK_DEFAULTS = Int32Array.of(4, 0, 0, 0, 0, 0, 0, 0);
+
+/**
  * A snapshot of the context state the renderer touches, taken before it draws and put back
  * afterwards, so that it can share a context with a host engine. Saved: framebuffers (draw and
  * read), viewport, scissor, the enables above, blend equations/factors, colour/depth/stencil write
- * masks, depth function, cull face and front face, program, VAO, array/pixel-unpack buffers, unpack flags, active
- * texture and the 2D texture and sampler bound on each texture unit the renderer uses.
+ * masks, depth function, cull face and front face, program, VAO, array/pixel-unpack buffers, renderbuffer,
+ * every unpack parameter above, the active texture unit, and the 2D texture and sampler bound on
+ * each texture unit the renderer uses. Between `prepareForRenderer` and `restore` unit 0 is active,
+ * so that every texture the renderer binds (uploads and resizes too) lands on a saved unit: the
+ * host's bindings on the other units are never touched.
  *
  * Saved once or twice a frame, so it queries only what the renderer changes: it never sets the blend
  * colour, and clears with `clearBuffer*` rather than through the clear values. The three array
@@ -34,10 +49,9 @@ export class HostState {
   private vertexArray: WebGLVertexArrayObject | null = null;
   private arrayBuffer: WebGLBuffer | null = null;
   private pixelUnpackBuffer: WebGLBuffer | null = null;
-  private unpackAlignment = 4;
-  private unpackFlipY = false;
-  private unpackPremultiply = false;
-  private unpackRowLength = 0;
+  private renderbuffer: WebGLRenderbuffer | null = null;
+  /** The host's values of {@link UNPACK_PARAMETERS}, booleans as 0 or 1. */
+  private readonly unpack = new Int32Array(UNPACK_PARAMETERS.length);
   private activeTexture = 0;
   private readonly textures: (WebGLTexture | null)[];
   private readonly samplers: (WebGLSampler | null)[];
@@ -73,10 +87,8 @@ export class HostState {
     this.arrayBuffer = gl.getParameter(gl.ARRAY_BUFFER_BINDING);
     // Touched only when the host has one bound (headless-gl rejects the target altogether).
     this.pixelUnpackBuffer = gl.getParameter(gl.PIXEL_UNPACK_BUFFER_BINDING) || null;
-    this.unpackAlignment = gl.getParameter(gl.UNPACK_ALIGNMENT);
-    this.unpackFlipY = gl.getParameter(gl.UNPACK_FLIP_Y_WEBGL);
-    this.unpackPremultiply = gl.getParameter(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL);
-    this.unpackRowLength = gl.getParameter(gl.UNPACK_ROW_LENGTH);
+    this.renderbuffer = gl.getParameter(gl.RENDERBUFFER_BINDING);
+    for (let i = 0; i < UNPACK_PARAMETERS.length; i++) this.unpack[i] = Number(gl.getParameter(gl[UNPACK_PARAMETERS[i]]));
     this.activeTexture = gl.getParameter(gl.ACTIVE_TEXTURE);
     for (let unit = 0; unit < this.textureUnits; unit++) {
       gl.activeTexture(gl.TEXTURE0 + unit);
@@ -86,15 +98,13 @@ export class HostState {
     gl.activeTexture(this.activeTexture);
   }
 
-  /** Puts the neutral state the renderer's passes assume: no sampler objects, plain unpacking. */
+  /** Puts the neutral state the renderer's passes assume: no sampler objects, plain unpacking, unit 0 active. */
   prepareForRenderer(): void {
     const gl = this.gl;
     for (let unit = 0; unit < this.textureUnits; unit++) gl.bindSampler(unit, null);
+    gl.activeTexture(gl.TEXTURE0);
     if (this.pixelUnpackBuffer) gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, null);
-    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
-    gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
-    gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, false);
-    gl.pixelStorei(gl.UNPACK_ROW_LENGTH, 0);
+    this.setUnpackWhereHostDiffers(UNPACK_DEFAULTS);
     for (let i = 0; i < CAPABILITIES.length; i++) gl.disable(gl[CAPABILITIES[i]]);
     gl.colorMask(true, true, true, true);
   }
@@ -122,16 +132,22 @@ export class HostState {
     gl.bindVertexArray(this.vertexArray);
     gl.bindBuffer(gl.ARRAY_BUFFER, this.arrayBuffer);
     if (this.pixelUnpackBuffer) gl.bindBuffer(gl.PIXEL_UNPACK_BUFFER, this.pixelUnpackBuffer);
-    gl.pixelStorei(gl.UNPACK_ALIGNMENT, this.unpackAlignment);
-    gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, this.unpackFlipY);
-    gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, this.unpackPremultiply);
-    gl.pixelStorei(gl.UNPACK_ROW_LENGTH, this.unpackRowLength);
+    gl.bindRenderbuffer(gl.RENDERBUFFER, this.renderbuffer);
+    this.setUnpackWhereHostDiffers(this.unpack);
     for (let unit = 0; unit < this.textureUnits; unit++) {
       gl.activeTexture(gl.TEXTURE0 + unit);
       gl.bindTexture(gl.TEXTURE_2D, this.textures[unit]);
       gl.bindSampler(unit, this.samplers[unit]);
     }
     gl.activeTexture(this.activeTexture);
+  }
+
+  /** Sets each unpack parameter the host left away from the renderer's default to `values`' entry. */
+  private setUnpackWhereHostDiffers(values: Int32Array): void {
+    const gl = this.gl;
+    for (let i = 0; i < UNPACK_PARAMETERS.length; i++) {
+      if (this.unpack[i] !== UNPACK_DEFAULTS[i]) gl.pixelStorei(gl[UNPACK_PARAMETERS[i]], values[i]);
+    }
   }
 
   /** The draw framebuffer saved by the last {@link HostState.save}. */

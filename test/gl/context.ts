@@ -14,8 +14,9 @@ export function createContext(width: number, height: number): WebGL2RenderingCon
  * Works around two gaps in headless-gl 9.0.0-rc.10's JavaScript validation layer (its native
  * context is OpenGL ES 3 and does the right thing), so that the renderer runs as in a browser:
  * - `getParameter` answers the WebGL2-only bindings (VAO, sampler, pixel-unpack buffer) with raw GL
- *   names instead of objects; the VAO is answered from headless-gl's own tracking, and the sampler
- *   and pixel-unpack bindings (which the tests never set) as null.
+ *   names instead of objects; the VAO is answered from headless-gl's own tracking, the sampler as
+ *   its raw name (what `createSampler` returns there) or null, and the pixel-unpack binding (which
+ *   headless-gl's `bindBuffer` rejects) as null.
  * - `blendEquation` accepts MIN/MAX only when the native driver lists EXT_blend_minmax, though they
  *   are core in WebGL2.
  * Neither changes what is drawn. Remove once headless-gl fixes them.
@@ -27,7 +28,8 @@ function fixWebGL2Validation(): void {
   const getParameter = proto.getParameter;
   proto.getParameter = function (this: HeadlessContext, name: number) {
     if (name === this.VERTEX_ARRAY_BINDING) return this._activeVertexArrayObject;
-    if (name === this.SAMPLER_BINDING || name === this.PIXEL_UNPACK_BUFFER_BINDING) return null;
+    if (name === this.SAMPLER_BINDING) return getParameter.call(this, name) || null;
+    if (name === this.PIXEL_UNPACK_BUFFER_BINDING) return null;
     return getParameter.call(this, name);
   };
   const validBlendMode = proto._validBlendMode;

@@ -1,0 +1,47 @@
+import { describe, expect, it } from 'vitest';
+import { Hull, PenumbraRenderer, PointLight } from '../../src/index';
+import { createContext, destroyContext } from './context';
+import { checkHostStateAcrossPublicCalls } from './hostParameters';
+import { readTexture } from './readTexture';
+
+// The same check runs in Chromium (test/browser/reference.test.ts).
+describe('every host parameter, on headless-gl', () => {
+  it('is as the host set it after each public call', () => {
+    const gl = createContext(64, 48);
+    const report = checkHostStateAcrossPublicCalls(gl, 64, 48);
+    console.log(`headless-gl: ${report.compared} parameters compared after each of ${report.calls.length} public calls; rejected setup steps: ${report.unsupported.join(', ') || 'none'}`);
+    destroyContext(gl);
+    expect(report.failures).toEqual([]);
+    expect(report.compared).toBeGreaterThan(300);
+  });
+
+  it('does not change what is drawn: the same lightmap under the host’s unpack parameters', () => {
+    const W = 32, H = 24;
+    const gl = createContext(W, H);
+    const lightmap = (): Float32Array => {
+      const renderer = new PenumbraRenderer(gl);
+      renderer.addLight(new PointLight({ position: [8, 12], range: 30, radius: 2 }));
+      const hull = renderer.addHull(new Hull([[16, 8], [20, 8], [20, 16], [16, 16]]));
+      renderer.renderLightmap();
+      // A moved hull uploads only its dirty rows: the other upload path.
+      hull.position = [1, 2];
+      renderer.renderLightmap();
+      const texels = readTexture(gl, renderer.lightmapTexture, W, H);
+      renderer.dispose();
+      return texels;
+    };
+    const plain = lightmap();
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 8);
+    gl.pixelStorei(gl.UNPACK_ROW_LENGTH, 3);
+    gl.pixelStorei(gl.UNPACK_SKIP_PIXELS, 2);
+    gl.pixelStorei(gl.UNPACK_SKIP_ROWS, 1);
+    gl.pixelStorei(gl.UNPACK_SKIP_IMAGES, 1);
+    gl.pixelStorei(gl.UNPACK_IMAGE_HEIGHT, 5);
+    gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, true);
+    gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, true);
+    const hostile = lightmap();
+    expect(gl.getError()).toBe(0);
+    destroyContext(gl);
+    expect(hostile).toEqual(plain);
+  });
+});
