@@ -10,8 +10,8 @@ import { DebugPass } from './passes/DebugPass';
 import { LightPass } from './passes/LightPass';
 import { ShadowTextures } from './passes/ShadowTextures';
 import { Hull } from './scene/Hull';
-import { Light } from './scene/lights';
-import { assertFinite, frozenColor, type ColorLike } from './scene/validate';
+import { Light, TexturedLight } from './scene/lights';
+import { assertFinite, describeValue, frozenColor, type ColorLike } from './scene/validate';
 
 /** Options of a {@link PenumbraRenderer}; every field has the default shown. */
 export interface PenumbraRendererOptions {
@@ -32,6 +32,8 @@ export interface PenumbraRendererOptions {
   lightmapScale?: number;
   /** Time the renderer's JavaScript per frame into `stats.cpuTime`. Default `false`. */
   measureCpuTime?: boolean;
+  /** See {@link PenumbraRenderer.onContextRestored}. Default `null`. */
+  onContextRestored?: ((renderer: PenumbraRenderer) => void) | null;
 }
 
 /** Figures about the last frame, for overlays and benchmarks. */
@@ -75,9 +77,13 @@ const TEXTURE_UNITS = 4;
  * the exact fraction of its disk the hulls leave visible) and writes scene × lightmap into the
  * framebuffer that was bound at `beginDraw`. What you draw afterwards (UI) is unlit.
  *
- * State contract: after `draw()` and `renderLightmap()` the context state listed in
- * {@link HostState} is as it was; after `beginDraw()` only the framebuffer and viewport differ
- * (they point at the internal scene target).
+ * State contract: after every call the context state listed in {@link HostState} is as it was;
+ * after `beginDraw()` only the framebuffer and viewport differ (they point at the internal scene
+ * target).
+ *
+ * Context loss: while `gl.isContextLost()` is true every call is a no-op, also in the window between
+ * the loss and the `webglcontextlost` event. When the context is restored the renderer rebuilds its
+ * GL objects, keeps its lights and hulls, and calls {@link PenumbraRenderer.onContextRestored}.
  */
 export class PenumbraRenderer {
   /** Draw wireframes of light quads and shadow geometry over the result. */
@@ -87,6 +93,12 @@ export class PenumbraRenderer {
    * reads are the only heap the frame allocates (V8 boxes the double each one returns, 16 bytes).
    */
   measureCpuTime: boolean;
+  /**
+   * Called after the renderer rebuilt itself on a restored context: the textures of the old
+   * context are gone, so give each {@link TexturedLight} a new cookie texture here. A textured light
+   * left with an old texture is named in a console warning.
+   */
+  onContextRestored: ((renderer: PenumbraRenderer) => void) | null;
   /** Figures about the last frame. */
   readonly stats: FrameStats = { lights: 0, lightsDrawn: 0, hulls: 0, edges: 0, cpuTime: 0 };
 
@@ -99,10 +111,13 @@ export class PenumbraRenderer {
   private readonly geometry = new ShadowGeometry();
   private readonly plan = new FramePlan();
   private readonly hostState: HostState;
-  private readonly lightmapFormat: TargetFormat;
+  /** Chosen with each build of the GL objects (see {@link PenumbraRenderer.chooseLightmapFormat}). */
+  private lightmapFormat: TargetFormat = 'rgba16f';
   private resources: Resources | null = null;
   private width: number;
   private height: number;
+  /** The largest target side the context allows (MAX_TEXTURE_SIZE and MAX_RENDERBUFFER_SIZE); read again on restore. */
+  private maxSize: number;
   private readonly lightmapScale: number;
   private drawing = false;
   private contextLost = false;
@@ -117,22 +132,22 @@ export class PenumbraRenderer {
     this.gl = gl;
     this.debug = options.debug ?? false;
     this.measureCpuTime = options.measureCpuTime ?? false;
+    this.onContextRestored = options.onContextRestored ?? null;
     if (options.ambientColor !== undefined) this.ambientColor = options.ambientColor;
-    this.width = checkSize('width', options.width ?? gl.drawingBufferWidth);
-    this.height = checkSize('height', options.height ?? gl.drawingBufferHeight);
+    this.maxSize = maxTargetSize(gl);
+    this.width = checkSize('PenumbraRenderer.width', options.width ?? gl.drawingBufferWidth, this.maxSize);
+    this.height = checkSize('PenumbraRenderer.height', options.height ?? gl.drawingBufferHeight, this.maxSize);
     this.lightmapScale = checkScale(options.lightmapScale ?? 1);
     if (options.viewProjection) this.viewProjection = options.viewProjection;
     else this.updateDefaultViewProjection();
     this.hostState = new HostState(gl, TEXTURE_UNITS);
-    this.lightmapFormat = supportsFloatTargets(gl) ? 'rgba16f' : 'rgba8';
-    if (this.lightmapFormat === 'rgba8') {
-      console.warn('penumbra: EXT_color_buffer_float is missing; the lightmap falls back to RGBA8, so light sums clamp at 1.');
-    }
-    this.createResources();
+    // Made in the loss window, it waits for the restored context to build its GL objects.
+    if (gl.isContextLost()) this.contextLost = true;
+    else this.createResources();
     const canvas = (gl as { canvas?: unknown }).canvas as EventTarget | undefined;
     this.canvas = canvas && typeof canvas.addEventListener === 'function' ? canvas : null;
     this.canvas?.addEventListener('webglcontextlost', this.onContextLost);
-    this.canvas?.addEventListener('webglcontextrestored', this.onContextRestored);
+    this.canvas?.addEventListener('webglcontextrestored', this.handleContextRestored);
   }
 
   /** Colour of unlit areas `[r, g, b]`, 0..1 per channel; a frozen array, as the lights' vectors: assign a new one to change it. */
@@ -205,17 +220,43 @@ export class PenumbraRenderer {
     return removeFrom(this._hulls, hull);
   }
 
-  /** Resizes the internal targets (call when the canvas is resized). */
+  /**
+   * Resizes the internal targets (call when the canvas is resized). Throws a `RangeError` for a
+   * size that is not a positive integer or exceeds the context's limit, and when the context runs
+   * out of memory (it reads `gl.getError()` to see `OUT_OF_MEMORY`); the renderer then keeps its
+   * previous size and keeps working.
+   */
   resize(width: number, height: number): void {
-    this.width = checkSize('width', width);
-    this.height = checkSize('height', height);
+    checkSize('PenumbraRenderer.resize width', width, this.maxSize);
+    checkSize('PenumbraRenderer.resize height', height, this.maxSize);
+    if (width === this.width && height === this.height) return;
+    const previousWidth = this.width, previousHeight = this.height;
+    this.setSize(width, height);
+    if (this.isUnavailable()) return;
+    const failure = this.allocateTargets(this.requireResources());
+    if (failure === null) return;
+    this.setSize(previousWidth, previousHeight);
+    this.allocateTargets(this.requireResources());
+    throw new RangeError(`PenumbraRenderer.resize(${width}, ${height}) failed: ${failure}; the renderer keeps its size ${previousWidth}×${previousHeight}`);
+  }
+
+  private setSize(width: number, height: number): void {
+    this.width = width;
+    this.height = height;
     if (!this.customViewProjection) this.updateDefaultViewProjection();
-    const resources = this.resources;
-    if (!resources || this.contextLost) return;
-    this.withHostState(() => {
-      resources.scene.resize(this.width, this.height);
-      resources.light.resize(this.lightmapWidth, this.lightmapHeight);
-    });
+  }
+
+  /** Reallocates the targets at the current size; returns why that failed, or null. */
+  private allocateTargets(resources: Resources): string | null {
+    try {
+      this.withHostState(() => {
+        resources.scene.resize(this.width, this.height);
+        resources.light.resize(this.lightmapWidth, this.lightmapHeight);
+      });
+    } catch (error) {
+      return (error as Error).message;
+    }
+    return this.gl.getError() === this.gl.OUT_OF_MEMORY ? 'the context is out of memory (OUT_OF_MEMORY)' : null;
   }
 
   /**
@@ -224,7 +265,8 @@ export class PenumbraRenderer {
    * scene after this call.
    */
   beginDraw(): void {
-    if (this.disposed || this.contextLost) return;
+    if (this.isUnavailable()) return;
+    if (this.drawing) throw new Error('penumbra: beginDraw() called twice: call draw() to end the frame before the next beginDraw()');
     const gl = this.gl;
     const resources = this.requireResources();
     this.enterHostState();
@@ -252,7 +294,7 @@ export class PenumbraRenderer {
    * viewport and restores the rest of the state.
    */
   draw(): void {
-    if (this.disposed || this.contextLost) return;
+    if (this.isUnavailable()) return;
     if (!this.drawing) throw new Error('penumbra: draw() called without beginDraw()');
     this.drawing = false;
     const gl = this.gl;
@@ -281,6 +323,8 @@ export class PenumbraRenderer {
    * the same size as the renderer and an RGBA8 colour buffer. The context state is left as it was.
    */
   drawInPlace(): void {
+    if (this.isUnavailable()) return;
+    if (this.drawing) throw new Error('penumbra: drawInPlace() called between beginDraw() and draw(): call draw() to end that frame first');
     this.beginDraw();
     if (!this.drawing) return;
     const gl = this.gl;
@@ -299,7 +343,7 @@ export class PenumbraRenderer {
 
   /** Builds the lightmap only (see {@link PenumbraRenderer.lightmapTexture}); the context state is left as it was. */
   renderLightmap(): void {
-    if (this.disposed || this.contextLost) return;
+    if (this.isUnavailable()) return;
     const resources = this.requireResources();
     this.enterHostState();
     try {
@@ -314,8 +358,8 @@ export class PenumbraRenderer {
     if (this.disposed) return;
     this.disposed = true;
     this.canvas?.removeEventListener('webglcontextlost', this.onContextLost);
-    this.canvas?.removeEventListener('webglcontextrestored', this.onContextRestored);
-    if (!this.contextLost) this.destroyResources();
+    this.canvas?.removeEventListener('webglcontextrestored', this.handleContextRestored);
+    if (!this.isContextLost()) this.destroyResources();
     this.resources = null;
     this._lights.length = 0;
     this._hulls.length = 0;
@@ -373,6 +417,18 @@ export class PenumbraRenderer {
     }
   }
 
+  /**
+   * Whether GL calls must be skipped: disposed, or the context lost. `gl.isContextLost()` is read
+   * too because the browser dispatches `webglcontextlost` only after the loss: a frame in between
+   * would meet the null answers of a lost context.
+   */
+  private isUnavailable(): boolean {
+    return this.disposed || this.isContextLost();
+  }
+  private isContextLost(): boolean {
+    return this.contextLost || this.gl.isContextLost();
+  }
+
   private get lightmapWidth(): number {
     return Math.max(1, Math.round(this.width * this.lightmapScale));
   }
@@ -390,19 +446,36 @@ export class PenumbraRenderer {
     return this.resources;
   }
 
+  /**
+   * Builds the GL objects. If one fails, those already made are freed before the error goes on (a
+   * pass that fails part-way frees its own).
+   */
   private createResources(): void {
     const gl = this.gl;
-    this.withHostState(() => {
-      const shapes = new LightShapes(gl);
-      this.resources = {
-        shapes,
-        shadows: new ShadowTextures(gl),
-        scene: new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, this.width, this.height),
-        light: new LightPass(gl, shapes, this.lightmapFormat, this.lightmapWidth, this.lightmapHeight),
-        composite: new CompositePass(gl),
-        debug: new DebugPass(gl, shapes),
-      };
-    });
+    this.chooseLightmapFormat();
+    const made: { dispose(): void }[] = [];
+    const keep = <T extends { dispose(): void }>(resource: T): T => {
+      made.push(resource);
+      return resource;
+    };
+    try {
+      this.withHostState(() => {
+        const shapes = keep(new LightShapes(gl));
+        this.resources = {
+          shapes,
+          shadows: keep(new ShadowTextures(gl)),
+          scene: keep(new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, this.width, this.height)),
+          light: keep(new LightPass(gl, shapes, this.lightmapFormat, this.lightmapWidth, this.lightmapHeight)),
+          composite: keep(new CompositePass(gl)),
+          debug: keep(new DebugPass(gl, shapes)),
+        };
+      });
+    } catch (error) {
+      this.withHostState(() => {
+        for (const resource of made) resource.dispose();
+      });
+      throw error;
+    }
     this.geometry.invalidate();
   }
 
@@ -423,17 +496,52 @@ export class PenumbraRenderer {
     this.resources = null;
   };
 
-  private readonly onContextRestored = (): void => {
-    this.contextLost = false;
-    if (this.disposed) return;
-    // A restored context starts with no extension enabled: the half-float lightmap needs its one again.
-    if (this.lightmapFormat === 'rgba16f') supportsFloatTargets(this.gl);
+  /**
+   * Half-float where the context can render to it (which enables the extension: a restored context
+   * starts with none). Warns when it falls back to RGBA8, once until the format changes again.
+   */
+  private chooseLightmapFormat(): void {
+    const format = supportsFloatTargets(this.gl) ? 'rgba16f' : 'rgba8';
+    if (format === 'rgba8' && this.lightmapFormat !== 'rgba8') {
+      console.warn('penumbra: EXT_color_buffer_float is missing; the lightmap falls back to RGBA8, so light sums clamp at 1.');
+    }
+    this.lightmapFormat = format;
+  }
+
+  /**
+   * Rebuilds after a loss. Ignored without a loss before it (nothing to rebuild), and when the
+   * context is lost again before this handler runs: the next restored event rebuilds.
+   */
+  private readonly handleContextRestored = (): void => {
+    if (!this.contextLost || this.disposed || this.gl.isContextLost()) return;
+    this.maxSize = maxTargetSize(this.gl);
     this.createResources();
+    this.contextLost = false;
+    this.onContextRestored?.(this);
+    this.warnOfOldCookies();
   };
+
+  /** Names each textured light whose cookie texture is not one of the restored context's. */
+  private warnOfOldCookies(): void {
+    this._lights.forEach((light, index) => {
+      if (light instanceof TexturedLight && !this.gl.isTexture(light.texture)) {
+        console.warn(`penumbra: lights[${index}] (TexturedLight) still has its cookie texture from before the context loss; give it a new one in PenumbraRenderer.onContextRestored`);
+      }
+    });
+  }
 }
 
-function checkSize(name: string, value: number): number {
-  if (!Number.isInteger(value) || value <= 0) throw new RangeError(`PenumbraRenderer.${name} must be a positive integer, got ${value}`);
+/** The largest side of a target the context can allocate: its texture and its depth/stencil renderbuffer. */
+function maxTargetSize(gl: WebGL2RenderingContext): number {
+  // A lost context answers null: no limit is known until it is back.
+  const textureSize = (gl.getParameter(gl.MAX_TEXTURE_SIZE) as number | null) ?? Infinity;
+  const renderbufferSize = (gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) as number | null) ?? Infinity;
+  return Math.min(textureSize, renderbufferSize);
+}
+
+function checkSize(name: string, value: number, max: number): number {
+  if (!Number.isInteger(value) || value <= 0) throw new RangeError(`${name} must be a positive integer, got ${describeValue(value)}`);
+  if (value > max) throw new RangeError(`${name} ${value} exceeds this context's largest texture size ${max} (MAX_TEXTURE_SIZE / MAX_RENDERBUFFER_SIZE)`);
   return value;
 }
 

@@ -18,16 +18,22 @@ export class RenderTarget {
   height = 0;
   private depthStencil: WebGLRenderbuffer | null = null;
 
+  /** Frees what it made before throwing when the target cannot be completed. */
   constructor(private readonly gl: WebGL2RenderingContext, private readonly options: RenderTargetOptions, width: number, height: number) {
     this.texture = gl.createTexture()!;
     this.framebuffer = gl.createFramebuffer()!;
     if (options.depthStencil) this.depthStencil = gl.createRenderbuffer();
-    this.resize(width, height);
+    try {
+      this.resize(width, height);
+    } catch (error) {
+      this.dispose();
+      throw error;
+    }
   }
 
   /**
-   * Reallocates storage for a new size. Leaves the texture unit's and framebuffer bindings changed:
-   * callers run it inside a saved host state.
+   * Reallocates storage for a new size. Leaves the active unit's texture, the framebuffer and the
+   * renderbuffer bindings changed: callers run it inside a saved host state.
    */
   resize(width: number, height: number): void {
     if (width === this.width && height === this.height) return;

@@ -6,18 +6,56 @@ export interface Program {
 
 /**
  * Compiles and links a program. Throws an `Error` naming the pass, the stage and the info log,
- * with the source lines around each reported error, when compiling or linking fails.
+ * with the source lines around each reported error, when compiling or linking fails; then no GL
+ * object of the attempt is left.
  */
 export function createProgram(gl: WebGL2RenderingContext, passName: string, vertexSource: string, fragmentSource: string): Program {
   const vertex = compileShader(gl, passName, gl.VERTEX_SHADER, vertexSource);
-  const fragment = compileShader(gl, passName, gl.FRAGMENT_SHADER, fragmentSource);
+  try {
+    const fragment = compileShader(gl, passName, gl.FRAGMENT_SHADER, fragmentSource);
+    try {
+      return linkProgram(gl, passName, vertex, fragment);
+    } finally {
+      gl.deleteShader(fragment);
+    }
+  } finally {
+    // Deleting an attached shader only flags it: it goes with its program.
+    gl.deleteShader(vertex);
+  }
+}
+
+/** A program's pass name (for messages), vertex source and fragment source. */
+export type ProgramSources = readonly [passName: string, vertexSource: string, fragmentSource: string];
+
+/**
+ * Creates every program of `sources`, or none: when one fails, those already made are deleted
+ * before the error goes on.
+ */
+export function createPrograms<K extends string>(gl: WebGL2RenderingContext, sources: Readonly<Record<K, ProgramSources>>): Record<K, Program> {
+  const made: Partial<Record<K, Program>> = {};
+  try {
+    for (const key of Object.keys(sources) as K[]) {
+      const [passName, vertexSource, fragmentSource] = sources[key];
+      made[key] = createProgram(gl, passName, vertexSource, fragmentSource);
+    }
+  } catch (error) {
+    deletePrograms(gl, Object.values(made) as Program[]);
+    throw error;
+  }
+  return made as Record<K, Program>;
+}
+
+/** Deletes the programs' GL objects. */
+export function deletePrograms(gl: WebGL2RenderingContext, programs: readonly Program[]): void {
+  for (const program of programs) gl.deleteProgram(program.handle);
+}
+
+function linkProgram(gl: WebGL2RenderingContext, passName: string, vertex: WebGLShader, fragment: WebGLShader): Program {
   const handle = gl.createProgram();
   if (!handle) throw new Error(`penumbra: ${passName}: could not create a program (is the context lost?)`);
   gl.attachShader(handle, vertex);
   gl.attachShader(handle, fragment);
   gl.linkProgram(handle);
-  gl.deleteShader(vertex);
-  gl.deleteShader(fragment);
   if (!gl.getProgramParameter(handle, gl.LINK_STATUS)) {
     const log = gl.getProgramInfoLog(handle) ?? '';
     gl.deleteProgram(handle);

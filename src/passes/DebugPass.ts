@@ -1,7 +1,7 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
 import type { LightDraw } from '../geometry/FramePlan';
 import { RECORD_POINTS } from '../geometry/shadowLayout';
-import { createProgram, type Program } from '../gl/program';
+import { createPrograms, deletePrograms, type Program } from '../gl/program';
 import type { LightShapes } from '../gl/LightShapes';
 import { shaderSources } from './shaders';
 import { ShadowUnits } from './ShadowTextures';
@@ -20,9 +20,14 @@ export class DebugPass {
   private readonly emptyVertexArray: WebGLVertexArrayObject;
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly shapes: LightShapes) {
+    const programs = createPrograms(gl, {
+      quad: ['debug light quads', shaderSources.lightVertex, shaderSources.debugFragment],
+      records: ['debug shadow records', shaderSources.debugRecordsVertex, shaderSources.debugFragment],
+    });
+    this.quadProgram = programs.quad;
+    this.recordsProgram = programs.records;
+    // Made after the programs, which may fail: creating a vertex array cannot.
     this.emptyVertexArray = gl.createVertexArray()!;
-    this.quadProgram = createProgram(gl, 'debug light quads', shaderSources.lightVertex, shaderSources.debugFragment);
-    this.recordsProgram = createProgram(gl, 'debug shadow records', shaderSources.debugRecordsVertex, shaderSources.debugFragment);
     gl.useProgram(this.recordsProgram.handle);
     gl.uniform1i(this.recordsProgram.uniforms.u_records, ShadowUnits.records);
   }
@@ -49,8 +54,7 @@ export class DebugPass {
   }
 
   dispose(): void {
-    this.gl.deleteProgram(this.quadProgram.handle);
-    this.gl.deleteProgram(this.recordsProgram.handle);
+    deletePrograms(this.gl, [this.quadProgram, this.recordsProgram]);
     this.gl.deleteVertexArray(this.emptyVertexArray);
   }
 }

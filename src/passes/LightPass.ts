@@ -1,6 +1,6 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
 import type { LightDraw } from '../geometry/FramePlan';
-import { createProgram, type Program } from '../gl/program';
+import { createPrograms, deletePrograms, type Program, type ProgramSources } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import type { LightShapes } from '../gl/LightShapes';
 import { ShadowType, Spotlight, TexturedLight, type LightKind } from '../scene/lights';
@@ -31,16 +31,22 @@ export class LightPass {
   private readonly coneHalfAngle = new Float32Array(1);
   private readonly coneDecay = new Float32Array(1);
 
+  /** Frees what it made before throwing when a program or the lightmap cannot be made. */
   constructor(private readonly gl: WebGL2RenderingContext, private readonly shapes: LightShapes, format: TargetFormat, width: number, height: number) {
-    const programsOf = (name: string, fragment: LightStages) => ({
-      unshadowed: createProgram(gl, name, shaderSources.lightVertex, fragment.unshadowed),
-      shadowed: createProgram(gl, `${name} with shadows`, shaderSources.lightVertex, fragment.shadowed),
-    });
-    this.programs = {
-      point: programsOf('point light', shaderSources.lightPointFragment),
-      spot: programsOf('spotlight', shaderSources.lightSpotFragment),
-      textured: programsOf('textured light', shaderSources.lightTexturedFragment),
-    };
+    // Made first: it frees itself when it fails, and nothing else is made yet.
+    this.lightmap = new RenderTarget(gl, { format, linear: true }, width, height);
+    try {
+      const made = createPrograms(gl, {
+        ...sourcesOf('point', 'point light', shaderSources.lightPointFragment),
+        ...sourcesOf('spot', 'spotlight', shaderSources.lightSpotFragment),
+        ...sourcesOf('textured', 'textured light', shaderSources.lightTexturedFragment),
+      });
+      const programsOf = (kind: LightKind) => ({ unshadowed: made[`${kind} unshadowed`], shadowed: made[`${kind} shadowed`] });
+      this.programs = { point: programsOf('point'), spot: programsOf('spot'), textured: programsOf('textured') };
+    } catch (error) {
+      this.lightmap.dispose();
+      throw error;
+    }
     this.programList = Object.values(this.programs).flatMap((programs) => Object.values(programs));
     for (const program of this.programList) {
       gl.useProgram(program.handle);
@@ -50,7 +56,6 @@ export class LightPass {
       if (uniforms.u_entries) gl.uniform1i(uniforms.u_entries, ShadowUnits.entries);
       if (uniforms.u_cookie) gl.uniform1i(uniforms.u_cookie, COOKIE_UNIT);
     }
-    this.lightmap = new RenderTarget(gl, { format, linear: true }, width, height);
   }
 
   resize(width: number, height: number): void {
@@ -141,7 +146,15 @@ export class LightPass {
   }
 
   dispose(): void {
-    for (const program of this.programList) this.gl.deleteProgram(program.handle);
+    deletePrograms(this.gl, this.programList);
     this.lightmap.dispose();
   }
+}
+
+/** The sources of a kind's two programs, keyed `<kind> unshadowed` and `<kind> shadowed`. */
+function sourcesOf(kind: LightKind, name: string, fragment: LightStages): Record<string, ProgramSources> {
+  return {
+    [`${kind} unshadowed`]: [name, shaderSources.lightVertex, fragment.unshadowed],
+    [`${kind} shadowed`]: [`${name} with shadows`, shaderSources.lightVertex, fragment.shadowed],
+  };
 }

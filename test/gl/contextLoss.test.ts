@@ -1,0 +1,161 @@
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import { Hull, PenumbraRenderer, PointLight, TexturedLight } from '../../src/index';
+import { createContext, destroyContext } from './context';
+import { countGLObjects } from './glObjects';
+import { losableContext, type LosableContext } from './losableContext';
+import { readTexture } from './readTexture';
+
+// The same in Chromium with a real loss: test/browser/reference.test.ts.
+const W = 32, H = 24;
+
+let real: WebGL2RenderingContext;
+let context: LosableContext;
+
+beforeEach(() => {
+  real = createContext(W, H);
+  context = losableContext(real);
+});
+
+afterEach(() => {
+  destroyContext(real);
+  vi.restoreAllMocks();
+});
+
+function sceneRenderer(gl: WebGL2RenderingContext): PenumbraRenderer {
+  const renderer = new PenumbraRenderer(gl, { ambientColor: [0.1, 0.1, 0.1] });
+  renderer.addLight(new PointLight({ position: [8, 12], range: 30, radius: 2 }));
+  renderer.addHull(new Hull([[16, 8], [20, 8], [20, 16], [16, 16]]));
+  return renderer;
+}
+
+function lightmap(renderer: PenumbraRenderer): Float32Array {
+  renderer.renderLightmap();
+  return readTexture(real, renderer.lightmapTexture, W, H);
+}
+
+/** Every public call that reaches GL; returns what each threw. */
+function everyCall(renderer: PenumbraRenderer): string[] {
+  const thrown: string[] = [];
+  const calls: [string, () => void][] = [
+    ['frame', () => { renderer.beginDraw(); renderer.draw(); }],
+    ['beginDraw twice', () => { renderer.beginDraw(); renderer.beginDraw(); }],
+    ['drawInPlace', () => renderer.drawInPlace()],
+    ['renderLightmap', () => renderer.renderLightmap()],
+    ['resize', () => { renderer.resize(W + 1, H); renderer.resize(W, H); }],
+  ];
+  for (const [name, call] of calls) {
+    try {
+      call();
+    } catch (error) {
+      thrown.push(`${name}: ${String(error)}`);
+    }
+  }
+  return thrown;
+}
+
+describe('context loss', () => {
+  it('skips every call between the loss and its event, and draws the same after the restore', () => {
+    const renderer = sceneRenderer(context.gl);
+    const before = lightmap(renderer);
+    renderer.beginDraw();
+    context.lose();
+    expect(everyCall(renderer)).toEqual([]);
+    context.dispatchLost();
+    expect(everyCall(renderer)).toEqual([]);
+    context.restore();
+    expect(lightmap(renderer)).toEqual(before);
+    renderer.dispose();
+    expect(real.getError()).toBe(0);
+  });
+
+  it('skips every call after a second loss inside a restored handler that runs before the renderer’s', () => {
+    const thrown: string[] = [];
+    let renderer: PenumbraRenderer | null = null;
+    const loseAgainAndDraw = () => {
+      context.lose();
+      thrown.push(...everyCall(renderer!));
+    };
+    context.canvas.addEventListener('webglcontextrestored', loseAgainAndDraw, { once: true });
+    renderer = sceneRenderer(context.gl);
+    const before = lightmap(renderer);
+    context.lose();
+    context.dispatchLost();
+    context.restore();
+    expect(thrown).toEqual([]);
+    expect(everyCall(renderer)).toEqual([]);
+    context.dispatchLost();
+    context.restore();
+    expect(lightmap(renderer)).toEqual(before);
+    renderer.dispose();
+  });
+
+  it('skips every call after a second loss inside a restored handler that runs after the renderer’s', () => {
+    const renderer = sceneRenderer(context.gl);
+    const before = lightmap(renderer);
+    const thrown: string[] = [];
+    context.canvas.addEventListener('webglcontextrestored', () => {
+      context.lose();
+      thrown.push(...everyCall(renderer));
+    }, { once: true });
+    context.lose();
+    context.dispatchLost();
+    context.restore();
+    expect(thrown).toEqual([]);
+    context.dispatchLost();
+    context.restore();
+    expect(lightmap(renderer)).toEqual(before);
+    renderer.dispose();
+  });
+
+  it('builds in the loss window without throwing, and draws once restored', () => {
+    const reference = sceneRenderer(context.gl);
+    const before = lightmap(reference);
+    reference.dispose();
+    context.lose();
+    const renderer = sceneRenderer(context.gl);
+    expect(everyCall(renderer)).toEqual([]);
+    context.dispatchLost();
+    context.restore();
+    expect(lightmap(renderer)).toEqual(before);
+    renderer.dispose();
+  });
+
+  it('ignores a restored event without a loss before it: no GL object is made', () => {
+    const renderer = sceneRenderer(context.gl);
+    const before = lightmap(renderer);
+    const objects = countGLObjects(real);
+    context.restore();
+    expect(objects.byKind()).toEqual({});
+    expect(lightmap(renderer)).toEqual(before);
+    renderer.dispose();
+  });
+
+  it('calls onContextRestored, where a textured light gets a new cookie; warns naming a light left with an old one', () => {
+    const cookie = () => {
+      const texture = real.createTexture()!;
+      real.bindTexture(real.TEXTURE_2D, texture);
+      real.texImage2D(real.TEXTURE_2D, 0, real.RGBA8, 1, 1, 0, real.RGBA, real.UNSIGNED_BYTE, new Uint8Array([255, 255, 255, 255]));
+      real.bindTexture(real.TEXTURE_2D, null);
+      return texture;
+    };
+    const warn = vi.spyOn(console, 'warn').mockImplementation(() => undefined);
+    const renderer = sceneRenderer(context.gl);
+    const resupplied = renderer.addLight(new TexturedLight({ position: [4, 4], range: 10, texture: cookie() }));
+    renderer.addLight(new TexturedLight({ position: [24, 4], range: 10, texture: cookie() }));
+    const restoredWith: PenumbraRenderer[] = [];
+    renderer.onContextRestored = (restored) => {
+      restoredWith.push(restored);
+      resupplied.texture = cookie();
+    };
+    context.lose();
+    context.dispatchLost();
+    // In a browser every texture of the lost context is gone; here they live on, so the test deletes them.
+    for (const light of renderer.lights) if (light instanceof TexturedLight) real.deleteTexture(light.texture);
+    context.restore();
+    expect(restoredWith).toEqual([renderer]);
+    expect(warn.mock.calls.map((call) => String(call[0]))).toEqual([
+      expect.stringMatching(/lights\[2\] \(TexturedLight\).*before the context loss.*onContextRestored/),
+    ]);
+    renderer.dispose();
+  });
+});
