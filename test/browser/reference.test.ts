@@ -9,6 +9,7 @@ import { compareToReference, formatErrorTable, type SceneErrors } from '../refer
 import { MAX_LIMIT, MEAN_LIMIT, P99_LIMIT, UMBRA_LIMIT } from '../reference/limits';
 import { REFERENCE_SCENES, type ReferenceScene } from '../reference/scenes';
 import { computeReference } from '../reference/softShadowReference';
+import type { HostStateReport } from '../gl/hostParameters';
 import { collectPageErrors, launchChromium } from './chromium';
 import { serveDirectory, type StaticServer } from './staticServer';
 
@@ -25,7 +26,8 @@ const figures: { scene: string; errors: SceneErrors }[] = [];
 /** What test/browser/reference-page/main.ts puts on `window`. */
 interface ReferencePage {
   renderScene(scene: ReferenceScene): number[];
-  renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before: number[]; after: number[]; lostFrameError: string | null }>;
+  renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before: number[]; after: number[]; lostFrameError: string | null; windowErrors: string[] }>;
+  checkHostState(): HostStateReport;
 }
 
 beforeAll(async () => {
@@ -72,9 +74,11 @@ describe('reference scenes in Chromium', () => {
 
   it('draws the same light again after the context is lost and restored, keeping lights and hulls', async () => {
     const scene = REFERENCE_SCENES.find((s) => s.name.startsWith('two hulls'))!;
-    const { before, after, lostFrameError } = await page.evaluate(
+    const { before, after, lostFrameError, windowErrors } = await page.evaluate(
       (s) => (window as unknown as ReferencePage).renderAcrossContextLoss(s), scene);
     expect(lostFrameError).toBeNull();
+    // Calls before the lost event arrives, and after a second loss inside a restored handler, are skipped.
+    expect(windowErrors).toEqual([]);
     expect(pageErrors).toEqual([]);
     const reference = computeReference(scene);
     const restored = compareToReference(scene, lightmapToWorldRows(after, scene.width, scene.height), reference);
@@ -86,5 +90,15 @@ describe('reference scenes in Chromium', () => {
     for (let i = 0; i < before.length; i++) largest = Math.max(largest, Math.abs(before[i] - after[i]));
     expect(largest).toBeLessThan(1e-6);
     expect(restored.umbra.pixels).toBeGreaterThan(0);
+  });
+});
+
+describe('host state in Chromium', () => {
+  it('every host parameter is as the host set it after each public call (as on headless-gl: test/gl/hostParameters.test.ts)', async () => {
+    const report = await page.evaluate(() => (window as unknown as ReferencePage).checkHostState());
+    console.log(`Chromium: ${report.compared} parameters compared after each of ${report.calls.length} public calls; rejected setup steps: ${report.unsupported.join(', ') || 'none'}`);
+    expect(report.failures).toEqual([]);
+    expect(report.unsupported).toEqual([]);
+    expect(pageErrors).toEqual([]);
   });
 });

@@ -4,6 +4,8 @@
 import { createSceneRenderer } from '../../reference/buildScene';
 import type { ReferenceScene } from '../../reference/scenes';
 import { readTexture } from '../../gl/readTexture';
+import { checkHostStateAcrossPublicCalls, type HostStateReport } from '../../gl/hostParameters';
+import type { PenumbraRenderer } from '../../../src/index';
 
 const canvas = document.getElementById('canvas') as HTMLCanvasElement;
 
@@ -42,16 +44,53 @@ function nextEvent(type: string): Promise<void> {
   });
 }
 
-/** Renders `scene`, loses and restores the context, renders again: the lightmaps before and after. */
-async function renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before: number[]; after: number[]; lostFrameError: string | null }> {
+/** Every public call that reaches GL, as a frame would make them; returns what each threw. */
+function callsThrowing(renderer: PenumbraRenderer, width: number, height: number): string[] {
+  const thrown: string[] = [];
+  const calls: [string, () => void][] = [
+    ['frame', () => { renderer.beginDraw(); renderer.draw(); }],
+    ['drawInPlace', () => renderer.drawInPlace()],
+    ['renderLightmap', () => renderer.renderLightmap()],
+    ['resize', () => { renderer.resize(width + 1, height); renderer.resize(width, height); }],
+  ];
+  for (const [name, call] of calls) {
+    try {
+      call();
+    } catch (error) {
+      thrown.push(`${name}: ${String(error)}`);
+    }
+  }
+  return thrown;
+}
+
+/** Waits until the lost event's dispatch is over: Chromium allows restoring only then (it reads defaultPrevented afterwards). */
+function afterDispatch(): Promise<void> {
+  return new Promise((done) => setTimeout(done, 0));
+}
+
+/**
+ * Renders `scene`, loses and restores the context, renders again: the lightmaps before and after.
+ * Calls are made in the window between the loss and its event (the browser queues the event), and
+ * after a second loss made by a restored handler that runs before the renderer's: what they threw
+ * is `windowErrors`.
+ */
+async function renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before: number[]; after: number[]; lostFrameError: string | null; windowErrors: string[] }> {
   const gl = context(scene.width, scene.height);
-  const renderer = createSceneRenderer(gl, scene);
-  renderer.renderLightmap();
-  const before = readLightmap(gl, renderer.lightmapTexture, scene.width, scene.height);
   const loseContext = gl.getExtension('WEBGL_lose_context');
   if (!loseContext) throw new Error('WEBGL_lose_context is not available');
+  const windowErrors: string[] = [];
+  let renderer: PenumbraRenderer | null = null;
+  // Registered before the renderer's own listener, so it runs first.
+  canvas.addEventListener('webglcontextrestored', () => {
+    loseContext.loseContext();
+    windowErrors.push(...callsThrowing(renderer!, scene.width, scene.height).map((error) => `after a second loss: ${error}`));
+  }, { once: true });
+  renderer = createSceneRenderer(gl, scene);
+  renderer.renderLightmap();
+  const before = readLightmap(gl, renderer.lightmapTexture, scene.width, scene.height);
   const lost = nextEvent('webglcontextlost');
   loseContext.loseContext();
+  windowErrors.push(...callsThrowing(renderer, scene.width, scene.height).map((error) => `before the lost event: ${error}`));
   await lost;
   // While lost, frames are skipped quietly rather than throwing.
   let lostFrameError: string | null = null;
@@ -62,16 +101,28 @@ async function renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before:
   } catch (error) {
     lostFrameError = String(error);
   }
-  // Chromium allows restoring only once the lost event's dispatch has finished (it reads
-  // defaultPrevented afterwards); a promise continuation still runs inside it, so wait a task.
-  await new Promise((done) => setTimeout(done, 0));
-  const restored = nextEvent('webglcontextrestored');
+  // A promise continuation still runs inside the lost event's dispatch, so wait a task.
+  await afterDispatch();
+  const lostAgain = nextEvent('webglcontextlost');
+  let restored = nextEvent('webglcontextrestored');
+  loseContext.restoreContext();
+  await restored;
+  await lostAgain;
+  await afterDispatch();
+  restored = nextEvent('webglcontextrestored');
   loseContext.restoreContext();
   await restored;
   renderer.renderLightmap();
   const after = readLightmap(gl, renderer.lightmapTexture, scene.width, scene.height);
   renderer.dispose();
-  return { before, after, lostFrameError };
+  return { before, after, lostFrameError, windowErrors };
 }
 
-Object.assign(window, { renderScene, renderAcrossContextLoss });
+/** The host-parameter check of test/gl/hostParameters.ts on a canvas of its own (its state would disturb the scenes). */
+function checkHostState(): HostStateReport {
+  const gl = document.createElement('canvas').getContext('webgl2');
+  if (!gl) throw new Error('WebGL2 is not available');
+  return checkHostStateAcrossPublicCalls(gl, 64, 48);
+}
+
+Object.assign(window, { renderScene, renderAcrossContextLoss, checkHostState });
