@@ -1,9 +1,9 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { Hull, PenumbraRenderer, PointLight, TexturedLight } from '../../src/index';
+import { PenumbraRenderer, TexturedLight } from '../../src/index';
 import { createContext, destroyContext } from './context';
+import { callsThrowing, lightmapOf, sceneRenderer } from './fixtures';
 import { countGLObjects } from './glObjects';
 import { losableContext, type LosableContext } from './losableContext';
-import { readTexture } from './readTexture';
 
 // The same in Chromium with a real loss: test/browser/reference.test.ts.
 const W = 32, H = 24;
@@ -21,36 +21,12 @@ afterEach(() => {
   vi.restoreAllMocks();
 });
 
-function sceneRenderer(gl: WebGL2RenderingContext): PenumbraRenderer {
-  const renderer = new PenumbraRenderer(gl, { ambientColor: [0.1, 0.1, 0.1] });
-  renderer.addLight(new PointLight({ position: [8, 12], range: 30, radius: 2 }));
-  renderer.addHull(new Hull([[16, 8], [20, 8], [20, 16], [16, 16]]));
-  return renderer;
-}
-
 function lightmap(renderer: PenumbraRenderer): Float32Array {
-  renderer.renderLightmap();
-  return readTexture(real, renderer.lightmapTexture, W, H);
+  return lightmapOf(real, renderer, W, H);
 }
 
-/** Every public call that reaches GL; returns what each threw. */
 function everyCall(renderer: PenumbraRenderer): string[] {
-  const thrown: string[] = [];
-  const calls: [string, () => void][] = [
-    ['frame', () => { renderer.beginDraw(); renderer.draw(); }],
-    ['beginDraw twice', () => { renderer.beginDraw(); renderer.beginDraw(); }],
-    ['drawInPlace', () => renderer.drawInPlace()],
-    ['renderLightmap', () => renderer.renderLightmap()],
-    ['resize', () => { renderer.resize(W + 1, H); renderer.resize(W, H); }],
-  ];
-  for (const [name, call] of calls) {
-    try {
-      call();
-    } catch (error) {
-      thrown.push(`${name}: ${String(error)}`);
-    }
-  }
-  return thrown;
+  return callsThrowing(renderer, W, H);
 }
 
 describe('context loss', () => {
@@ -68,44 +44,30 @@ describe('context loss', () => {
     expect(real.getError()).toBe(0);
   });
 
-  it('skips every call after a second loss inside a restored handler that runs before the renderer’s', () => {
-    const thrown: string[] = [];
-    let renderer: PenumbraRenderer | null = null;
-    const loseAgainAndDraw = () => {
+  for (const handlerFirst of [true, false]) {
+    it(`skips every call after a second loss inside a restored handler that runs ${handlerFirst ? 'before' : 'after'} the renderer’s`, () => {
+      const thrown: string[] = [];
+      let renderer: PenumbraRenderer | null = null;
+      const loseAgainAndDraw = () => {
+        context.lose();
+        thrown.push(...everyCall(renderer!));
+      };
+      // Listeners run in the order they were added: the renderer adds its own when it is made.
+      if (handlerFirst) context.canvas.addEventListener('webglcontextrestored', loseAgainAndDraw, { once: true });
+      renderer = sceneRenderer(context.gl);
+      if (!handlerFirst) context.canvas.addEventListener('webglcontextrestored', loseAgainAndDraw, { once: true });
+      const before = lightmap(renderer);
       context.lose();
-      thrown.push(...everyCall(renderer!));
-    };
-    context.canvas.addEventListener('webglcontextrestored', loseAgainAndDraw, { once: true });
-    renderer = sceneRenderer(context.gl);
-    const before = lightmap(renderer);
-    context.lose();
-    context.dispatchLost();
-    context.restore();
-    expect(thrown).toEqual([]);
-    expect(everyCall(renderer)).toEqual([]);
-    context.dispatchLost();
-    context.restore();
-    expect(lightmap(renderer)).toEqual(before);
-    renderer.dispose();
-  });
-
-  it('skips every call after a second loss inside a restored handler that runs after the renderer’s', () => {
-    const renderer = sceneRenderer(context.gl);
-    const before = lightmap(renderer);
-    const thrown: string[] = [];
-    context.canvas.addEventListener('webglcontextrestored', () => {
-      context.lose();
-      thrown.push(...everyCall(renderer));
-    }, { once: true });
-    context.lose();
-    context.dispatchLost();
-    context.restore();
-    expect(thrown).toEqual([]);
-    context.dispatchLost();
-    context.restore();
-    expect(lightmap(renderer)).toEqual(before);
-    renderer.dispose();
-  });
+      context.dispatchLost();
+      context.restore();
+      expect(thrown).toEqual([]);
+      expect(everyCall(renderer)).toEqual([]);
+      context.dispatchLost();
+      context.restore();
+      expect(lightmap(renderer)).toEqual(before);
+      renderer.dispose();
+    });
+  }
 
   it('builds in the loss window without throwing, and draws once restored', () => {
     const reference = sceneRenderer(context.gl);

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { Hull, PenumbraRenderer, PointLight } from '../../src/index';
 import { createContext, destroyContext } from './context';
-import { checkHostStateAcrossPublicCalls } from './hostParameters';
+import { checkHostStateAcrossPublicCalls, setUnpackParameters } from './hostParameters';
 import { readTexture } from './readTexture';
 
 // The same check runs in Chromium (test/browser/reference.test.ts).
@@ -31,14 +31,7 @@ describe('every host parameter, on headless-gl', () => {
       return texels;
     };
     const plain = lightmap();
-    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 8);
-    gl.pixelStorei(gl.UNPACK_ROW_LENGTH, 3);
-    gl.pixelStorei(gl.UNPACK_SKIP_PIXELS, 2);
-    gl.pixelStorei(gl.UNPACK_SKIP_ROWS, 1);
-    gl.pixelStorei(gl.UNPACK_SKIP_IMAGES, 1);
-    gl.pixelStorei(gl.UNPACK_IMAGE_HEIGHT, 5);
-    gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, true);
-    gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, true);
+    setUnpackParameters(gl);
     const hostile = lightmap();
     expect(gl.getError()).toBe(0);
     destroyContext(gl);

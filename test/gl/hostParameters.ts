@@ -3,6 +3,7 @@
 // `getParameter` (and its indexed and per-attribute forms) exposes that a renderer could change is
 // set to a value unlike its default, and read back in full after each public call.
 import { Hull, PenumbraRenderer, PointLight, TexturedLight } from '../../src/index';
+import { colorTarget } from './fixtures';
 
 /** Context state that `getParameter` answers, by name (limits and strings left out: nothing can change them). */
 const STATE_PARAMETERS = [
@@ -116,17 +117,13 @@ function linkedProgram(gl: GL): WebGLProgram {
 
 /** A host colour target of `width × height` (RGBA8), left bound as the draw and read framebuffer. */
 function hostFramebuffer(gl: GL, objects: HostObjects, width: number, height: number): void {
-  const texture = objects.add('host target texture', gl.createTexture());
-  gl.bindTexture(gl.TEXTURE_2D, texture);
-  gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, width, height);
-  const framebuffer = objects.add('host framebuffer', gl.createFramebuffer());
-  gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
-  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
-  gl.bindTexture(gl.TEXTURE_2D, null);
+  const target = colorTarget(gl, width, height);
+  objects.add('host target texture', target.texture);
+  objects.add('host framebuffer', target.framebuffer);
 }
 
 /** Sets the fixed-function state, masks and hints to values unlike the defaults. */
-function setFixedFunctionState(gl: GL): void {
+export function setFixedFunctionState(gl: GL): void {
   gl.viewport(3, 4, 50, 40);
   gl.scissor(1, 2, 30, 20);
   for (const capability of [gl.SCISSOR_TEST, gl.BLEND, gl.DEPTH_TEST, gl.STENCIL_TEST, gl.CULL_FACE, gl.POLYGON_OFFSET_FILL, gl.SAMPLE_ALPHA_TO_COVERAGE, gl.SAMPLE_COVERAGE]) gl.enable(capability);
@@ -152,7 +149,6 @@ function setFixedFunctionState(gl: GL): void {
   gl.polygonOffset(2, 3);
   gl.sampleCoverage(0.5, true);
   gl.hint(gl.GENERATE_MIPMAP_HINT, gl.NICEST);
-  gl.hint(gl.FRAGMENT_SHADER_DERIVATIVE_HINT, gl.FASTEST);
 }
 
 /** Sets every pixel-store parameter (pack and unpack) away from its default; no pixel buffers bound. */
@@ -161,6 +157,11 @@ function setPixelStore(gl: GL): void {
   gl.pixelStorei(gl.PACK_ROW_LENGTH, 7);
   gl.pixelStorei(gl.PACK_SKIP_PIXELS, 2);
   gl.pixelStorei(gl.PACK_SKIP_ROWS, 3);
+  setUnpackParameters(gl);
+}
+
+/** Sets every unpack parameter away from its default (a layout under which no tightly packed upload reads right). */
+export function setUnpackParameters(gl: GL): void {
   gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
   gl.pixelStorei(gl.UNPACK_ROW_LENGTH, 5);
   gl.pixelStorei(gl.UNPACK_SKIP_PIXELS, 3);
@@ -194,12 +195,8 @@ function setBuffers(gl: GL, objects: HostObjects, supported: (step: string, set:
     gl.bindBuffer(gl.COPY_READ_BUFFER, buffer('host copy-read buffer'));
     gl.bindBuffer(gl.COPY_WRITE_BUFFER, buffer('host copy-write buffer'));
   });
-  supported('uniform buffers', () => {
-    const uniforms = buffer('host uniform buffer');
-    gl.bindBuffer(gl.UNIFORM_BUFFER, uniforms);
-    gl.bufferData(gl.UNIFORM_BUFFER, 256, gl.DYNAMIC_DRAW);
-    gl.bindBufferBase(gl.UNIFORM_BUFFER, 1, uniforms);
-  });
+  // Binds the generic uniform buffer binding too.
+  supported('uniform buffers', () => gl.bindBufferBase(gl.UNIFORM_BUFFER, 1, buffer('host uniform buffer')));
   supported('transform feedback', () => {
     const feedback = objects.add('host transform feedback', gl.createTransformFeedback());
     gl.bindTransformFeedback(gl.TRANSFORM_FEEDBACK, feedback);
@@ -240,6 +237,7 @@ export function setHostState(gl: GL, width: number, height: number): HostSetup {
   };
   hostFramebuffer(gl, objects, width, height);
   setFixedFunctionState(gl);
+  supported('derivative hint', () => gl.hint(gl.FRAGMENT_SHADER_DERIVATIVE_HINT, gl.FASTEST));
   setPixelStore(gl);
   gl.useProgram(objects.add('host program', linkedProgram(gl)));
   setVertexState(gl, objects);

@@ -1,6 +1,8 @@
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
 import { Hull, PenumbraRenderer, PointLight } from '../../src/index';
 import { createContext, destroyContext } from './context';
+import { colorTarget as sharedColorTarget } from './fixtures';
+import { setFixedFunctionState } from './hostParameters';
 import { readTexture } from './readTexture';
 
 const W = 64, H = 48;
@@ -22,14 +24,7 @@ afterEach(() => {
 });
 
 function colorTarget(): { framebuffer: WebGLFramebuffer; texture: WebGLTexture } {
-  const texture = gl.createTexture()!;
-  gl.bindTexture(gl.TEXTURE_2D, texture);
-  gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, W, H);
-  const framebuffer = gl.createFramebuffer()!;
-  gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
-  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
-  gl.bindTexture(gl.TEXTURE_2D, null);
-  return { framebuffer, texture };
+  return sharedColorTarget(gl, W, H);
 }
 
 function hostProgram(): WebGLProgram {
@@ -97,22 +92,7 @@ function setDistinctiveState(withVertexArray: boolean): Map<unknown, string> {
   const target = colorTarget();
   names.set(target.framebuffer, 'host framebuffer').set(target.texture, 'host target texture');
   gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
-  gl.viewport(3, 4, 50, 40);
-  gl.enable(gl.SCISSOR_TEST);
-  gl.scissor(1, 2, 30, 20);
-  gl.enable(gl.BLEND);
-  gl.blendEquationSeparate(gl.FUNC_SUBTRACT, gl.FUNC_REVERSE_SUBTRACT);
-  gl.blendFuncSeparate(gl.SRC_COLOR, gl.ONE_MINUS_DST_ALPHA, gl.CONSTANT_ALPHA, gl.ZERO);
-  gl.blendColor(0.25, 0.5, 0.75, 1);
-  gl.colorMask(true, false, true, false);
-  gl.clearColor(0.3, 0.6, 0.9, 0.5);
-  gl.enable(gl.DEPTH_TEST);
-  gl.depthFunc(gl.GEQUAL);
-  gl.depthMask(false);
-  gl.enable(gl.STENCIL_TEST);
-  gl.enable(gl.CULL_FACE);
-  gl.cullFace(gl.FRONT);
-  gl.frontFace(gl.CW);
+  setFixedFunctionState(gl);
   const program = hostProgram();
   names.set(program, 'host program');
   gl.useProgram(program);

@@ -1,9 +1,9 @@
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
-import { Hull, PenumbraRenderer, PointLight } from '../../src/index';
+import { PenumbraRenderer } from '../../src/index';
 import { createContext, destroyContext } from './context';
+import { colorTarget, lightmapOf, sceneRenderer } from './fixtures';
 import { countGLObjects } from './glObjects';
 import { differences, HostObjects, snapshot } from './hostParameters';
-import { readTexture } from './readTexture';
 
 const W = 32, H = 24;
 
@@ -17,16 +17,8 @@ afterEach(() => {
   destroyContext(gl);
 });
 
-function sceneRenderer(): PenumbraRenderer {
-  const renderer = new PenumbraRenderer(gl, { ambientColor: [0.1, 0.1, 0.1] });
-  renderer.addLight(new PointLight({ position: [8, 12], range: 30, radius: 2 }));
-  renderer.addHull(new Hull([[16, 8], [20, 8], [20, 16], [16, 16]]));
-  return renderer;
-}
-
 function lightmap(renderer: PenumbraRenderer): Float32Array {
-  renderer.renderLightmap();
-  return readTexture(gl, renderer.lightmapTexture, W, H);
+  return lightmapOf(gl, renderer, W, H);
 }
 
 /** A host framebuffer bound, and its bytes after a frame drawn through the renderer with a white scene. */
@@ -42,14 +34,7 @@ function frame(renderer: PenumbraRenderer, target: WebGLFramebuffer): Uint8Array
 }
 
 function hostTarget(): WebGLFramebuffer {
-  const texture = gl.createTexture();
-  gl.bindTexture(gl.TEXTURE_2D, texture);
-  gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, W, H);
-  const framebuffer = gl.createFramebuffer()!;
-  gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
-  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
-  gl.bindTexture(gl.TEXTURE_2D, null);
-  return framebuffer;
+  return colorTarget(gl, W, H).framebuffer;
 }
 
 describe('call order', () => {
@@ -59,7 +44,7 @@ describe('call order', () => {
   ];
   for (const [call, run, message] of insideFrame) {
     it(`${call} inside a frame throws an Error naming the order and changes nothing; the frame then ends as usual`, () => {
-      const renderer = sceneRenderer();
+      const renderer = sceneRenderer(gl);
       const target = hostTarget();
       const expected = frame(renderer, target);
       renderer.beginDraw();
@@ -82,7 +67,7 @@ describe('sizes beyond the context', () => {
   const max = () => Math.min(gl.getParameter(gl.MAX_TEXTURE_SIZE), gl.getParameter(gl.MAX_RENDERBUFFER_SIZE)) as number;
 
   it('resize() beyond MAX_TEXTURE_SIZE: a RangeError naming the size and the limit; the renderer keeps its size and works', () => {
-    const renderer = sceneRenderer();
+    const renderer = sceneRenderer(gl);
     const before = lightmap(renderer);
     const limit = max();
     expect(() => renderer.resize(limit + 1, H)).toThrow(RangeError);
@@ -93,7 +78,7 @@ describe('sizes beyond the context', () => {
   });
 
   it('resize() out of memory: a RangeError naming OUT_OF_MEMORY; the renderer keeps its size and works', () => {
-    const renderer = sceneRenderer();
+    const renderer = sceneRenderer(gl);
     const before = lightmap(renderer);
     const getError = gl.getError.bind(gl);
     let outOfMemory = true;

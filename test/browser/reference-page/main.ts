@@ -4,6 +4,7 @@
 import { createSceneRenderer } from '../../reference/buildScene';
 import type { ReferenceScene } from '../../reference/scenes';
 import { readTexture } from '../../gl/readTexture';
+import { callsThrowing } from '../../gl/fixtures';
 import { checkHostStateAcrossPublicCalls, type HostStateReport } from '../../gl/hostParameters';
 import type { PenumbraRenderer } from '../../../src/index';
 
@@ -42,25 +43,6 @@ function nextEvent(type: string): Promise<void> {
       done();
     }, { once: true });
   });
-}
-
-/** Every public call that reaches GL, as a frame would make them; returns what each threw. */
-function callsThrowing(renderer: PenumbraRenderer, width: number, height: number): string[] {
-  const thrown: string[] = [];
-  const calls: [string, () => void][] = [
-    ['frame', () => { renderer.beginDraw(); renderer.draw(); }],
-    ['drawInPlace', () => renderer.drawInPlace()],
-    ['renderLightmap', () => renderer.renderLightmap()],
-    ['resize', () => { renderer.resize(width + 1, height); renderer.resize(width, height); }],
-  ];
-  for (const [name, call] of calls) {
-    try {
-      call();
-    } catch (error) {
-      thrown.push(`${name}: ${String(error)}`);
-    }
-  }
-  return thrown;
 }
 
 /** Waits until the lost event's dispatch is over: Chromium allows restoring only then (it reads defaultPrevented afterwards). */
