@@ -17,6 +17,9 @@ import { printTable, ratioCell } from './table';
 import type { BenchPage } from './page/main';
 import { fitMicro, MICRO_CONFIGURATIONS, type MicroResult, type MicroRow } from './page/micro';
 
+/** One frame of S3 or S4 with the exact core takes minutes on SwiftShader: an hour before a page call gives up. */
+const PAGE_CALL_TIMEOUT_MS = 60 * 60 * 1000;
+
 /** One renderer's Chromium figures for a scene. */
 interface BrowserSide {
   frame: Summary;
@@ -74,7 +77,7 @@ if (!args.has('no-node')) {
 }
 if (!args.has('no-browser')) {
   const server = await serveDirectory(resolve(root, 'bench/.build/page'));
-  const browser = await launchChromium();
+  const browser = await launchChromium(PAGE_CALL_TIMEOUT_MS);
   type Window = { penumbraBench: BenchPage };
   try {
     for (const [i, spec] of scenes.entries()) {
@@ -120,7 +123,7 @@ if (!args.has('no-browser')) {
 
 if (args.has('micro')) {
   const server = await serveDirectory(resolve(root, 'bench/.build/page'));
-  const browser = await launchChromium();
+  const browser = await launchChromium(PAGE_CALL_TIMEOUT_MS);
   try {
     process.stderr.write('chromium micro-benchmark…\n');
     const page = await browser.newPage();

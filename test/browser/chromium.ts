@@ -4,14 +4,18 @@ import puppeteer, { type Browser, type Page } from 'puppeteer';
 /** Debian's Chromium; puppeteer's own download is disabled (.puppeteerrc.cjs). */
 export const CHROMIUM_PATH = process.env.PUPPETEER_EXECUTABLE_PATH ?? '/usr/bin/chromium';
 
-/** Launches headless Chromium with WebGL2 on SwiftShader (no GPU here) and no network chatter. */
-export async function launchChromium(): Promise<Browser> {
+/**
+ * Launches headless Chromium with WebGL2 on SwiftShader (no GPU here) and no network chatter.
+ * `protocolTimeout` bounds each call into the page (puppeteer's default, 180 s, unless given).
+ */
+export async function launchChromium(protocolTimeout?: number): Promise<Browser> {
   if (!existsSync(CHROMIUM_PATH)) {
     throw new Error(`Chromium not found at ${CHROMIUM_PATH}: install it (as root: apt-get install -y chromium) or set PUPPETEER_EXECUTABLE_PATH.`);
   }
   return puppeteer.launch({
     executablePath: CHROMIUM_PATH,
     headless: true,
+    protocolTimeout,
     args: [
       '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist',
       '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run',
