@@ -13,6 +13,7 @@ const UNPACK_PARAMETERS = [
   'UNPACK_ALIGNMENT', 'UNPACK_ROW_LENGTH', 'UNPACK_SKIP_PIXELS', 'UNPACK_SKIP_ROWS', 'UNPACK_IMAGE_HEIGHT',
   'UNPACK_SKIP_IMAGES', 'UNPACK_FLIP_Y_WEBGL', 'UNPACK_PREMULTIPLY_ALPHA_WEBGL',
 ] as const;
+/** The renderer's values of {@link UNPACK_PARAMETERS}, in their order (the WebGL defaults). */
 const UNPACK_DEFAULTS = Int32Array.of(4, 0, 0, 0, 0, 0, 0, 0);
 
 /**
