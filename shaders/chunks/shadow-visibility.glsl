@@ -93,6 +93,9 @@ float bucketWidth;
 
 // Whether the last entry recordsOfEntry read holds a whole convex hull's fan of records.
 bool entryIsFan;
+// Set once the union hides the whole disk (Illuminated lights only): then only hulls that may hold
+// the pixel are left to find.
+bool seekingHolders;
 
 // The records of entry `i` of the pixel's bin, first and last: (-1, -1) when that hull and all after
 // it are farther from the centre than the pixel, (0, -1) when this one cannot hide anything from it.
@@ -111,6 +114,7 @@ ivec2 recordsOfEntry(int i) {
   bool between = length(hull - along * toCentre) < hullRadius + radius
     && length(hull) - hullRadius < distanceToLight + radius
     && (nearest <= radius || distanceToLight >= nearest);
+  if (seekingHolders) between = length(hull) <= hullRadius;
   int code = int(entry.x);
   entryIsFan = code % 2 == 1;
   int records = code / 2;
@@ -315,6 +319,7 @@ float shadowVisibility() {
   beginShadow();
   bool illuminated = v_illuminated > 0.5;
   pastCount = 0;
+  seekingHolders = false;
   for (int i = 0; i < binCount; i++) {
     ivec2 records = recordsOfEntry(i);
     if (records.x < 0) break;
@@ -331,6 +336,7 @@ float shadowVisibility() {
     }
     // Whole: only an Illuminated light's hull pixels are left to find.
     if (coverIsWhole() && !illuminated) return 0.0;
+    seekingHolders = coverIsWhole();
   }
   if (coverIsWhole()) return 0.0;
   float hidden = insideDisk ? 0.0 : coveredBetween(-1.0, 1.0);

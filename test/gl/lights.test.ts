@@ -163,6 +163,18 @@ describe('shadow types', () => {
     expect(illuminated.at(70, 32)[0]).toBe(0); // behind the hull: shadowed either way
     expect(illuminated.at(30, 32)[0]).toBeCloseTo(solid.at(30, 32)[0], 3);
   });
+
+  it('lights the inside of a hull for an Illuminated light even where other hulls hide the whole disk', () => {
+    // The shader stops merging once the disk is hidden and then looks only for a hull holding the pixel.
+    setUp();
+    renderer.addLight(new PointLight({ position: [20, 32], range: 80, radius: 3, shadowType: ShadowType.Illuminated }));
+    renderer.addHull(new Hull([[40, 20], [46, 20], [46, 44], [40, 44]]));
+    renderer.addHull(new Hull([[58, 28], [66, 28], [66, 36], [58, 36]]));
+    const lightmap = renderLightmap(gl, renderer, W, H);
+    expect(lightmap.at(62, 32)[0]).toBeCloseTo(falloff(20, 32, 80, 62, 32), 2);
+    expect(lightmap.at(54, 32)[0]).toBe(0);
+    expect(lightmap.at(72, 32)[0]).toBe(0);
+  });
 });
 
 describe('several lights', () => {
