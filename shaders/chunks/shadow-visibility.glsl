@@ -159,24 +159,18 @@ bool recordMeetsDisk() {
   return any(lessThan(offX * offX + offY * offY, vec4(radius * radius)));
 }
 
-// A number that grows with the angle of `v` off the direction to the centre, over (−2, 2] for
-// (−π, π]: no trigonometry (see angleOfTurn for the way back).
-float turnOf(vec2 v) {
-  float along = dot(toLight, v), across = cross2(toLight, v);
-  float p = across / (abs(along) + abs(across));
-  return along >= 0.0 ? p : (across >= 0.0 ? 2.0 - p : -2.0 - p);
-}
-
-// The directions the records seen past cover, as turnOf values: what the quadrature sweeps.
+// The directions the records seen past cover, as angles from the direction to the centre: what
+// the quadrature sweeps.
 float pastFrom;
 float pastTo;
 
 void addPastSpan(vec2 lowEnd, vec2 highEnd) {
-  float from = turnOf(lowEnd), to = turnOf(highEnd);
+  float from = atan(cross2(toLight, lowEnd), dot(toLight, lowEnd));
+  float to = atan(cross2(toLight, highEnd), dot(toLight, highEnd));
   // Turning counter-clockwise from the low end to the high end passes ±π: the whole turn.
   if (to < from) {
-    from = -2.0;
-    to = 2.0;
+    from = -PI;
+    to = PI;
   }
   pastFrom = min(pastFrom, from);
   pastTo = max(pastTo, to);
@@ -288,6 +282,7 @@ void addPastRecord(int record, ivec2 entryRecords) {
     pastFirst = -1;
   }
   pastCount++;
+  pastRecord = record;
 }
 
 // Sets the pixel, the light and the empty union, and finds the pixel's bin.
@@ -303,8 +298,8 @@ void beginShadow() {
   lowCover = -1.0;
   highCover = 1.0;
   middleCount = 0;
-  pastFrom = 2.0;
-  pastTo = -2.0;
+  pastFrom = PI;
+  pastTo = -PI;
   int bin = min(int(pseudoAngle(-c) * (float(BIN_COUNT) / 4.0)), BIN_COUNT - 1);
   vec4 binEntries = texelFetch(u_bins, ivec2(bin, int(v_shadow.w)), 0);
   binFirst = int(binEntries.x);
