@@ -38,11 +38,11 @@ vec4 diskTriangleAreas(vec4 ax, vec4 ay, vec4 bx, vec4 by) {
   return 0.5 * (radius * radius * sectors + (px * qy - py * qx));
 }
 
-// A number that grows with the angle of `v` off the unit `axis`, over (−π, π]: no trigonometry.
+// A number that grows with the angle of `v` (not zero) off the unit `axis`, over (−2, 2] for
+// (−π, π]: the pseudo-angle of `v` in the axis' frame, turned to start behind.
 float angleOff(vec2 axis, vec2 v) {
-  float along = dot(axis, v), across = cross2(axis, v);
-  float p = across / (abs(along) + abs(across) + 1e-30);
-  return along >= 0.0 ? p : (across >= 0.0 ? 2.0 - p : -2.0 - p);
+  float turn = pseudoAngle(vec2(dot(axis, v), cross2(axis, v)));
+  return turn > 2.0 ? turn - 4.0 : turn;
 }
 
 // The direction off the unit `axis` (towards the disk's centre) whose line has chord height t.
@@ -88,11 +88,7 @@ float hiddenBehind(int first, int last, bool fan, bool windowed, float low, floa
       lowEnd = vec2(xs.x, ys.x);
       highEnd = lowEnd;
     }
-    for (int k = 0; k < 4; k++) {
-      vec2 point = vec2(xs[k], ys[k]);
-      if (cross2(highEnd, point) > 0.0) highEnd = point;
-      if (cross2(lowEnd, point) < 0.0) lowEnd = point;
-    }
+    widenSilhouette(lowEnd, highEnd);
     vec4 distances2 = xs * xs + ys * ys;
     farthest2 = max(farthest2, max(max(distances2.x, distances2.y), max(distances2.z, distances2.w)));
   }

@@ -176,18 +176,23 @@ void addPastSpan(vec2 lowEnd, vec2 highEnd) {
   pastTo = max(pastTo, to);
 }
 
+// Widens the silhouette lowEnd (clockwise-most) .. highEnd (counter-clockwise-most) to the loaded
+// record's points, by cross products: everything it covers spans less than 180° from the pixel.
+void widenSilhouette(inout vec2 lowEnd, inout vec2 highEnd) {
+  for (int k = 0; k < 4; k++) {
+    vec2 point = vec2(xs[k], ys[k]);
+    if (cross2(highEnd, point) > 0.0) highEnd = point;
+    if (cross2(lowEnd, point) < 0.0) lowEnd = point;
+  }
+}
+
 // Classifies the loaded record; sets low and high for IN_FRONT.
 int classifyRecord(out float low, out float high) {
   low = -1.0;
   high = 1.0;
   if (pixelInsideRecord()) return HOLDS_PIXEL;
-  // The silhouette: the extreme directions, ordered by cross products (the record spans < 180°).
   vec2 lowEnd = vec2(xs.x, ys.x), highEnd = lowEnd;
-  for (int k = 1; k < 4; k++) {
-    vec2 point = vec2(xs[k], ys[k]);
-    if (cross2(highEnd, point) > 0.0) highEnd = point;
-    if (cross2(lowEnd, point) < 0.0) lowEnd = point;
-  }
+  widenSilhouette(lowEnd, highEnd);
   // From inside the disk, segments to the disk stay in it: only a record reaching into it hides.
   if (insideDisk) {
     if (!recordMeetsDisk()) return HIDES_NOTHING;
