@@ -130,15 +130,21 @@ function foldsBack(coords: ArrayLike<number>, n: number): boolean {
  * inserts the edges that start there into the edges the sweep line crosses, ordered from below
  * to above. Points are distinct (checked before), so the edges meeting at a point are exactly
  * its two edges. Returns at the first crossing found: until then the order is well defined.
+ *
+ * Where one edge ends and the other starts (most points of most outlines), the new edge takes the
+ * old one's place without a search: no edge lies between them at the point unless it passes
+ * through the point, and then it is their neighbour and the crossing test finds it.
  */
 function sweepFindsCrossing(coords: ArrayLike<number>, n: number, order: Int32Array): boolean {
   const sweep = new SweepLine(coords, n);
-  for (const point of order) {
-    const before = (point + n - 1) % n;
-    if (sweep.endsAt(before, point) && sweep.remove(before)) return true;
-    if (sweep.endsAt(point, point) && sweep.remove(point)) return true;
-    if (!sweep.endsAt(before, point) && sweep.insert(before)) return true;
-    if (!sweep.endsAt(point, point) && sweep.insert(point)) return true;
+  for (let k = 0; k < n; k++) {
+    const point = order[k], before = (point + n - 1) % n;
+    const beforeEnds = sweep.endsAt(before, point), afterEnds = sweep.endsAt(point, point);
+    if (beforeEnds !== afterEnds) {
+      if (beforeEnds ? sweep.replace(before, point) : sweep.replace(point, before)) return true;
+    } else if (beforeEnds) {
+      if (sweep.remove(before) || sweep.remove(point)) return true;
+    } else if (sweep.insert(before) || sweep.insert(point)) return true;
   }
   return false;
 }
@@ -210,6 +216,20 @@ class SweepLine {
       if (next >= 0) this.previous[l * (n + 1) + next] = previous;
     }
     return this.cross(this.previous[edge], this.next[edge]);
+  }
+
+  /** Puts `edge` in the place of `old`, which ends where `edge` starts; true when it touches a new neighbour. */
+  replace(old: number, edge: number): boolean {
+    const n = this.n;
+    this.nodeLevels[edge] = this.nodeLevels[old];
+    for (let l = 0; l < this.nodeLevels[old]; l++) {
+      const row = l * (n + 1), previous = this.previous[row + old], next = this.next[row + old];
+      this.previous[row + edge] = previous;
+      this.next[row + edge] = next;
+      this.next[row + previous] = edge;
+      if (next >= 0) this.previous[row + next] = edge;
+    }
+    return this.cross(this.previous[edge], edge) || this.cross(edge, this.next[edge]);
   }
 
   /**
@@ -285,36 +305,85 @@ export function isInsidePolygon(coords: ArrayLike<number>, point: ArrayLike<numb
  * Ear-clipping triangulation of a simple counter-clockwise polygon. Returns point indices,
  * three per triangle; the triangulation survives any affine transform of the points.
  *
- * It walks the outline clipping ears as it meets them, in O(n) ear tests for most outlines.
+ * Candidates for an ear are taken from a queue: first every point in outline order; after each
+ * clip, the two neighbours whose ears it changed move to the back. So each clip costs O(1) ear
+ * tests, and rounds around the outline clip every other point rather than fanning out from one
+ * (a fan's ever larger triangles would each overlap most of the grid). A clip can also free an
+ * ear elsewhere, by making a point inside it turn left: when the queue runs dry, every point is
+ * queued again; a round without a clip means the outline is not simple (or rounding hides ears).
+ *
  * When any point of the outline lies in a candidate ear, one that does not turn left does (the
  * classic lemma of ear clipping), and clipping only ever makes points turn left, never the other
- * way: so only the points that do not turn left at the start are bucketed, once, in a grid, and
- * an ear is tested against the cells it overlaps.
+ * way: so only the points that do not turn left at the start are bucketed, once, in a grid; an
+ * ear is tested against the cells it overlaps, and a point found turning left leaves its cell.
  */
 export function triangulate(coords: ArrayLike<number>): number[] {
   const n = coords.length >> 1;
   const outline = new Outline(coords, n);
-  const blockers = new PointGrid(coords, outline.pointsNotTurningLeft());
+  const blockers = new ReflexPoints(coords, outline);
+  const candidates = new PointQueue(n);
   const triangles: number[] = [];
-  let remaining = n;
-  let ear = 0, stop = 0;
+  let remaining = n, onOutline = 0, clippedThisRound = true;
   while (remaining > 3) {
+    let ear = candidates.shift();
+    if (ear < 0) {
+      if (!clippedThisRound) return triangles;
+      clippedThisRound = false;
+      candidates.pushRing(outline.next, onOutline);
+      ear = candidates.shift();
+    }
     const a = outline.previous[ear], c = outline.next[ear];
-    if (outline.turnsLeft(ear) && !blockers.anyInTriangle(a, ear, c, (p) => p !== a && p !== c && !outline.turnsLeft(p))) {
+    if (outline.turnsLeft(ear) && !blockers.anyInTriangle(a, ear, c)) {
       triangles.push(a, ear, c);
       outline.remove(ear);
       remaining--;
-      // Going on from the next point keeps the walk local: a run of points in a line, whose
-      // middles are no ears, is then crossed once, not once for each ear clipped beyond it.
-      ear = stop = c;
-      continue;
+      onOutline = c;
+      candidates.push(a);
+      candidates.push(c);
+      clippedThisRound = true;
     }
-    ear = outline.next[ear];
-    // A whole turn without an ear: the outline is not simple (or rounding hides its ears).
-    if (ear === stop) return triangles;
   }
-  if (remaining === 3) triangles.push(outline.previous[ear], ear, outline.next[ear]);
+  if (remaining === 3) triangles.push(outline.previous[onOutline], onOutline, outline.next[onOutline]);
   return triangles;
+}
+
+/**
+ * A first-in first-out queue of point indices where pushing a queued point moves it to the back.
+ * A round holds at most n points pushed by {@link PointQueue.pushRing} and two per clip after
+ * them, fewer than 3n; each round starts the buffer over.
+ */
+class PointQueue {
+  private readonly items: Int32Array;
+  /** Where each point was last pushed: an item elsewhere is a moved point's old place. */
+  private readonly slot: Int32Array;
+  private head = 0;
+  private tail = 0;
+
+  constructor(n: number) {
+    this.items = new Int32Array(3 * n);
+    this.slot = new Int32Array(n).fill(-1);
+  }
+
+  /** Starts a round with every point of the ring `next` from `first` on. */
+  pushRing(next: Int32Array, first: number): void {
+    this.head = this.tail = 0;
+    let point = first;
+    do this.push(point); while ((point = next[point]) !== first);
+  }
+
+  push(point: number): void {
+    this.slot[point] = this.tail;
+    this.items[this.tail++] = point;
+  }
+
+  /** The front point, removed; −1 when the queue is empty. */
+  shift(): number {
+    while (this.head < this.tail) {
+      const at = this.head++, point = this.items[at];
+      if (this.slot[point] === at) return point;
+    }
+    return -1;
+  }
 }
 
 /** The points of a polygon still to triangulate, as a doubly linked ring. */
@@ -338,6 +407,11 @@ class Outline {
     return !this.removed[i] && orientationOf(this.coords, this.previous[i], i, this.next[i]) > 0;
   }
 
+  /** Whether point `i` is still on the outline and does not turn left: only such points can lie in an ear. */
+  isReflex(i: number): boolean {
+    return !this.removed[i] && !this.turnsLeft(i);
+  }
+
   pointsNotTurningLeft(): number[] {
     const points: number[] = [];
     for (let i = 0; i < this.next.length; i++) if (!this.turnsLeft(i)) points.push(i);
@@ -352,23 +426,27 @@ class Outline {
 }
 
 /**
- * Points bucketed in a uniform grid over their bounds, about one a cell; the grid's cells keep
- * the aspect of the bounds so that thin polygons get thin cells.
+ * The outline's points that do not turn left at the start, bucketed in a uniform grid over their
+ * bounds, about one a cell; the grid's cells keep the aspect of the bounds so that thin polygons
+ * get thin cells. A cell holds its live points first: a point met turning left (or clipped) is
+ * swapped past its cell's end, for good, since it never turns back.
  */
-class PointGrid {
+class ReflexPoints {
   private readonly minX: number;
   private readonly minY: number;
   private readonly columns: number;
   private readonly rows: number;
   private readonly cellWidth: number;
   private readonly cellHeight: number;
-  /** Points of cell k: `points[start[k]]` to `points[start[k + 1] - 1]`. */
+  /** Live points of cell k: `points[start[k]]` to `points[end[k] - 1]`. */
   private readonly start: Int32Array;
+  private readonly end: Int32Array;
   private readonly points: Int32Array;
   /** Scratch `[min x, max x]` of {@link PointGrid.triangleSpanInRow}. */
   private readonly span = new Float64Array(2);
 
-  constructor(private readonly coords: ArrayLike<number>, indices: readonly number[]) {
+  constructor(private readonly coords: ArrayLike<number>, private readonly outline: Outline) {
+    const indices = outline.pointsNotTurningLeft();
     let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
     for (const i of indices) {
       minX = Math.min(minX, coords[2 * i]);
@@ -385,14 +463,15 @@ class PointGrid {
     this.cellWidth = width / this.columns || 1;
     this.cellHeight = height / this.rows || 1;
     [this.start, this.points] = this.bucket(indices);
+    this.end = this.start.slice(1);
   }
 
   /**
-   * Whether any bucketed point that `accept`s lies inside or on the triangle of points a, b, c
-   * (counter-clockwise).
+   * Whether any point of the outline but a and c that does not turn left lies inside or on the
+   * triangle of points a, b, c (counter-clockwise).
    */
-  anyInTriangle(a: number, b: number, c: number, accept: (point: number) => boolean): boolean {
-    const co = this.coords;
+  anyInTriangle(a: number, b: number, c: number): boolean {
+    const co = this.coords, points = this.points, end = this.end;
     const ax = co[2 * a], ay = co[2 * a + 1], bx = co[2 * b], by = co[2 * b + 1], cx = co[2 * c], cy = co[2 * c + 1];
     const row0 = this.row(Math.min(ay, by, cy)), row1 = this.row(Math.max(ay, by, cy));
     for (let row = row0; row <= row1; row++) {
@@ -400,10 +479,15 @@ class PointGrid {
       const span = this.triangleSpanInRow(ax, ay, bx, by, cx, cy, row);
       for (let column = this.column(span[0]), last = this.column(span[1]); column <= last; column++) {
         const cell = row * this.columns + column;
-        for (let k = this.start[cell]; k < this.start[cell + 1]; k++) {
-          const p = this.points[k], px = co[2 * p], py = co[2 * p + 1];
-          if (orientation(ax, ay, bx, by, px, py) >= 0 && orientation(bx, by, cx, cy, px, py) >= 0
-            && orientation(cx, cy, ax, ay, px, py) >= 0 && accept(p)) return true;
+        for (let k = this.start[cell]; k < end[cell]; k++) {
+          const p = points[k];
+          if (!this.outline.isReflex(p)) {
+            points[k--] = points[--end[cell]];
+            continue;
+          }
+          const px = co[2 * p], py = co[2 * p + 1];
+          if (p !== a && p !== c && orientation(ax, ay, bx, by, px, py) >= 0 && orientation(bx, by, cx, cy, px, py) >= 0
+            && orientation(cx, cy, ax, ay, px, py) >= 0) return true;
         }
       }
     }

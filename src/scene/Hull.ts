@@ -1,5 +1,5 @@
 import { isConvexPolygon, isSimplePolygon, signedArea2, simplifyPolygon, triangulate } from '../geometry/polygon';
-import { assertBoolean, assertFinite, assertOptions, describeValue, frozenPair, frozenVec2, type Vec2Like } from './validate';
+import { assertBoolean, assertFinite, assertOptions, describeValue, frozenPair, frozenVec2, frozenVec2List, type Vec2Like } from './validate';
 
 /** Options of a {@link Hull}; every field has the default shown. */
 export interface HullOptions {
@@ -78,10 +78,13 @@ export class Hull {
   }
   set points(points: ReadonlyArray<Vec2Like>) {
     if (!Array.isArray(points)) throw new TypeError(`Hull.points must be an array of [x, y] pairs, got ${describeValue(points)}`);
-    const copy = Array.from(points, (p, i) => frozenVec2(`Hull.points[${i}]`, p));
-    this._points = Object.freeze(copy);
+    const copy = frozenVec2List('Hull.points', points);
+    this._points = copy;
     const coords = new Float64Array(2 * copy.length);
-    copy.forEach((point, i) => coords.set(point, 2 * i));
+    for (let i = 0; i < copy.length; i++) {
+      coords[2 * i] = copy[i][0];
+      coords[2 * i + 1] = copy[i][1];
+    }
     const cleaned = simplifyPolygon(coords);
     this._shapeValid = isSimplePolygon(cleaned);
     if (this._shapeValid && signedArea2(cleaned) < 0) reversePoints(cleaned);

@@ -53,7 +53,19 @@ export function frozenVec2(name: string, value: Vec2Like): readonly [number, num
 
 /** Validates `x` and `y` as the components of the 2D vector `name` and returns them as a new frozen pair. */
 export function frozenPair(name: string, x: number, y: number): readonly [number, number] {
-  return Object.freeze([assertFinite(`${name}[0]`, x), assertFinite(`${name}[1]`, y)] as const);
+  // The labels are built only for a message: this runs for every point and every move.
+  if (!Number.isFinite(x)) assertFinite(`${name}[0]`, x);
+  if (!Number.isFinite(y)) assertFinite(`${name}[1]`, y);
+  return Object.freeze([x, y] as const);
+}
+
+/** {@link frozenVec2} for each vector of `list`, named `name[i]` in a message; the names are built only for one. */
+export function frozenVec2List(name: string, list: ArrayLike<Vec2Like>): ReadonlyArray<readonly [number, number]> {
+  return Object.freeze(Array.from(list, (value, i) => isFinitePair(value) ? Object.freeze([value[0], value[1]] as const) : frozenVec2(`${name}[${i}]`, value)));
+}
+
+function isFinitePair(value: Vec2Like): boolean {
+  return typeof value === 'object' && value !== null && value.length >= 2 && Number.isFinite(value[0]) && Number.isFinite(value[1]);
 }
 
 /** Validates an RGB colour (finite, non-negative channels) and returns it as a new frozen triple. */
