@@ -21,8 +21,9 @@ export interface PenumbraRendererOptions {
   debug?: boolean;
   /** World → clip transform. Default: pixel space of the drawing buffer, origin top-left, y down. */
   viewProjection?: ReadonlyMat4 | null;
-  /** Size of the internal targets. Default: the context's drawing buffer size. */
+  /** Width of the internal targets in pixels. Default: the context's drawing buffer width. */
   width?: number;
+  /** Height of the internal targets in pixels. Default: the context's drawing buffer height. */
   height?: number;
   /**
    * Resolution of the lightmap and shadow mask relative to `width × height`, in (0, 1]. Below 1
@@ -77,9 +78,13 @@ const TEXTURE_UNITS = 4;
  * the exact fraction of its disk the hulls leave visible) and writes scene × lightmap into the
  * framebuffer that was bound at `beginDraw`. What you draw afterwards (UI) is unlit.
  *
- * State contract: after every call the context state listed in {@link HostState} is as it was;
- * after `beginDraw()` only the framebuffer and viewport differ (they point at the internal scene
- * target).
+ * State contract: after every call the context state the renderer touches is as it was: draw and
+ * read framebuffers, viewport, scissor box, the enables (blend, cull, depth, stencil, scissor,
+ * polygon offset, sample coverage, rasterizer discard, dither), blend equations and factors, colour,
+ * depth and stencil write masks, depth function, cull and front face, program, vertex array, array
+ * and pixel-unpack buffers, renderbuffer, the unpack pixel-store parameters, the active texture
+ * unit, and the texture and sampler bound on every unit it uses. After `beginDraw()` only the
+ * framebuffer and viewport differ (they point at the internal scene target).
  *
  * Context loss: while `gl.isContextLost()` is true every call is a no-op, also in the window between
  * the loss and the `webglcontextlost` event. When the context is restored the renderer rebuilds its

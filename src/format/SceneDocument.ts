@@ -89,11 +89,13 @@ export interface SceneLightBase {
 
 /** A `PointLight`. */
 export interface ScenePointLight extends SceneLightBase {
+  /** Which light class this is. */
   kind: 'point';
 }
 
 /** A `Spotlight`. */
 export interface SceneSpotlight extends SceneLightBase {
+  /** Which light class this is. */
   kind: 'spot';
   /** Full cone angle in radians, 0..π. Optional, default `π / 2`. */
   coneAngle: number;
@@ -103,6 +105,7 @@ export interface SceneSpotlight extends SceneLightBase {
 
 /** A `TexturedLight`. Textures are not stored in the file: `cookie` names one the application provides. */
 export interface SceneTexturedLight extends SceneLightBase {
+  /** Which light class this is. */
   kind: 'textured';
   /** Name of the light cookie texture, resolved by the application. Required, non-empty. */
   cookie: string;

@@ -4,6 +4,10 @@
  * is `path: problem`.
  */
 export class SceneFormatError extends Error {
+  /**
+   * @param path - The bad field, e.g. `hulls[3].points[1]`, or `(root)`.
+   * @param problem - What is wrong with it, showing the value (cut to about 80 characters).
+   */
   constructor(readonly path: string, readonly problem: string) {
     super(`${path}: ${problem}`);
     this.name = 'SceneFormatError';

@@ -6,7 +6,9 @@ import { SceneFormatError } from './SceneFormatError';
 
 /** Lights and hulls built from a {@link SceneDocument}, ready for `renderer.addLight` / `addHull`. */
 export interface SceneObjects {
+  /** The hulls, in the file's order (lights' `ignoredHulls` refer to them by index there). */
   hulls: Hull[];
+  /** The lights, in the file's order. */
   lights: Light[];
 }
 
@@ -42,7 +44,9 @@ function createLight(light: SceneLight, index: number, hulls: readonly Hull[], r
 
 /** What {@link describeScene} needs besides the lights and hulls. */
 export interface SceneDescriptionInput extends SceneObjects {
+  /** The ambient colour to store, e.g. `renderer.ambientColor`. */
   ambient: readonly [number, number, number];
+  /** Where the view is, for the editor that opens the file. */
   camera: SceneCamera;
   /** The cookie name of a textured light's texture. */
   cookieName: (texture: WebGLTexture) => string;
