@@ -30,6 +30,19 @@ const UNPACK_DEFAULTS = Int32Array.of(4, 0, 0, 0, 0, 0, 0, 0);
  * colour, and clears with `clearBuffer*` rather than through the clear values. The three array
  * answers of `getParameter` (viewport, scissor box, colour mask) are fresh objects by the WebGL API;
  * no other allocation happens here.
+ *
+ * Contexts whose `getParameter` answers the WebGL2-only bindings with raw GL names instead of
+ * objects (headless-gl 9.0.0-rc.10 in Node, https://github.com/stackgl/headless-gl) are used as they
+ * are, never patched. There:
+ * - `VERTEX_ARRAY_BINDING` 0 (none bound) is saved as `null`: exact. A non-zero name cannot be turned
+ *   back into the object `bindVertexArray` needs, so the renderer leaves **no vertex array bound**
+ *   after each call and warns once (`console.warn`): such a host rebinds its own vertex array after
+ *   calling the renderer.
+ * - `SAMPLER_BINDING` 0 is saved as `null`; another name is put back as read (there `createSampler`
+ *   returns that same raw name, which `bindSampler` takes).
+ * - `PIXEL_UNPACK_BUFFER_BINDING` answers 0 (its `bindBuffer` rejects the target): nothing to restore.
+ * - `blendEquation` rejects MIN/MAX: the renderer uses neither, and puts back only what the host set.
+ * In browsers every answer is an object or `null`, and the restore is exact.
  */
 export class HostState {
   private readonly enabled = new Uint8Array(CAPABILITIES.length);
@@ -56,6 +69,7 @@ export class HostState {
   private activeTexture = 0;
   private readonly textures: (WebGLTexture | null)[];
   private readonly samplers: (WebGLSampler | null)[];
+  private warnedVertexArray = false;
 
   /** @param textureUnits how many texture units (from 0) the renderer binds. */
   constructor(private readonly gl: WebGL2RenderingContext, private readonly textureUnits: number) {
@@ -84,7 +98,9 @@ export class HostState {
     this.cullFaceMode = gl.getParameter(gl.CULL_FACE_MODE);
     this.frontFace = gl.getParameter(gl.FRONT_FACE);
     this.program = gl.getParameter(gl.CURRENT_PROGRAM);
-    this.vertexArray = gl.getParameter(gl.VERTEX_ARRAY_BINDING);
+    const vertexArray: unknown = gl.getParameter(gl.VERTEX_ARRAY_BINDING);
+    if (typeof vertexArray === 'object') this.vertexArray = vertexArray as WebGLVertexArrayObject | null;
+    else this.unrestorableVertexArray(vertexArray);
     this.arrayBuffer = gl.getParameter(gl.ARRAY_BUFFER_BINDING);
     // Touched only when the host has one bound (headless-gl rejects the target altogether).
     this.pixelUnpackBuffer = gl.getParameter(gl.PIXEL_UNPACK_BUFFER_BINDING) || null;
@@ -94,7 +110,8 @@ export class HostState {
     for (let unit = 0; unit < this.textureUnits; unit++) {
       gl.activeTexture(gl.TEXTURE0 + unit);
       this.textures[unit] = gl.getParameter(gl.TEXTURE_BINDING_2D);
-      this.samplers[unit] = gl.getParameter(gl.SAMPLER_BINDING);
+      // `|| null`: a raw-name host answers 0 for no sampler (see the class comment).
+      this.samplers[unit] = gl.getParameter(gl.SAMPLER_BINDING) || null;
     }
     gl.activeTexture(this.activeTexture);
   }
@@ -141,6 +158,17 @@ export class HostState {
       gl.bindSampler(unit, this.samplers[unit]);
     }
     gl.activeTexture(this.activeTexture);
+  }
+
+  /** A raw-name answer for the vertex array (see the class comment): saved as none, a warning once if one was bound. */
+  private unrestorableVertexArray(name: unknown): void {
+    this.vertexArray = null;
+    if (!name || this.warnedVertexArray) return;
+    this.warnedVertexArray = true;
+    console.warn(
+      'penumbra-gl: this WebGL2 context answers getParameter(VERTEX_ARRAY_BINDING) with a raw name (headless-gl), ' +
+      'so the renderer cannot restore your vertex array: it leaves none bound after each call; rebind yours after calling it.',
+    );
   }
 
   /** Sets each unpack parameter the host left away from the renderer's default to `values`' entry. */

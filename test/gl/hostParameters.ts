@@ -205,8 +205,9 @@ function setBuffers(gl: GL, objects: HostObjects, supported: (step: string, set:
 }
 
 /** A vertex array with attribute 1 enabled on a host buffer with a divisor, and generic attribute values. */
-function setVertexState(gl: GL, objects: HostObjects): void {
-  gl.bindVertexArray(objects.add('host vertex array', gl.createVertexArray()));
+function setVertexState(gl: GL, objects: HostObjects): WebGLVertexArrayObject {
+  const vertexArray = objects.add('host vertex array', gl.createVertexArray()!);
+  gl.bindVertexArray(vertexArray);
   const buffer = objects.add('host attribute buffer', gl.createBuffer());
   gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
   gl.bufferData(gl.ARRAY_BUFFER, 64, gl.STATIC_DRAW);
@@ -215,12 +216,15 @@ function setVertexState(gl: GL, objects: HostObjects): void {
   gl.vertexAttribDivisor(1, 2);
   gl.vertexAttrib4f(0, 0.5, 0.25, 0.125, 2);
   gl.vertexAttrib4f(2, 1, 2, 3, 4);
+  return vertexArray;
 }
 
 /** What {@link setHostState} managed to set: host objects by name, and the steps the implementation rejected. */
 export interface HostSetup {
   objects: HostObjects;
   unsupported: string[];
+  /** The host's vertex array (bound). */
+  vertexArray: WebGLVertexArrayObject;
 }
 
 /**
@@ -240,13 +244,13 @@ export function setHostState(gl: GL, width: number, height: number): HostSetup {
   supported('derivative hint', () => gl.hint(gl.FRAGMENT_SHADER_DERIVATIVE_HINT, gl.FASTEST));
   setPixelStore(gl);
   gl.useProgram(objects.add('host program', linkedProgram(gl)));
-  setVertexState(gl, objects);
+  const vertexArray = setVertexState(gl, objects);
   setBuffers(gl, objects, supported);
   supported('renderbuffer', () => gl.bindRenderbuffer(gl.RENDERBUFFER, objects.add('host renderbuffer', gl.createRenderbuffer())));
   setTextureUnits(gl, objects);
   const error = gl.getError();
   if (error !== gl.NO_ERROR) throw new Error(`setting the host state left GL error 0x${error.toString(16)}`);
-  return { objects, unsupported };
+  return { objects, unsupported, vertexArray };
 }
 
 /** What {@link checkHostStateAcrossPublicCalls} found. */
@@ -257,6 +261,8 @@ export interface HostStateReport {
   calls: string[];
   /** Steps of the host setup the implementation rejected. */
   unsupported: string[];
+  /** Whether the context answers VERTEX_ARRAY_BINDING with a raw name (the host rebinds its vertex array after each call). */
+  rawNames: boolean;
   /** `call: parameter: before → after` for each difference, and any GL error a call left. */
   failures: string[];
 }
@@ -271,15 +277,25 @@ export function checkHostStateAcrossPublicCalls(gl: GL, width: number, height: n
   gl.bindTexture(gl.TEXTURE_2D, cookie);
   gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array([255, 255, 255, 255]));
   gl.bindTexture(gl.TEXTURE_2D, null);
-  const { objects, unsupported } = setHostState(gl, width, height);
+  const { objects, unsupported, vertexArray } = setHostState(gl, width, height);
   objects.add('host cookie', cookie);
+  // headless-gl answers the binding with a raw name: the renderer cannot restore the host's vertex
+  // array there and promises to leave none bound (HostState), which the host then rebinds.
+  const hostVertexArrayName: unknown = gl.getParameter(gl.VERTEX_ARRAY_BINDING);
+  const rawNames = typeof hostVertexArrayName === 'number';
   const before = snapshot(gl, objects);
-  const report: HostStateReport = { compared: before.size, calls: [], unsupported, failures: [] };
+  const report: HostStateReport = { compared: before.size, calls: [], unsupported, rawNames, failures: [] };
   const check = (call: string, run: () => void, allowed: readonly string[] = []) => {
     run();
     report.calls.push(call);
     const error = gl.getError();
     if (error !== gl.NO_ERROR) report.failures.push(`${call}: GL error 0x${error.toString(16)}`);
+    if (rawNames) {
+      const left = gl.getParameter(gl.VERTEX_ARRAY_BINDING) as number;
+      // Calls that do not touch GL (addLight, removeHull…) leave the host's own bound.
+      if (left !== 0 && left !== hostVertexArrayName) report.failures.push(`${call}: vertex array ${left} left bound on a raw-name context (none or the host's promised)`);
+      gl.bindVertexArray(vertexArray);
+    }
     for (const difference of differences(before, snapshot(gl, objects), allowed)) report.failures.push(`${call}: ${difference}`);
   };
   let renderer!: PenumbraRenderer;

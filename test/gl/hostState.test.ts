@@ -46,7 +46,8 @@ function hostProgram(): WebGLProgram {
  * their names (so that a renderer object left bound shows as 'renderer object').
  */
 function snapshot(names: Map<unknown, string>): Record<string, unknown> {
-  const name = (object: unknown) => (object === null ? null : names.get(object) ?? 'renderer object');
+  // headless-gl answers VERTEX_ARRAY_BINDING with a raw name, 0 for none (test/gl/context.ts).
+  const name = (object: unknown) => (object === null || object === 0 ? null : names.get(object) ?? 'renderer object');
   const active = gl.getParameter(gl.ACTIVE_TEXTURE) as number;
   const textures: unknown[] = [];
   for (let unit = 0; unit < 4; unit++) {
@@ -100,6 +101,7 @@ function setDistinctiveState(withVertexArray: boolean): Map<unknown, string> {
     const vertexArray = gl.createVertexArray();
     names.set(vertexArray, 'host vertex array');
     gl.bindVertexArray(vertexArray);
+    names.set(gl.getParameter(gl.VERTEX_ARRAY_BINDING), 'host vertex array'); // its raw name on headless-gl
   }
   const arrayBuffer = gl.createBuffer();
   const elementBuffer = gl.createBuffer();
@@ -121,17 +123,55 @@ describe('host GL state', () => {
     const variant = withVertexArray ? 'with a host vertex array' : 'on the default vertex array';
     it(`is restored by beginDraw/draw and renderLightmap, ${variant}`, () => {
       const names = setDistinctiveState(withVertexArray);
+      const hostVertexArray = gl.getParameter(gl.VERTEX_ARRAY_BINDING);
       const before = snapshot(names);
       renderer.beginDraw();
       // Between the two calls the scene target is bound: the snapshot sees renderer objects.
       expect(snapshot(names).drawFramebuffer).toBe('renderer object');
       renderer.draw();
+      rebindOnRawNameContext();
       expect(snapshot(names)).toEqual(before);
       renderer.renderLightmap();
+      rebindOnRawNameContext();
       expect(snapshot(names)).toEqual(before);
       expect(gl.getError()).toBe(0);
+
+      /**
+       * Where the context answers the vertex-array binding with a raw name (headless-gl) and the
+       * host had one bound, HostState promises none bound after a call: checked, then the host
+       * rebinds its own (after which everything must be as before).
+       */
+      function rebindOnRawNameContext(): void {
+        if (typeof hostVertexArray !== 'number' || hostVertexArray === 0) return;
+        expect(gl.getParameter(gl.VERTEX_ARRAY_BINDING)).toBe(0);
+        const [vertexArray] = [...names].find(([object, name]) => name === 'host vertex array' && typeof object === 'object')!;
+        gl.bindVertexArray(vertexArray as WebGLVertexArrayObject);
+      }
     });
   }
+
+  it('on a context that answers VERTEX_ARRAY_BINDING with a raw name, warns once when it cannot restore the host\'s vertex array', () => {
+    expect(typeof gl.getParameter(gl.VERTEX_ARRAY_BINDING)).toBe('number'); // headless-gl, unpatched
+    const warnings: unknown[] = [];
+    const warn = console.warn;
+    console.warn = (...args: unknown[]) => { warnings.push(args.join(' ')); };
+    try {
+      renderer.renderLightmap(); // none bound: exact, no warning
+      expect(warnings).toEqual([]);
+      const vertexArray = gl.createVertexArray();
+      gl.bindVertexArray(vertexArray);
+      renderer.renderLightmap();
+      expect(gl.getParameter(gl.VERTEX_ARRAY_BINDING)).toBe(0);
+      gl.bindVertexArray(vertexArray);
+      renderer.renderLightmap();
+      expect(warnings).toHaveLength(1);
+      expect(String(warnings[0])).toMatch(/VERTEX_ARRAY_BINDING.*rebind yours/);
+      gl.bindVertexArray(null);
+      gl.deleteVertexArray(vertexArray);
+    } finally {
+      console.warn = warn;
+    }
+  });
 });
 
 describe('composite', () => {
