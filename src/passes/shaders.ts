@@ -38,14 +38,18 @@ function lightStage(source: string): LightStages {
   };
 }
 
-/** The GLSL sources, inlined at build time, with their chunks resolved. */
+/**
+ * The GLSL sources, inlined at build time, with their chunks resolved. The calls are marked pure so
+ * that a bundle which never constructs a renderer (only the scene format or the model classes)
+ * drops this object and every shader string with it.
+ */
 export const shaderSources = {
   compositeFragment,
   debugFragment,
-  debugRecordsVertex: withDefines(debugRecordsVertex, SHADOW_DEFINES),
+  debugRecordsVertex: /* @__PURE__ */ withDefines(debugRecordsVertex, SHADOW_DEFINES),
   fullscreenVertex,
   lightVertex,
-  lightPointFragment: lightStage(lightPointFragment),
-  lightSpotFragment: lightStage(lightSpotFragment),
-  lightTexturedFragment: lightStage(lightTexturedFragment),
+  lightPointFragment: /* @__PURE__ */ lightStage(lightPointFragment),
+  lightSpotFragment: /* @__PURE__ */ lightStage(lightSpotFragment),
+  lightTexturedFragment: /* @__PURE__ */ lightStage(lightTexturedFragment),
 };
