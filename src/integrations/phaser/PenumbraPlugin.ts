@@ -1,14 +1,24 @@
 import Phaser from 'phaser';
 import { mat4 } from 'gl-matrix';
-import { PenumbraRenderer, type Hull, type Light } from '../../index';
+import { PenumbraRenderer, type Hull, type Light, type PenumbraRendererOptions } from '../../index';
 import { setViewProjection, type Affine2D } from '../viewProjection';
 
 /** Depth of the lighting layer unless changed: objects above it (the HUD) stay unlit. */
 export const DEFAULT_LAYER_DEPTH = 1000;
 
 /**
+ * Options of a {@link PenumbraPlugin}: the core renderer's options, less the size and the view,
+ * which follow Phaser's camera and drawing context every frame.
+ */
+export type PenumbraPluginOptions = Omit<PenumbraRendererOptions, 'viewProjection' | 'width' | 'height'>;
+
+/**
  * A Phaser 4 scene plugin: `this.penumbra.addLight(…)` inside a scene. Install it in the game
  * config with `plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra' }] }`.
+ * Renderer options ({@link PenumbraPluginOptions}: `ambientColor`, `lightmapScale`, `measureCpuTime`, …)
+ * go in that entry's `data`, for every scene: `{ key: 'PenumbraPlugin', plugin: PenumbraPlugin,
+ * mapping: 'penumbra', data: { lightmapScale: 0.5 } }`; one scene can change them with
+ * {@link PenumbraPlugin.configure}.
  *
  * It adds a lighting layer to the scene's display list, at depth {@link DEFAULT_LAYER_DEPTH}:
  * everything the camera drew below that depth is multiplied by the lightmap, what is drawn
@@ -19,6 +29,7 @@ export const DEFAULT_LAYER_DEPTH = 1000;
  */
 export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   private renderer: PenumbraRenderer | null = null;
+  private options: PenumbraPluginOptions = {};
   private extern: Phaser.GameObjects.Extern | null = null;
   private readonly viewProjection = mat4.create();
   private readonly camera: Affine2D = { a: 1, b: 0, c: 0, d: 1, tx: 0, ty: 0 };
@@ -35,6 +46,32 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   get layer(): Phaser.GameObjects.Extern {
     if (!this.extern) throw new Error('penumbra: the lighting layer exists only while the scene runs');
     return this.extern;
+  }
+
+  /**
+   * Rebuilds the renderer with `options` over the current ones (those of the plugin entry's `data`
+   * and earlier calls), keeping its lights and hulls: for options fixed at construction, such as
+   * `lightmapScale`. Call it in the scene's `init` or `create`; {@link PenumbraPlugin.penumbra} is a
+   * new renderer afterwards. Options the renderer can change in place (`ambientColor`, `debug`,
+   * `measureCpuTime`, `onContextRestored`) can also be set on {@link PenumbraPlugin.penumbra}.
+   */
+  configure(options: PenumbraPluginOptions): this {
+    const old = this.penumbra;
+    const merged: PenumbraPluginOptions = {
+      ...this.options,
+      ambientColor: old.ambientColor,
+      debug: old.debug,
+      measureCpuTime: old.measureCpuTime,
+      onContextRestored: old.onContextRestored,
+      ...options,
+    };
+    const renderer = this.createRenderer(merged);
+    for (const light of old.lights) renderer.addLight(light);
+    for (const hull of old.hulls) renderer.addHull(hull);
+    old.dispose();
+    this.renderer = renderer;
+    this.options = merged;
+    return this;
   }
 
   /** Adds a light in world units; see {@link PenumbraRenderer.addLight}. */
@@ -56,12 +93,8 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
 
   /** Called by Phaser once, when the scene boots. @internal */
   override boot(): void {
-    const renderer = this.game!.renderer as Partial<Phaser.Renderer.WebGL.WebGLRenderer>;
-    if (!renderer.gl) throw new TypeError('penumbra: PenumbraPlugin needs Phaser\'s WebGL renderer (type: Phaser.WEBGL)');
-    // Phaser 4 types its context as WebGL1; PenumbraRenderer checks for WebGL2 itself.
-    this.renderer = new PenumbraRenderer(renderer.gl as WebGL2RenderingContext);
-    this.targetWidth = renderer.gl.drawingBufferWidth;
-    this.targetHeight = renderer.gl.drawingBufferHeight;
+    this.options = this.entryData();
+    this.renderer = this.createRenderer(this.options);
     const events = this.systems!.events;
     events.on(Phaser.Scenes.Events.START, this.onStart, this);
     events.on(Phaser.Scenes.Events.SHUTDOWN, this.onShutdown, this);
@@ -79,6 +112,34 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     this.renderer?.dispose();
     this.renderer = null;
     super.destroy();
+  }
+
+  private createRenderer(options: PenumbraPluginOptions): PenumbraRenderer {
+    const renderer = this.game!.renderer as Partial<Phaser.Renderer.WebGL.WebGLRenderer>;
+    if (!renderer.gl) throw new TypeError('penumbra: PenumbraPlugin needs Phaser\'s WebGL renderer (type: Phaser.WEBGL)');
+    const gl = renderer.gl as WebGL2RenderingContext;
+    // Phaser 4 types its context as WebGL1; PenumbraRenderer checks for WebGL2 itself.
+    const penumbra = new PenumbraRenderer(gl, {
+      ...options,
+      viewProjection: null,
+      width: gl.drawingBufferWidth,
+      height: gl.drawingBufferHeight,
+    });
+    this.targetWidth = gl.drawingBufferWidth;
+    this.targetHeight = gl.drawingBufferHeight;
+    return penumbra;
+  }
+
+  /** The `data` of this plugin's entry in the game config's `plugins.scene` (Phaser passes it to global plugins only). */
+  private entryData(): PenumbraPluginOptions {
+    const entries = (this.game!.config.installScenePlugins ?? []) as Phaser.Types.Core.PluginObjectItem[];
+    const own = entries.filter((entry) => entry.plugin === this.constructor);
+    const entry = own.find((e) => e.mapping === this.pluginKey) ?? own[0];
+    const data: unknown = entry?.data ?? {};
+    if (typeof data !== 'object' || data === null) {
+      throw new TypeError(`penumbra: the PenumbraPlugin entry's data must be an object of renderer options, got ${typeof data}`);
+    }
+    return data as PenumbraPluginOptions;
   }
 
   private onStart(): void {

@@ -2,5 +2,5 @@
  * Phaser 4 integration of penumbra-gl: `import { PenumbraPlugin } from 'penumbra-gl/phaser'`.
  * Re-exports the core API so that one import is enough.
  */
-export { PenumbraPlugin, DEFAULT_LAYER_DEPTH } from './PenumbraPlugin';
+export { PenumbraPlugin, DEFAULT_LAYER_DEPTH, type PenumbraPluginOptions } from './PenumbraPlugin';
 export * from '../../index';

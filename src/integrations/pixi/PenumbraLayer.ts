@@ -45,10 +45,12 @@ export class PenumbraLayer extends RenderContainer {
     super({ label: 'PenumbraLayer' });
     const gl = (renderer as Partial<WebGLRenderer>).gl;
     if (!gl) throw new TypeError('penumbra: PenumbraLayer needs Pixi\'s WebGL renderer (Application.init({ preference: \'webgl\' }))');
-    this.camera = options.camera ?? null;
+    const { camera = null, ...rendererOptions } = options;
+    this.camera = camera;
+    // Every renderer option goes through; the size and the view follow Pixi's target each frame.
     this.penumbra = new PenumbraRenderer(gl, {
-      ambientColor: options.ambientColor,
-      debug: options.debug,
+      ...rendererOptions,
+      viewProjection: null,
       width: gl.drawingBufferWidth,
       height: gl.drawingBufferHeight,
     });

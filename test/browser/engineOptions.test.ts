@@ -1,0 +1,103 @@
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import type { Browser, Page } from 'puppeteer';
+import { build } from 'vite';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import type { PenumbraPluginOptions } from '../../src/integrations/phaser/PenumbraPlugin';
+import { collectPageErrors, launchChromium } from './chromium';
+import { CANVAS, type PhaserRoute, type RendererReport } from './engine-options-page/contract';
+import { serveDirectory, type StaticServer } from './staticServer';
+
+// Renderer options given to the real PixiJS and Phaser integrations reach the renderer: the
+// lightmap texture's size on the GL context (lightmapScale), stats.cpuTime (measureCpuTime) and
+// the rest read back from the renderer each engine built.
+
+let outDir: string;
+let server: StaticServer;
+let browser: Browser;
+let page: Page;
+let errors: string[];
+
+const OPTIONS: PenumbraPluginOptions = { lightmapScale: 0.5, measureCpuTime: true, ambientColor: [0.25, 0.5, 0.75], debug: true };
+const HALF: [number, number] = [CANVAS[0] / 2, CANVAS[1] / 2];
+
+beforeAll(async () => {
+  outDir = mkdtempSync(join(tmpdir(), 'penumbra-engine-options-'));
+  await build({
+    configFile: false,
+    root: resolve(import.meta.dirname, 'engine-options-page'),
+    base: './',
+    logLevel: 'warn',
+    build: { outDir, emptyOutDir: true, chunkSizeWarningLimit: 4000 },
+  });
+  server = await serveDirectory(outDir);
+  browser = await launchChromium();
+  page = await browser.newPage();
+  errors = collectPageErrors(page);
+  await page.goto(server.url, { waitUntil: 'load' });
+  await page.waitForFunction(() => window.engineOptions !== undefined);
+});
+
+afterAll(async () => {
+  await browser?.close();
+  await server?.close();
+  if (outDir) rmSync(outDir, { recursive: true, force: true });
+});
+
+function pixi(options: PenumbraPluginOptions): Promise<RendererReport> {
+  return page.evaluate((o) => window.engineOptions!.pixi(o), options);
+}
+function phaser(route: PhaserRoute, options: PenumbraPluginOptions): Promise<RendererReport> {
+  return page.evaluate((r, o) => window.engineOptions!.phaser(r, o), route, options);
+}
+
+/** What every route must show for {@link OPTIONS}. */
+function expectOptionsTaken(report: RendererReport): void {
+  expect(report.lightmapSize).toEqual(HALF);
+  expect(report.measureCpuTime).toBe(true);
+  // performance.now() is coarse (0.1 ms without cross-origin isolation): some frames may read 0.
+  expect(Math.max(...report.cpuTimes)).toBeGreaterThan(0);
+  expect(report.ambientColor).toEqual([0.25, 0.5, 0.75]);
+  expect(report.debug).toBe(true);
+  expect(report.restoredHandlerKept).toBe(true);
+  expectSceneDrawn(report);
+}
+
+/** The page's 3 lights and 4 hulls are in the renderer that drew the last frame, the lights drawn. */
+function expectSceneDrawn(report: RendererReport): void {
+  expect([report.lights, report.lightsDrawn, report.hulls]).toEqual([3, 3, 4]);
+}
+
+describe('engine options', () => {
+  it('PenumbraLayer (PixiJS) gives the renderer its defaults: a lightmap the size of the canvas, no CPU timing', async () => {
+    const report = await pixi({});
+    expect(report.lightmapSize).toEqual([...CANVAS]);
+    expect(report.measureCpuTime).toBe(false);
+    expect(report.cpuTimes.every((t) => t === 0)).toBe(true);
+    expectSceneDrawn(report);
+  });
+
+  it('PenumbraLayer (PixiJS) forwards lightmapScale, measureCpuTime, ambientColor, debug and onContextRestored', async () => {
+    expectOptionsTaken(await pixi(OPTIONS));
+  });
+
+  it('PenumbraPlugin (Phaser) gives the renderer its defaults without data', async () => {
+    const report = await phaser('data', {});
+    expect(report.lightmapSize).toEqual([...CANVAS]);
+    expect(report.measureCpuTime).toBe(false);
+    expectSceneDrawn(report);
+  });
+
+  it('PenumbraPlugin (Phaser) takes the renderer options from its plugin entry\'s data', async () => {
+    expectOptionsTaken(await phaser('data', OPTIONS));
+  });
+
+  it('PenumbraPlugin (Phaser) takes them from configure() in the scene\'s create, keeping the lights and hulls added before', async () => {
+    expectOptionsTaken(await phaser('configure', OPTIONS));
+  });
+
+  it('logs no console errors', () => {
+    expect(errors).toEqual([]);
+  });
+});
