@@ -1,7 +1,10 @@
 import { resolve } from 'node:path';
 import { defineConfig } from 'vite';
 
-// Library build: ESM only, the core and one entry per engine integration, shaders inlined through `?raw` imports, gl-matrix left to the user's bundler.
+// Library build: the core and one entry per engine integration, as ES modules (.js) and CommonJS
+// (.cjs, for require() and Jest), shaders inlined through `?raw` imports, gl-matrix left to the
+// user's bundler. Source maps embed their sources (sourcesContent), so they need nothing outside dist/.
+// The declarations come from `tsc -p tsconfig.build.json` and scripts/fix-declarations.mjs.
 export default defineConfig({
   build: {
     outDir: 'dist',
@@ -13,7 +16,8 @@ export default defineConfig({
         pixi: resolve(import.meta.dirname, 'src/integrations/pixi/index.ts'),
         phaser: resolve(import.meta.dirname, 'src/integrations/phaser/index.ts'),
       },
-      formats: ['es'],
+      formats: ['es', 'cjs'],
+      fileName: (format, entryName) => `${entryName}.${format === 'es' ? 'js' : 'cjs'}`,
     },
     // The engines are peer dependencies: the integrations import them, the bundle never holds them.
     rollupOptions: { external: [/^gl-matrix/, /^pixi\.js/, /^phaser$/] },
