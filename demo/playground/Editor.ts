@@ -1,4 +1,4 @@
-import { Hull } from 'penumbra-gl';
+import { Hull, type Light } from 'penumbra-gl';
 import { hullContains } from './hullShape';
 import { LIGHT_HANDLE_RADIUS } from './Overlay';
 import type { Playground, Selectable } from './Playground';
@@ -21,7 +21,8 @@ type Drag =
  * Pointer and keyboard editing on the overlay canvas: click to select, drag lights and hulls
  * (mouse, pen or touch), drag empty space or press W/A/S/D or arrows to pan, wheel or pinch to
  * zoom, and in hull mode click points to draw a hull (click its first point, double-click or press
- * Enter to close; Escape cancels). Delete or Backspace removes the selection.
+ * Enter to close; Escape cancels). While picking a light's ignored hulls, a click on a hull adds it
+ * to them or takes it out (Escape ends). Delete or Backspace removes the selection.
  */
 export class Editor extends EventTarget {
   /** World points of the hull being drawn. */
@@ -29,6 +30,7 @@ export class Editor extends EventTarget {
   /** Whether the hull being drawn would be valid (the renderer's own check). */
   draftValid = false;
   private _drawing = false;
+  private _pickingIgnoredOf: Light | null = null;
   private readonly pointers = new Map<number, { x: number; y: number }>();
   private drag: Drag | null = null;
   private pinchDistance = 0;
@@ -46,6 +48,10 @@ export class Editor extends EventTarget {
     window.addEventListener('keydown', this.onKeyDown);
     window.addEventListener('keyup', (event) => this.keys.delete(event.code));
     window.addEventListener('blur', () => this.keys.clear());
+    // Picking belongs to the selected light: selecting anything else ends it.
+    playground.addEventListener('selection', () => {
+      if (this._pickingIgnoredOf && playground.selection !== this._pickingIgnoredOf) this.pickingIgnoredOf = null;
+    });
   }
 
   /** Whether clicks add points to a new hull instead of selecting. Fires `mode` on change. */
@@ -53,10 +59,24 @@ export class Editor extends EventTarget {
     return this._drawing;
   }
   set drawing(value: boolean) {
+    if (value) this._pickingIgnoredOf = null;
     this._drawing = value;
     this.draft.length = 0;
     this.draftValid = false;
     if (value) this.playground.selection = null;
+    this.dispatchEvent(new Event('mode'));
+  }
+
+  /**
+   * The light whose ignored hulls clicks on hulls toggle, or null. Fires `mode` on change; drawing
+   * a hull and picking exclude each other.
+   */
+  get pickingIgnoredOf(): Light | null {
+    return this._pickingIgnoredOf;
+  }
+  set pickingIgnoredOf(light: Light | null) {
+    if (light && this._drawing) this.drawing = false;
+    this._pickingIgnoredOf = light;
     this.dispatchEvent(new Event('mode'));
   }
 
@@ -105,6 +125,10 @@ export class Editor extends EventTarget {
       return;
     }
     const target = this.pick(event.offsetX, event.offsetY);
+    if (this._pickingIgnoredOf && target instanceof Hull) {
+      this.toggleIgnored(this._pickingIgnoredOf, target);
+      return;
+    }
     this.playground.selection = target;
     if (!target) {
       this.drag = { kind: 'pan' };
@@ -160,11 +184,17 @@ export class Editor extends EventTarget {
       this.finishHull();
     } else if (event.key === 'Escape') {
       if (this._drawing) this.drawing = false;
+      else if (this._pickingIgnoredOf) this.pickingIgnoredOf = null;
       else this.playground.selection = null;
     } else if (event.key === 'Delete' || event.key === 'Backspace') {
       this.playground.deleteSelection();
     }
   };
+
+  private toggleIgnored(light: Light, hull: Hull): void {
+    if (!light.ignoredHulls.delete(hull)) light.ignoredHulls.add(hull);
+    this.playground.changed();
+  }
 
   private addDraftPoint(x: number, y: number): void {
     const camera = this.playground.camera;

@@ -2,6 +2,8 @@ import { Hull, Spotlight, type Light } from 'penumbra-gl';
 import { hullWorldPoint } from './hullShape';
 import type { Playground } from './Playground';
 
+/** Outline of a hull the selected light passes through. */
+const IGNORED_HULL_COLOR = '#ff9a3d';
 /** Above this many hulls only the selected one is outlined, so the stress scene stays fast. */
 const MAX_OUTLINED_HULLS = 400;
 /** Radius in CSS pixels of a light's handle (also its pick radius). */
@@ -9,8 +11,8 @@ export const LIGHT_HANDLE_RADIUS = 9;
 
 /**
  * The editing gizmos, drawn unlit on a 2D canvas over the WebGL canvas: light handles, hull
- * outlines (invalid hulls dashed red, as the renderer ignores them), the selection, and the hull
- * being drawn.
+ * outlines (invalid hulls dashed red, as the renderer ignores them), the selection, the hulls the
+ * selected light ignores (orange), and the hull being drawn.
  */
 export class Overlay {
   private readonly g: CanvasRenderingContext2D;
@@ -34,6 +36,7 @@ export class Overlay {
       this.outlineHull(hull, hull.valid ? 'rgba(255, 255, 255, 0.25)' : '#ff4d4d');
     }
     if (selected instanceof Hull) this.outlineHull(selected, selected.valid ? '#ffd34d' : '#ff4d4d');
+    else if (selected) for (const hull of selected.ignoredHulls) this.outlineHull(hull, IGNORED_HULL_COLOR);
     if (lights.length <= MAX_OUTLINED_HULLS) for (const light of lights) this.drawLight(light, light === selected);
     else if (selected && !(selected instanceof Hull)) this.drawLight(selected, true);
     if (draft.length > 0) this.drawDraft(draft, draftValid);

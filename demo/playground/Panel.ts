@@ -1,4 +1,4 @@
-import GUI from 'lil-gui';
+import GUI, { type Controller } from 'lil-gui';
 import { Hull, ShadowType, Spotlight, TexturedLight, type Light } from 'penumbra-gl';
 import type { Editor } from './Editor';
 import type { Playground } from './Playground';
@@ -13,6 +13,8 @@ export interface PanelActions {
 }
 
 const DEGREES = 180 / Math.PI;
+/** Below this page width (CSS pixels) the panel opens collapsed: it would cover most of the scene. */
+const NARROW_SCREEN = 720;
 
 /** `[r, g, b]` in 0..1 ↔ `#rrggbb` for lil-gui's colour picker (channels above 1 show as 1). */
 function toHex(color: readonly number[]): string {
@@ -20,6 +22,14 @@ function toHex(color: readonly number[]): string {
 }
 function fromHex(hex: string): [number, number, number] {
   return [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16) / 255) as [number, number, number];
+}
+
+/**
+ * A number field with its value shown to `decimals` places. No min or max: lil-gui would clamp a
+ * typed value silently, while the model refuses one out of range with a message naming it.
+ */
+function number(folder: GUI, model: Record<string, unknown>, key: string, decimals: number): void {
+  folder.add(model, key).decimals(decimals).listen();
 }
 
 /** Adds a property to `model` whose reads and writes go through `get` and `set`. */
@@ -34,9 +44,11 @@ function bind<T>(model: Record<string, unknown>, key: string, get: () => T, set:
 export class Panel {
   readonly gui = new GUI({ title: 'penumbra-gl playground' });
   private selectionFolder: GUI | null = null;
+  /** The selected light's "pick ignored hulls" button; null while no light is selected. */
+  private pickButton: Controller | null = null;
   private readonly settings = { preset: Object.keys(PRESETS)[0] };
 
-  constructor(private readonly playground: Playground, editor: Editor, private readonly actions: PanelActions) {
+  constructor(private readonly playground: Playground, private readonly editor: Editor, private readonly actions: PanelActions) {
     const scene = this.gui.addFolder('Scene');
     scene.add(this.settings, 'preset', Object.keys(PRESETS)).name('preset').onChange((name: string) => actions.selectPreset(name));
     const sceneModel: Record<string, unknown> = {};
@@ -62,14 +74,32 @@ export class Panel {
     edit.add(buttons, 'spot').name('add spotlight');
     edit.add(buttons, 'textured').name('add textured light');
     const drawHull = edit.add(buttons, 'hull').name('draw hull (click points)');
-    editor.addEventListener('mode', () => drawHull.name(editor.drawing ? 'cancel hull (Enter closes)' : 'draw hull (click points)'));
+    editor.addEventListener('mode', () => {
+      drawHull.name(editor.drawing ? 'cancel hull (Enter closes)' : 'draw hull (click points)');
+      this.labelPickButton();
+    });
     edit.add(buttons, 'remove').name('delete selected (Del)');
 
     playground.addEventListener('selection', () => this.showSelection());
     this.showSelection();
+    if (window.innerWidth < NARROW_SCREEN) this.gui.close();
+    this.gui.onOpenClose(() => this.measureCovered());
+    window.addEventListener('resize', () => this.measureCovered());
+    this.measureCovered();
   }
 
-  /** Shows a preset's name in the menu without loading it again. */
+  /**
+   * Tells the camera how much of the page's right the panel covers, so that the view centres in
+   * the rest: all of its width when open, nothing when collapsed to its title (click the title to
+   * collapse or open it; it opens collapsed on narrow screens). Measured when the panel opens or
+   * closes and when the window resizes, not every frame.
+   */
+  private measureCovered(): void {
+    // `_closed` is what lil-gui's own onOpenClose example reads: the class changes after the callback.
+    this.playground.camera.insetRight = this.gui._closed ? 0 : window.innerWidth - this.gui.domElement.getBoundingClientRect().left;
+  }
+
+  /** Shows a preset's name in the menu without loading it again; any other text (a file's name) shows as it is. */
   showPreset(name: string): void {
     this.settings.preset = name;
     this.gui.controllersRecursive().forEach((controller) => controller.updateDisplay());
@@ -79,6 +109,7 @@ export class Panel {
     this.selectionFolder?.destroy();
     const selected = this.playground.selection;
     this.selectionFolder = null;
+    this.pickButton = null;
     if (!selected) return;
     const folder = this.gui.addFolder(selected instanceof Hull ? 'Selected hull' : `Selected ${selected.kind} light`);
     this.selectionFolder = folder;
@@ -112,25 +143,24 @@ export class Panel {
     this.field(m, 'originX', () => light.origin[0], (v: number) => { light.origin = [v, light.origin[1]]; });
     this.field(m, 'originY', () => light.origin[1], (v: number) => { light.origin = [light.origin[0], v]; });
     this.field(m, 'shadowType', () => light.shadowType, (v: ShadowType) => { light.shadowType = v; });
-    this.field(m, 'ignoredHulls', () => this.hullIndices(light), (v: string) => this.setIgnoredHulls(light, v));
     folder.add(m, 'enabled').listen();
     folder.add(m, 'castsShadows').listen();
-    folder.add(m, 'x').listen();
-    folder.add(m, 'y').listen();
-    folder.add(m, 'range', 0, 2000).listen();
-    folder.add(m, 'radius', 0, 100).listen();
+    number(folder, m, 'x', 1);
+    number(folder, m, 'y', 1);
+    number(folder, m, 'range', 1);
+    number(folder, m, 'radius', 1);
     folder.addColor(m, 'color').listen();
-    folder.add(m, 'intensity', 0, 4).listen();
-    folder.add(m, 'rotation°', -360, 360).listen();
-    folder.add(m, 'originX', -1, 2).listen();
-    folder.add(m, 'originY', -1, 2).listen();
+    number(folder, m, 'intensity', 2);
+    number(folder, m, 'rotation°', 1);
+    number(folder, m, 'originX', 2);
+    number(folder, m, 'originY', 2);
     folder.add(m, 'shadowType', [ShadowType.Illuminated, ShadowType.Solid]).listen();
-    folder.add(m, 'ignoredHulls').name('ignored hulls (indices)').listen();
+    this.ignoredHullsControls(folder, light);
     if (light instanceof Spotlight) {
       this.field(m, 'coneAngle°', () => light.coneAngle * DEGREES, (v: number) => { light.coneAngle = v / DEGREES; });
       this.field(m, 'coneDecay', () => light.coneDecay, (v: number) => { light.coneDecay = v; });
-      folder.add(m, 'coneAngle°', 0, 180).listen();
-      folder.add(m, 'coneDecay', 0, 8).listen();
+      number(folder, m, 'coneAngle°', 1);
+      number(folder, m, 'coneDecay', 2);
     }
     if (light instanceof TexturedLight) {
       const cookies = this.playground.cookies;
@@ -138,9 +168,25 @@ export class Panel {
       this.field(m, 'width', () => light.size[0], (v: number) => { light.size = [v, light.size[1]]; });
       this.field(m, 'height', () => light.size[1], (v: number) => { light.size = [light.size[0], v]; });
       folder.add(m, 'cookie', [...cookies.names]).listen();
-      folder.add(m, 'width', 0, 2000).listen();
-      folder.add(m, 'height', 0, 2000).listen();
+      number(folder, m, 'width', 1);
+      number(folder, m, 'height', 1);
     }
+  }
+
+  /**
+   * How many hulls the light passes through, and a button that turns on picking them: clicks on
+   * hulls then add or remove them (outlined orange while the light is selected).
+   */
+  private ignoredHullsControls(folder: GUI, light: Light): void {
+    const m: Record<string, unknown> = { pick: () => { this.editor.pickingIgnoredOf = this.editor.pickingIgnoredOf ? null : light; } };
+    bind(m, 'ignored', () => `${light.ignoredHulls.size} hull${light.ignoredHulls.size === 1 ? '' : 's'}`, () => undefined);
+    folder.add(m, 'ignored').name('ignored hulls').disable().listen();
+    this.pickButton = folder.add(m, 'pick');
+    this.labelPickButton();
+  }
+
+  private labelPickButton(): void {
+    this.pickButton?.name(this.editor.pickingIgnoredOf ? 'done picking (Esc)' : 'pick ignored hulls (click hulls)');
   }
 
   private hullControls(folder: GUI, hull: Hull): void {
@@ -156,31 +202,14 @@ export class Panel {
     this.field(m, 'points', () => JSON.stringify(hull.points), (v: string) => { hull.points = JSON.parse(v); });
     bind(m, 'valid', () => (hull.valid ? 'valid' : 'INVALID (ignored by the renderer)'), () => undefined);
     folder.add(m, 'enabled').listen();
-    folder.add(m, 'x').listen();
-    folder.add(m, 'y').listen();
-    folder.add(m, 'originX').listen();
-    folder.add(m, 'originY').listen();
-    folder.add(m, 'rotation°', -360, 360).listen();
-    folder.add(m, 'scaleX', -4, 4).listen();
-    folder.add(m, 'scaleY', -4, 4).listen();
+    number(folder, m, 'x', 1);
+    number(folder, m, 'y', 1);
+    number(folder, m, 'originX', 1);
+    number(folder, m, 'originY', 1);
+    number(folder, m, 'rotation°', 1);
+    number(folder, m, 'scaleX', 2);
+    number(folder, m, 'scaleY', 2);
     folder.add(m, 'points').name('points (JSON)').listen();
     folder.add(m, 'valid').disable().listen();
-  }
-
-  /** A light's ignored hulls as indices into the renderer's hull list, e.g. `"0, 3"`. */
-  private hullIndices(light: Light): string {
-    const hulls = this.playground.renderer.hulls;
-    return [...light.ignoredHulls].map((hull) => hulls.indexOf(hull)).filter((i) => i >= 0).join(', ');
-  }
-
-  private setIgnoredHulls(light: Light, text: string): void {
-    const hulls = this.playground.renderer.hulls;
-    const chosen = text.split(',').map((s) => s.trim()).filter(Boolean).map((s) => {
-      const hull = hulls[Number(s)];
-      if (!Number.isInteger(Number(s)) || !hull) throw new RangeError(`ignored hulls: "${s}" is not a hull index (0 to ${hulls.length - 1})`);
-      return hull;
-    });
-    light.ignoredHulls.clear();
-    for (const hull of chosen) light.ignoredHulls.add(hull);
   }
 }

@@ -11,6 +11,10 @@ export type Selectable = Light | Hull;
 /** Kinds of light the page can add. */
 export type NewLightKind = 'point' | 'spot' | 'textured';
 
+/** How far apart (CSS pixels) a new light is put from the others: a few handle radii. */
+const NEW_LIGHT_SPACING = 48;
+/** The angle between successive points of a sunflower spiral, which spreads them evenly. */
+const GOLDEN_ANGLE = Math.PI * (3 - Math.sqrt(5));
 /** Spotlights sweep this far (radians) either side when animation is on. */
 const SWEEP = 0.5;
 
@@ -87,9 +91,9 @@ export class Playground extends EventTarget {
     });
   }
 
-  /** Adds a light of `kind` at the centre of the view and selects it. */
+  /** Adds a light of `kind` near the centre of the view, clear of the other lights' handles, and selects it. */
   addLight(kind: NewLightKind): Light {
-    const options = { position: [...this.camera.center] as [number, number], range: 300, radius: 10, color: [1, 0.9, 0.7] as [number, number, number] };
+    const options = { position: this.freeSpotNearCentre(), range: 300, radius: 10, color: [1, 0.9, 0.7] as [number, number, number] };
     const light = kind === 'point' ? new PointLight(options)
       : kind === 'spot' ? new Spotlight({ ...options, coneAngle: 0.8 })
         : new TexturedLight({ ...options, texture: this.cookies.resolve('flame')!, size: [500, 500] });
@@ -97,6 +101,22 @@ export class Playground extends EventTarget {
     this.selection = light;
     this.changed();
     return light;
+  }
+
+  /**
+   * The centre of the view, or failing that the first point of a sunflower spiral around it that
+   * is {@link NEW_LIGHT_SPACING} CSS pixels from every light: lights added one after another do
+   * not hide each other's handles.
+   */
+  private freeSpotNearCentre(): [number, number] {
+    const [cx, cy] = this.camera.center;
+    const spacing = NEW_LIGHT_SPACING / this.camera.zoom;
+    const lights = this.renderer.lights;
+    for (let k = 0; ; k++) {
+      const radius = spacing * Math.sqrt(k), angle = k * GOLDEN_ANGLE;
+      const x = cx + radius * Math.cos(angle), y = cy + radius * Math.sin(angle);
+      if (lights.every(({ position: [lx, ly] }) => Math.hypot(lx - x, ly - y) >= spacing)) return [x, y];
+    }
   }
 
   /** Adds a hull through world points (placed at their centroid, so it rotates about its middle) and selects it. */

@@ -28,11 +28,15 @@ function showError(text: string): void {
 }
 message.addEventListener('click', () => { message.hidden = true; });
 
-/** Loads a scene file's text; on a bad file shows the error (naming the bad field) and keeps the scene. */
-function loadText(text: string, source: string): boolean {
+/**
+ * Loads a scene file's text; on a bad file shows the error (naming the bad field) and keeps the
+ * scene. The preset menu then shows `label` (the file's name) instead of the preset it replaced.
+ */
+function loadText(text: string, source: string, label = source): boolean {
   try {
     playground.load(text);
     message.hidden = true;
+    panel.showPreset(label);
     return true;
   } catch (error) {
     showError(`Could not load ${source}: ${(error as Error).message}`);
@@ -50,10 +54,10 @@ function selectPreset(name: string): void {
 const panel = new Panel(playground, editor, {
   selectPreset,
   save: () => downloadText(writeScene(playground.document()), 'scene.penumbra.json'),
-  load: () => pickTextFile((text, name) => loadText(text, name)),
+  load: () => pickTextFile((text, name) => loadText(text, name, `file: ${name}`)),
   showError,
 });
-acceptDroppedFiles(document.body, (text, name) => loadText(text, name));
+acceptDroppedFiles(document.body, (text, name) => loadText(text, name, `file: ${name}`));
 
 // Keep the scene across reloads: edits mark it dirty, a timer writes it, leaving the page flushes it.
 let unsaved = false;
@@ -67,7 +71,7 @@ setInterval(keepScene, STORE_INTERVAL_MS);
 window.addEventListener('pagehide', keepScene);
 
 const stored = storedScene();
-if (!stored || !loadText(stored, 'the scene kept from the last visit')) selectPreset(Object.keys(PRESETS)[0]);
+if (!stored || !loadText(stored, 'the scene kept from the last visit', 'your last scene')) selectPreset(Object.keys(PRESETS)[0]);
 
 /** Matches both canvases' drawing buffers to their CSS size × devicePixelRatio. */
 function fitCanvases(): number {

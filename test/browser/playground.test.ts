@@ -7,14 +7,17 @@ import type { SceneDocument } from '../../src/index';
 import { collectPageErrors, launchChromium } from './chromium';
 import { serveDirectory, type StaticServer } from './staticServer';
 
-// The page is 800 × 400 CSS pixels and the test scenes put the camera so that world units equal
-// CSS pixels (centre [400, 200], zoom 1). Everything happens left of x = 520: the panel is on the right.
+// The page is 800 × 400 CSS pixels; the panel covers about 260 on the right and the camera centres
+// the test scenes in the rest (centre [300, 200], zoom 1: world x from about 30 to 570 shows).
+// Pixels are read and the pointer moved at world points, through the page's worldToScreen.
 const WIDTH = 800, HEIGHT = 400;
+/** The page is ready after its first frames, which SwiftShader compiles and draws slowly on a busy machine. */
+const PAGE_READY_MS = 100_000;
 
 /** One light at `light` (no source radius, so the umbra is exact) and one 40 × 120 box at (220, 200). */
 function testScene(light: [number, number], range = 300): SceneDocument {
   return {
-    format: 'penumbra-scene', version: 1, ambient: [0.02, 0.02, 0.02], camera: { center: [400, 200], zoom: 1 },
+    format: 'penumbra-scene', version: 1, ambient: [0.02, 0.02, 0.02], camera: { center: [300, 200], zoom: 1 },
     hulls: [{ points: [[-20, -60], [20, -60], [20, 60], [-20, 60]], position: [220, 200], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: true }],
     lights: [{
       kind: 'point', position: light, range, radius: 0, color: [1, 1, 1], intensity: 1, rotation: 0, origin: [0.5, 0.5],
@@ -31,7 +34,18 @@ describe('playground page in Chromium', () => {
   let page: Page;
   let errors: string[];
 
-  const readPixel = (x: number, y: number) => page.evaluate((px, py) => window.playground.readPixel(px, py), x, y);
+  /** The canvas colour at a world point. */
+  const readPixel = (x: number, y: number) => page.evaluate((wx, wy) => window.playground.readPixel(...window.playground.worldToScreen(wx, wy)), x, y);
+  const toScreen = (x: number, y: number) => page.evaluate((wx, wy) => window.playground.worldToScreen(wx, wy), x, y);
+  const sceneDocument = async () => JSON.parse(await page.evaluate(() => window.playground.sceneText())) as SceneDocument;
+  /** Clicks the panel button whose label starts with `label`. */
+  const clickButton = (label: string) => page.evaluate((text) => [...document.querySelectorAll('.lil-gui button')]
+    .find((b) => b.textContent?.startsWith(text))!.dispatchEvent(new MouseEvent('click', { bubbles: true })), label);
+  /** What the panel shows for the field named `name`: its input's text, or the option menu's. */
+  const fieldText = (name: string) => page.evaluate((label) => {
+    const row = [...document.querySelectorAll('.lil-gui .lil-controller')].find((c) => c.querySelector('.lil-name')?.textContent === label)!;
+    return row.querySelector('input')?.value ?? row.querySelector('.lil-display')?.textContent ?? null;
+  }, name);
   const load = (scene: SceneDocument | string) =>
     page.evaluate((text) => window.playground.loadScene(text), typeof scene === 'string' ? scene : JSON.stringify(scene));
 
@@ -42,7 +56,7 @@ describe('playground page in Chromium', () => {
     await page.setViewport({ width: WIDTH, height: HEIGHT });
     errors = collectPageErrors(page);
     await page.goto(server.url);
-    await page.waitForFunction(() => window.playground !== undefined);
+    await page.waitForFunction(() => window.playground !== undefined, { timeout: PAGE_READY_MS });
     await page.evaluate(() => window.playground.setAnimation(false));
   });
 
@@ -77,15 +91,16 @@ describe('playground page in Chromium', () => {
     const oldSpot = await readPixel(100, 230), newSpot = await readPixel(420, 90);
     expect(brightness(oldSpot)).toBeGreaterThan(brightness(newSpot) + 100);
 
-    const [x, y] = await page.evaluate(() => window.playground.worldToScreen(100, 200));
-    await page.mouse.move(x, y);
+    await page.mouse.move(...await toScreen(100, 200));
     await page.mouse.down();
-    await page.mouse.move(260, 140, { steps: 5 });
-    await page.mouse.move(420, 60, { steps: 5 });
+    await page.mouse.move(...await toScreen(260, 140), { steps: 5 });
+    await page.mouse.move(...await toScreen(420, 60), { steps: 5 });
     await page.mouse.up();
 
-    const scene = JSON.parse(await page.evaluate(() => window.playground.sceneText())) as SceneDocument;
-    expect(scene.lights[0].position).toEqual([420, 60]);
+    const [x, y] = (await sceneDocument()).lights[0].position;
+    // Pointer events land on whole CSS pixels.
+    expect(Math.abs(x - 420)).toBeLessThanOrEqual(1);
+    expect(Math.abs(y - 60)).toBeLessThanOrEqual(1);
     const oldAfter = await readPixel(100, 230), newAfter = await readPixel(420, 90);
     expect(brightness(newAfter)).toBeGreaterThan(brightness(oldAfter) + 100);
   });
@@ -113,14 +128,77 @@ describe('playground page in Chromium', () => {
     writeFileSync(file, saved);
     expect(await load(testScene([100, 200]))).toBe(true);
 
-    const [chooser] = await Promise.all([
-      page.waitForFileChooser(),
-      page.evaluate(() => [...document.querySelectorAll('.lil-gui button')].find((b) => b.textContent?.startsWith('load scene'))!
-        .dispatchEvent(new MouseEvent('click', { bubbles: true }))),
-    ]);
+    const [chooser] = await Promise.all([page.waitForFileChooser(), clickButton('load scene')]);
     await chooser.accept([file]);
     await page.waitForFunction((text) => window.playground.sceneText() === text, { timeout: 10_000 }, saved);
     expect(await page.evaluate(() => window.playground.errorMessage())).toBeNull();
+    // The menu no longer names the preset the file replaced.
+    expect(await fieldText('preset')).toBe('file: scene.penumbra.json');
+  });
+
+  it('adds new lights in view, clear of each other', async () => {
+    expect(await load(testScene([100, 200]))).toBe(true);
+    for (let i = 0; i < 4; i++) await clickButton('add point light');
+    const added = (await sceneDocument()).lights.slice(1).map((light) => light.position);
+    expect(added).toHaveLength(4);
+    const panelLeft = await page.$eval('.lil-gui.lil-root', (element) => element.getBoundingClientRect().left);
+    for (const [i, [x, y]] of added.entries()) {
+      const [sx, sy] = await toScreen(x, y);
+      expect(sx).toBeGreaterThan(0);
+      expect(sx).toBeLessThan(panelLeft);
+      expect(sy).toBeGreaterThan(0);
+      expect(sy).toBeLessThan(HEIGHT);
+      for (const [ox, oy] of added.slice(0, i)) expect(Math.hypot(ox - x, oy - y)).toBeGreaterThanOrEqual(40);
+    }
+  });
+
+  it('picks a light\'s ignored hulls by clicking them, and the light then passes through', async () => {
+    expect(await load(testScene([100, 200]))).toBe(true);
+    expect(brightness(await readPixel(300, 200))).toBeLessThan(30);
+    await page.mouse.click(...await toScreen(100, 200));
+    expect(await fieldText('ignored hulls')).toBe('0 hulls');
+    await clickButton('pick ignored hulls');
+    await page.mouse.click(...await toScreen(220, 200));
+    expect((await sceneDocument()).lights[0].ignoredHulls).toEqual([0]);
+    expect(await fieldText('ignored hulls')).toBe('1 hull');
+    expect(brightness(await readPixel(300, 200))).toBeGreaterThan(150);
+    // A second click takes it out again; Escape ends picking, after which a click selects the hull.
+    await page.mouse.click(...await toScreen(220, 200));
+    expect((await sceneDocument()).lights[0].ignoredHulls).toEqual([]);
+    await page.keyboard.press('Escape');
+    await page.mouse.click(...await toScreen(220, 200));
+    expect(await page.$$eval('.lil-gui .lil-title', (titles) => titles.map((t) => t.textContent))).toContain('Selected hull');
+  });
+
+  it('shows numbers rounded and refuses an out-of-range entry with a message instead of clamping it', async () => {
+    const scene = testScene([100.123456, 200]);
+    scene.lights[0].radius = 10;
+    expect(await load(scene)).toBe(true);
+    await page.mouse.click(...await toScreen(100.123456, 200));
+    expect(await fieldText('x')).toBe('100.1');
+    const radius = await page.evaluateHandle(() => [...document.querySelectorAll('.lil-gui .lil-controller')]
+      .find((c) => c.querySelector('.lil-name')?.textContent === 'radius')!.querySelector('input')!);
+    await radius.click({ count: 3 });
+    await radius.type('-5');
+    await page.keyboard.press('Enter');
+    expect(await page.evaluate(() => window.playground.errorMessage())).toMatch(/radius must not be negative, got -5/);
+    expect((await sceneDocument()).lights[0].radius).toBe(10);
+    await radius.click({ count: 3 });
+    await radius.type('250');
+    await page.keyboard.press('Enter');
+    // Above the old slider's end (100) is a valid radius, kept as typed.
+    expect((await sceneDocument()).lights[0].radius).toBe(250);
+  });
+
+  it('centres the view beside the open panel, and in the whole page once the panel is collapsed', async () => {
+    expect(await load(testScene([100, 200]))).toBe(true);
+    const panel = await page.$eval('.lil-gui.lil-root', (element) => { const r = element.getBoundingClientRect(); return { left: r.left, bottom: r.bottom }; });
+    expect(panel.bottom).toBeLessThanOrEqual(HEIGHT);
+    expect((await toScreen(300, 200))[0]).toBeCloseTo(panel.left / 2, -1);
+    await page.click('.lil-gui .lil-title');
+    expect((await toScreen(300, 200))[0]).toBeCloseTo(WIDTH / 2, 5);
+    await page.click('.lil-gui .lil-title');
+    expect((await toScreen(300, 200))[0]).toBeCloseTo(panel.left / 2, -1);
   });
 
   it('switches presets and keeps the scene across a reload', async () => {
@@ -135,7 +213,7 @@ describe('playground page in Chromium', () => {
 
     const before = await page.evaluate(() => window.playground.sceneText());
     await page.reload();
-    await page.waitForFunction(() => window.playground !== undefined);
+    await page.waitForFunction(() => window.playground !== undefined, { timeout: PAGE_READY_MS });
     expect(await page.evaluate(() => window.playground.sceneText())).toBe(before);
     expect(errors).toEqual([]);
   });
