@@ -6,8 +6,6 @@ export type Rect = readonly [number, number, number, number];
 
 export const WORLD_WIDTH = 960;
 export const WORLD_HEIGHT = 640;
-export const VIEW_WIDTH = 480;
-export const VIEW_HEIGHT = 320;
 /** Camera zoom: world units are drawn this many pixels wide. */
 export const ZOOM = 1.25;
 export const PLAYER_RADIUS = 10;
@@ -65,10 +63,13 @@ function hitsWall([x, y]: readonly [number, number]): boolean {
   return false;
 }
 
-/** Camera scroll (top-left of the view in world units) that centres the view on the player. */
-export function cameraScroll(player: readonly [number, number], out: [number, number]): [number, number] {
-  out[0] = player[0] - VIEW_WIDTH / 2 / ZOOM;
-  out[1] = player[1] - VIEW_HEIGHT / 2 / ZOOM;
+/**
+ * Camera scroll (top-left of the view in world units) that centres a view of `width` × `height`
+ * CSS pixels (the examples fill the window) on the player.
+ */
+export function cameraScroll(player: readonly [number, number], width: number, height: number, out: [number, number]): [number, number] {
+  out[0] = player[0] - width / 2 / ZOOM;
+  out[1] = player[1] - height / 2 / ZOOM;
   return out;
 }
 
@@ -82,6 +83,8 @@ export interface ExampleHook {
   frames(count: number): Promise<void>;
   /** Removes the lighting plugin; returns whether it left no GL error behind. */
   removeLighting(): boolean;
+  /** The canvas: its CSS size, and its drawing buffer's size (the engine resizes both with the window). */
+  canvasSize(): { css: [number, number]; buffer: [number, number] };
 }
 
 declare global {
@@ -99,6 +102,12 @@ export function readPixels(gl: WebGL2RenderingContext, points: readonly (readonl
     gl.readPixels(Math.floor(x * scale), gl.drawingBufferHeight - 1 - Math.floor(y * scale), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
     return [pixel[0], pixel[1], pixel[2], pixel[3]];
   });
+}
+
+/** See {@link ExampleHook.canvasSize}. */
+export function canvasSize(gl: WebGL2RenderingContext): { css: [number, number]; buffer: [number, number] } {
+  const canvas = gl.canvas as HTMLCanvasElement;
+  return { css: [canvas.clientWidth, canvas.clientHeight], buffer: [gl.drawingBufferWidth, gl.drawingBufferHeight] };
 }
 
 /** Resolves after `count` animation frames. */

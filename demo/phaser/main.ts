@@ -3,8 +3,8 @@
 import Phaser from 'phaser';
 import { DEFAULT_LAYER_DEPTH, Hull, PenumbraPlugin, PointLight, Spotlight } from 'penumbra-gl/phaser';
 import {
-  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, VIEW_HEIGHT, VIEW_WIDTH, WALLS,
-  WORLD_HEIGHT, WORLD_WIDTH, ZOOM, cameraScroll, moveWithCollisions, readPixels, waitFrames,
+  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, WALLS, WORLD_HEIGHT, WORLD_WIDTH, ZOOM,
+  cameraScroll, canvasSize, moveWithCollisions, readPixels, waitFrames,
 } from '../examples/level';
 
 class LevelScene extends Phaser.Scene {
@@ -54,7 +54,7 @@ class LevelScene extends Phaser.Scene {
     const { position, direction, scroll } = this;
     this.keys.direction(direction);
     moveWithCollisions(position, direction[0] * PLAYER_SPEED * seconds, direction[1] * PLAYER_SPEED * seconds);
-    cameraScroll(position, scroll);
+    cameraScroll(position, this.scale.width, this.scale.height, scroll);
     this.cameras.main.setScroll(scroll[0], scroll[1]);
     const pointer = this.input.activePointer;
     const aim = Math.atan2(pointer.y / ZOOM + scroll[1] - position[1], pointer.x / ZOOM + scroll[0] - position[0]);
@@ -79,6 +79,7 @@ class LevelScene extends Phaser.Scene {
         return readPixels(gl, points);
       },
       frames: waitFrames,
+      canvasSize: () => canvasSize(gl),
       removeLighting: () => {
         this.plugins.removeScenePlugin('PenumbraPlugin');
         this.penumbra.destroy();
@@ -96,8 +97,9 @@ new Phaser.Game({
   type: Phaser.WEBGL,
   canvas,
   context: context as unknown as CanvasRenderingContext2D,
-  width: VIEW_WIDTH,
-  height: VIEW_HEIGHT,
+  // RESIZE: the canvas fills its parent (the page, made 100% high) and follows the window; the main
+  // camera takes the new size, and the lighting layer resizes with the drawing context.
+  scale: { mode: Phaser.Scale.RESIZE, width: window.innerWidth, height: window.innerHeight },
   backgroundColor: '#000000',
   scene: LevelScene,
   plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra' }] },

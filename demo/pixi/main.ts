@@ -3,12 +3,13 @@
 import { Application, Container, Graphics, Text, type WebGLRenderer } from 'pixi.js';
 import { PenumbraLayer, PointLight, Spotlight, hullFromBounds } from 'penumbra-gl/pixi';
 import {
-  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, VIEW_HEIGHT, VIEW_WIDTH, WALLS,
-  WORLD_HEIGHT, WORLD_WIDTH, ZOOM, cameraScroll, moveWithCollisions, readPixels, waitFrames,
+  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, WALLS, WORLD_HEIGHT, WORLD_WIDTH, ZOOM,
+  cameraScroll, canvasSize, moveWithCollisions, readPixels, waitFrames,
 } from '../examples/level';
 
 const app = new Application<WebGLRenderer>();
-await app.init({ width: VIEW_WIDTH, height: VIEW_HEIGHT, preference: 'webgl', background: '#000000', antialias: false });
+// resizeTo: the canvas fills the window and follows it; the lighting resizes with Pixi's render target.
+await app.init({ resizeTo: window, preference: 'webgl', background: '#000000', antialias: false });
 document.body.appendChild(app.canvas);
 
 // The world container is the camera: its position and scale pan and zoom everything in it.
@@ -31,7 +32,7 @@ hud.addChild(new Text({ text: 'WASD / arrows to move, mouse to aim', x: 44, y: 1
 app.stage.addChild(world, lighting, hud);
 
 const position: [number, number] = [PLAYER_START[0], PLAYER_START[1]];
-const mouse: [number, number] = [VIEW_WIDTH, VIEW_HEIGHT / 2];
+const mouse: [number, number] = [app.screen.width, app.screen.height / 2];
 app.canvas.addEventListener('pointermove', (event) => {
   mouse[0] = event.offsetX;
   mouse[1] = event.offsetY;
@@ -43,7 +44,7 @@ const scroll: [number, number] = [0, 0];
 function update(seconds: number): void {
   keys.direction(direction);
   moveWithCollisions(position, direction[0] * PLAYER_SPEED * seconds, direction[1] * PLAYER_SPEED * seconds);
-  cameraScroll(position, scroll);
+  cameraScroll(position, app.screen.width, app.screen.height, scroll);
   world.position.set(-scroll[0] * ZOOM, -scroll[1] * ZOOM);
   const aim = Math.atan2(mouse[1] / ZOOM + scroll[1] - position[1], mouse[0] / ZOOM + scroll[0] - position[0]);
   player.position.set(position[0], position[1]);
@@ -76,6 +77,7 @@ window.penumbraExample = {
     return readPixels(app.renderer.gl, points);
   },
   frames: waitFrames,
+  canvasSize: () => canvasSize(app.renderer.gl),
   removeLighting() {
     lighting.destroy();
     const gl = app.renderer.gl;

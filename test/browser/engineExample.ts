@@ -7,6 +7,8 @@ export type Pixel = [number, number, number, number];
 /** Opens a built engine example and waits for its test hook and a few rendered frames. */
 export async function openExample(browser: Browser, url: string): Promise<{ page: Page; errors: string[] }> {
   const page = await browser.newPage();
+  // The examples fill the window: a small one keeps SwiftShader's frames short.
+  await page.setViewport({ width: 600, height: 400 });
   const errors = collectPageErrors(page);
   await page.goto(url);
   await page.waitForFunction(() => window.penumbraExample !== undefined, { timeout: 60_000 });
