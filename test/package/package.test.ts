@@ -195,7 +195,7 @@ gl.getExtension('STACKGL_destroy_context').destroy();
     }
     writeFileSync(join(app, 'readme-node.mts'), snippet);
     // Type-checked as Node code, then run through Node's own type stripping where it has it, else compiled.
-    writeFileSync(join(app, 'tsconfig.node-snippet.json'), `${JSON.stringify({ compilerOptions: { target: 'ES2022', module: 'NodeNext', moduleResolution: 'NodeNext', strict: true, noUnusedLocals: true, noUnusedParameters: true, skipLibCheck: true, outDir: 'node-snippet', types: [] }, include: ['readme-node.mts'] }, null, 2)}\n`);
+    writeFileSync(join(app, 'tsconfig.node-snippet.json'), `${JSON.stringify({ compilerOptions: { target: 'ES2022', module: 'NodeNext', moduleResolution: 'NodeNext', strict: true, noUnusedLocals: true, noUnusedParameters: true, skipLibCheck: true, outDir: 'node-snippet', types: ['node'] }, include: ['readme-node.mts'] }, null, 2)}\n`);
     const compiled = run(process.execPath, [join(app, 'node_modules/typescript/bin/tsc'), '-p', 'tsconfig.node-snippet.json', '--pretty', 'false'], app);
     expect(compiled.status, compiled.output).toBe(0);
     const result = run(process.execPath, [join('node-snippet', 'readme-node.mjs')], app);

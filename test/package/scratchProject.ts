@@ -60,7 +60,7 @@ export function pack(): Packed {
 }
 
 /** Packages the snippets need besides penumbra-gl, linked from this repository (peer dependencies and tools). */
-const LINKED = ['pixi.js', 'phaser', 'vite', 'typescript', 'gl'];
+const LINKED = ['pixi.js', 'phaser', 'vite', 'typescript', 'gl', '@types/node'];
 
 /**
  * A Vite vanilla-ts project (the template's package.json, tsconfig and index.html, one page per
@@ -73,6 +73,7 @@ export function createApp(root: string, tarball: string): { app: string; install
   writeFileSync(join(app, 'package.json'), `${JSON.stringify({ name: 'lit-app', private: true, version: '0.0.0', type: 'module' }, null, 2)}\n`);
   const install = run('npm', ['install', tarball, '--prefer-offline', '--no-audit', '--no-fund', '--no-package-lock'], app, 300_000);
   if (install.status !== 0) throw new Error(`npm install of the tarball failed:\n${install.output}`);
+  mkdirSync(join(app, 'node_modules', '@types'), { recursive: true });
   for (const name of LINKED) {
     symlinkSync(join(REPO, 'node_modules', name), join(app, 'node_modules', name), 'dir');
   }
