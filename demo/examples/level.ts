@@ -6,7 +6,7 @@ export type Rect = readonly [number, number, number, number];
 
 export const WORLD_WIDTH = 960;
 export const WORLD_HEIGHT = 640;
-/** Camera zoom: world units are drawn this many pixels wide. */
+/** Camera zoom (world units are drawn this many pixels wide), more in a window larger than the level. */
 export const ZOOM = 1.25;
 export const PLAYER_RADIUS = 10;
 export const PLAYER_SPEED = 160;
@@ -63,13 +63,24 @@ function hitsWall([x, y]: readonly [number, number]): boolean {
   return false;
 }
 
+/** The camera: zoom, and scroll (top-left of the view, in world units). */
+export interface View {
+  zoom: number;
+  scroll: [number, number];
+}
+
 /**
- * Camera scroll (top-left of the view in world units) that centres a view of `width` × `height`
- * CSS pixels (the examples fill the window) on the player.
+ * The camera for a canvas of `width` × `height` CSS pixels (the examples fill the window): at least
+ * {@link ZOOM}, more where the window is larger than the level so that the level still fills it;
+ * centred on the player, but never past the level's edges.
  */
-export function cameraScroll(player: readonly [number, number], width: number, height: number, out: [number, number]): [number, number] {
-  out[0] = player[0] - width / 2 / ZOOM;
-  out[1] = player[1] - height / 2 / ZOOM;
+export function followPlayer(player: readonly [number, number], width: number, height: number, out: View): View {
+  const zoom = Math.max(ZOOM, width / WORLD_WIDTH, height / WORLD_HEIGHT);
+  const viewWidth = width / zoom;
+  const viewHeight = height / zoom;
+  out.zoom = zoom;
+  out.scroll[0] = Math.min(Math.max(player[0] - viewWidth / 2, 0), WORLD_WIDTH - viewWidth);
+  out.scroll[1] = Math.min(Math.max(player[1] - viewHeight / 2, 0), WORLD_HEIGHT - viewHeight);
   return out;
 }
 

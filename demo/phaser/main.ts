@@ -3,17 +3,18 @@
 import Phaser from 'phaser';
 import { DEFAULT_LAYER_DEPTH, Hull, PenumbraPlugin, PointLight, Spotlight } from 'penumbra-gl/phaser';
 import {
-  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, WALLS, WORLD_HEIGHT, WORLD_WIDTH, ZOOM,
-  cameraScroll, canvasSize, moveWithCollisions, readPixels, waitFrames,
+  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, WALLS, WORLD_HEIGHT, WORLD_WIDTH,
+  canvasSize, followPlayer, moveWithCollisions, readPixels, waitFrames,
 } from '../examples/level';
 
 class LevelScene extends Phaser.Scene {
   declare penumbra: PenumbraPlugin;
   private readonly position: [number, number] = [PLAYER_START[0], PLAYER_START[1]];
   private readonly direction: [number, number] = [0, 0];
-  private readonly scroll: [number, number] = [0, 0];
+  private readonly view = { zoom: 1, scroll: [0, 0] as [number, number] };
   private readonly keys = new Keys(window);
   private player!: Phaser.GameObjects.Graphics;
+  private hud!: Phaser.GameObjects.Container;
   private flashlight!: Spotlight;
 
   create(): void {
@@ -35,14 +36,13 @@ class LevelScene extends Phaser.Scene {
     }
     this.player = this.add.graphics().fillStyle(0xe8d8b0).fillCircle(0, 0, PLAYER_RADIUS).fillStyle(0x444444).fillRect(4, -3, 12, 6);
     this.flashlight = this.penumbra.addLight(new Spotlight({ range: 320, radius: 3, coneAngle: Math.PI / 3.5, coneDecay: 0.6, intensity: 1.3, color: [1, 0.95, 0.8] }));
-    this.penumbra.penumbra.ambientColor = [0.08, 0.08, 0.12];
-    this.cameras.main.setZoom(ZOOM).setOrigin(0, 0);
+    this.cameras.main.setOrigin(0, 0);
 
     // Above the lighting layer: unlit.
     const hud = this.add.container(0, 0).setScrollFactor(0).setDepth(DEFAULT_LAYER_DEPTH + 1);
     hud.add(this.add.graphics().fillStyle(HUD_COLOR).fillRect(8, 8, 28, 28));
     hud.add(this.add.text(44, 12, 'WASD / arrows to move, mouse to aim', { color: '#ffffff', fontSize: '14px' }));
-    hud.setScale(1 / ZOOM);
+    this.hud = hud;
     this.exposeTestHook();
   }
 
@@ -51,13 +51,15 @@ class LevelScene extends Phaser.Scene {
   }
 
   private step(seconds: number): void {
-    const { position, direction, scroll } = this;
+    const { position, direction } = this;
     this.keys.direction(direction);
     moveWithCollisions(position, direction[0] * PLAYER_SPEED * seconds, direction[1] * PLAYER_SPEED * seconds);
-    cameraScroll(position, this.scale.width, this.scale.height, scroll);
-    this.cameras.main.setScroll(scroll[0], scroll[1]);
+    const { zoom, scroll } = followPlayer(position, this.scale.width, this.scale.height, this.view);
+    this.cameras.main.setZoom(zoom).setScroll(scroll[0], scroll[1]);
+    // The camera zooms about its origin (0, 0), the HUD too: scaled back, it keeps its size and place.
+    this.hud.setScale(1 / zoom);
     const pointer = this.input.activePointer;
-    const aim = Math.atan2(pointer.y / ZOOM + scroll[1] - position[1], pointer.x / ZOOM + scroll[0] - position[0]);
+    const aim = Math.atan2(pointer.y / zoom + scroll[1] - position[1], pointer.x / zoom + scroll[0] - position[0]);
     this.player.setPosition(position[0], position[1]).setRotation(aim);
     this.flashlight.setPosition(position[0], position[1]);
     this.flashlight.rotation = aim;
@@ -102,5 +104,6 @@ new Phaser.Game({
   scale: { mode: Phaser.Scale.RESIZE, width: window.innerWidth, height: window.innerHeight },
   backgroundColor: '#000000',
   scene: LevelScene,
-  plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra' }] },
+  // Renderer options go in the plugin entry's data (or to this.penumbra.configure() in a scene).
+  plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra', data: { ambientColor: [0.08, 0.08, 0.12] } }] },
 });

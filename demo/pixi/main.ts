@@ -3,8 +3,8 @@
 import { Application, Container, Graphics, Text, type WebGLRenderer } from 'pixi.js';
 import { PenumbraLayer, PointLight, Spotlight, hullFromBounds } from 'penumbra-gl/pixi';
 import {
-  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, WALLS, WORLD_HEIGHT, WORLD_WIDTH, ZOOM,
-  cameraScroll, canvasSize, moveWithCollisions, readPixels, waitFrames,
+  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, WALLS, WORLD_HEIGHT, WORLD_WIDTH,
+  canvasSize, followPlayer, moveWithCollisions, readPixels, waitFrames,
 } from '../examples/level';
 
 const app = new Application<WebGLRenderer>();
@@ -13,7 +13,7 @@ await app.init({ resizeTo: window, preference: 'webgl', background: '#000000', a
 document.body.appendChild(app.canvas);
 
 // The world container is the camera: its position and scale pan and zoom everything in it.
-const world = new Container({ scale: ZOOM });
+const world = new Container();
 world.addChild(drawFloor());
 const walls = WALLS.map(([x, y, w, h]) => world.addChild(new Graphics().rect(x, y, w, h).fill(0x8a7f72)));
 const player = world.addChild(new Graphics().circle(0, 0, PLAYER_RADIUS).fill(0xe8d8b0).rect(4, -3, 12, 6).fill(0x444444));
@@ -39,14 +39,15 @@ app.canvas.addEventListener('pointermove', (event) => {
 });
 const keys = new Keys(window);
 const direction: [number, number] = [0, 0];
-const scroll: [number, number] = [0, 0];
+const view = { zoom: 1, scroll: [0, 0] as [number, number] };
 
 function update(seconds: number): void {
   keys.direction(direction);
   moveWithCollisions(position, direction[0] * PLAYER_SPEED * seconds, direction[1] * PLAYER_SPEED * seconds);
-  cameraScroll(position, app.screen.width, app.screen.height, scroll);
-  world.position.set(-scroll[0] * ZOOM, -scroll[1] * ZOOM);
-  const aim = Math.atan2(mouse[1] / ZOOM + scroll[1] - position[1], mouse[0] / ZOOM + scroll[0] - position[0]);
+  const { zoom, scroll } = followPlayer(position, app.screen.width, app.screen.height, view);
+  world.scale.set(zoom);
+  world.position.set(-scroll[0] * zoom, -scroll[1] * zoom);
+  const aim = Math.atan2(mouse[1] / zoom + scroll[1] - position[1], mouse[0] / zoom + scroll[0] - position[0]);
   player.position.set(position[0], position[1]);
   player.rotation = aim;
   flashlight.setPosition(position[0], position[1]);

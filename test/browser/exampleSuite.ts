@@ -5,8 +5,9 @@ import { launchChromium } from './chromium';
 import { aimAt, brightness, openExample, readAt, type Pixel } from './engineExample';
 import { serveDirectory, type StaticServer } from './staticServer';
 
-// The examples fill the window, and the camera centres the player: the points are relative to the
-// canvas centre. The wall at x 400..440 is 70 world units (87.5 px) east of the start.
+// The examples fill the window. At the sizes used here (600 × 400, then 720 × 450) the zoom is 1.25
+// and the camera centres the player at the start (the view stays inside the level): the points are
+// relative to the canvas centre. The wall at x 400..440 is 70 world units (87.5 px) east of the start.
 const HUD = [20, 20] as const;
 
 /** Points of the view of a canvas `width` × `height` CSS pixels. */
