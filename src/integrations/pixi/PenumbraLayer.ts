@@ -29,6 +29,9 @@ type BindState = ReturnType<WebGLRenderer['renderTarget']['getBindState']>;
  * ```
  *
  * Only the WebGL renderer is supported (`preference: 'webgl'`). `destroy()` frees the GL resources.
+ * The members it inherits from Pixi's `RenderContainer` are documented by Pixi.
+ *
+ * @noInheritDoc
  */
 export class PenumbraLayer extends RenderContainer {
   /** The core renderer: lights, hulls, ambient colour, debug wireframe and stats. */
