@@ -1,0 +1,154 @@
+import { describe, expect, it } from 'vitest';
+import { isInsidePolygon, signedArea2 } from '../../src/geometry/polygon';
+import type { Hull } from '../../src/scene/Hull';
+import { hullsFromTiles, TileHulls } from '../../src/scene/tileHulls';
+import { seeded } from './gridSupport';
+
+const flat = (hull: Hull) => hull.points.flat();
+
+/**
+ * Rasterizes `hulls` back onto the grid, independently of how they were made: each tile centre
+ * (world → tile through `tileSize` and `position`) must lie in exactly one hull when the tile is
+ * solid and in none when empty; every hull valid; total area = solid tiles × tile area.
+ */
+function expectCovers(hulls: readonly Hull[], solid: (x: number, y: number) => boolean, width: number, height: number,
+  tileSize: [number, number] = [1, 1], position: [number, number] = [0, 0]): void {
+  const coords = hulls.map(flat);
+  hulls.forEach((hull, i) => expect(hull.valid, `hull ${i}: ${coords[i].join(',')}`).toBe(true));
+  let solidCount = 0;
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) {
+      const centre = [position[0] + (x + 0.5) * tileSize[0], position[1] + (y + 0.5) * tileSize[1]];
+      const inside = coords.filter((c) => isInsidePolygon(c, centre)).length;
+      expect(inside, `tile (${x}, ${y})`).toBe(solid(x, y) ? 1 : 0);
+      if (solid(x, y)) solidCount++;
+    }
+  }
+  const area = coords.reduce((sum, c) => sum + Math.abs(signedArea2(c)) / 2, 0);
+  expect(area).toBeCloseTo(solidCount * tileSize[0] * tileSize[1], 6);
+}
+
+/** The hulls' outlines as sorted strings: equal lists mean the same hulls. */
+const shapes = (hulls: readonly Hull[]) => hulls.map((h) => flat(h).join(',')).sort();
+
+function randomRows(width: number, height: number, fill: number, random: () => number): number[][] {
+  return Array.from({ length: height }, () => Array.from({ length: width }, () => (random() < fill ? 1 : 0)));
+}
+
+describe('hullsFromTiles', () => {
+  it('makes a 16-tile wall one 4-point hull, in world units', () => {
+    const hulls = hullsFromTiles([Array(16).fill(1)], { tileSize: 32, position: [100, 50] });
+    expect(hulls).toHaveLength(1);
+    expect(hulls[0].points).toEqual([[100, 50], [612, 50], [612, 82], [100, 82]]);
+    expect(hulls[0].position).toEqual([0, 0]);
+    expectCovers(hulls, () => true, 16, 1, [32, 32], [100, 50]);
+  });
+
+  it('makes a room (a ring of walls) 2 hulls, a room inside a room 4', () => {
+    const room = ['########', '#......#', '#......#', '#......#', '########'];
+    const hulls = hullsFromTiles(room, { solid: '#' });
+    expect(hulls).toHaveLength(2);
+    expectCovers(hulls, (x, y) => room[y][x] === '#', 8, 5);
+    const nested = ['#########', '#.......#', '#.#####.#', '#.#...#.#', '#.#####.#', '#.......#', '#########'];
+    expect(hullsFromTiles(nested, { solid: '#' })).toHaveLength(4);
+  });
+
+  it('reads rows of numbers or booleans, a flat array with width, or a function with width and height', () => {
+    const rows = [[0, 1, 1], [0, 1, 0], [2, 1, 0]];
+    const expected = shapes(hullsFromTiles(rows));
+    expect(shapes(hullsFromTiles(rows.map((r) => r.map((v) => v !== 0))))).toEqual(expected);
+    expect(shapes(hullsFromTiles(new Uint8Array(rows.flat()), { width: 3 }))).toEqual(expected);
+    expect(shapes(hullsFromTiles(rows.flat(), { width: 3, height: 3 }))).toEqual(expected);
+    expect(shapes(hullsFromTiles((x, y) => rows[y][x] > 0, { width: 3, height: 3 }))).toEqual(expected);
+    expectCovers(hullsFromTiles(rows), (x, y) => rows[y][x] !== 0, 3, 3);
+  });
+
+  it('takes which values are solid as a value, a list or a test', () => {
+    const rows = [[0, 1, 2], [3, 1, 2]];
+    expectCovers(hullsFromTiles(rows, { solid: 2 }), (x) => x === 2, 3, 2);
+    expectCovers(hullsFromTiles(rows, { solid: [1, 3] }), (x, y) => [1, 3].includes(rows[y][x]), 3, 2);
+    expectCovers(hullsFromTiles(rows, { solid: (v, x, y) => v === 1 || (x === 0 && y === 1) }), (x, y) => rows[y][x] === 1 || (x === 0 && y === 1), 3, 2);
+    expect(hullsFromTiles(['#.#'], { solid: (v) => v === '#' })).toHaveLength(2);
+  });
+
+  it('scales by [w, h] tiles and makes nothing of an empty grid', () => {
+    const rows = [[1, 0], [1, 1]];
+    expectCovers(hullsFromTiles(rows, { tileSize: [16, 8], position: [-5, 3] }), (x, y) => rows[y][x] === 1, 2, 2, [16, 8], [-5, 3]);
+    expect(hullsFromTiles([])).toEqual([]);
+    expect(hullsFromTiles([[0, 0], [0, 0]])).toEqual([]);
+    expect(hullsFromTiles([], { width: 4 })).toEqual([]);
+  });
+
+  it('covers random grids exactly with valid hulls (300 grids, seeded)', () => {
+    const random = seeded(2024);
+    for (let k = 0; k < 300; k++) {
+      const width = 1 + Math.floor(random() * 20), height = 1 + Math.floor(random() * 20);
+      const rows = randomRows(width, height, 0.15 + 0.8 * random(), random);
+      const size: [number, number] = [1 + Math.floor(random() * 40), 1 + Math.floor(random() * 40)];
+      expectCovers(hullsFromTiles(rows, { tileSize: size, position: [7, -3] }), (x, y) => rows[y][x] === 1, width, height, size, [7, -3]);
+    }
+  });
+
+  it('names the field and the value of bad input', () => {
+    expect(() => hullsFromTiles(5 as never)).toThrow(new TypeError('hullsFromTiles grid must be an array of rows, a flat array with options.width, or a function (x, y) => value, got 5'));
+    expect(() => hullsFromTiles([1, 0, 1] as never)).toThrow(/^hullsFromTiles grid\[0\] must be a row .*got 1$/);
+    expect(() => hullsFromTiles([[1, 0], [1]])).toThrow(new RangeError('hullsFromTiles grid[1] must have 2 tiles like grid[0], got 1'));
+    expect(() => hullsFromTiles([[1, 'x']])).toThrow(/^hullsFromTiles grid\[0\]\[1\] must be a number or true\/false .*got "x"$/);
+    expect(() => hullsFromTiles([1, 0, 1], { width: 2 })).toThrow(RangeError);
+    expect(() => hullsFromTiles([1, 0, 1], { width: 1.5 })).toThrow(/options.width must be a non-negative integer, got 1.5/);
+    expect(() => hullsFromTiles(() => 1, { width: 2 } as never)).toThrow(/options.width and options.height must be given/);
+    expect(() => hullsFromTiles([[1]], { tileSize: 0 })).toThrow(new RangeError('hullsFromTiles options.tileSize must be a positive finite number or [w, h] pair, got 0'));
+    expect(() => hullsFromTiles([[1]], { tileSize: 'big' as never })).toThrow(TypeError);
+    expect(() => hullsFromTiles([[1]], { position: [0, NaN] })).toThrow(/options.position must be an \[x, y\] pair of finite numbers, got \[0,NaN\]/);
+    expect(() => hullsFromTiles([[1]], { solid: () => 1 as never })).toThrow(/options.solid must return true or false, got 1 for tile \(0, 0\)/);
+    expect(() => new TileHulls([[1]], { tileSize: -1 })).toThrow(/^TileHulls options.tileSize/);
+    const tiles = new TileHulls([[1, 0]]);
+    expect(() => tiles.setTile(2, 0, true)).toThrow(new RangeError('TileHulls.setTile x must be an integer in 0..1, got 2'));
+    expect(() => tiles.setTile(0, 0.5, true)).toThrow(RangeError);
+    expect(() => tiles.setTile(0, 0, 1 as never)).toThrow(new TypeError('TileHulls.setTile solid must be true or false, got 1'));
+  });
+});
+
+describe('TileHulls', () => {
+  it('returns the added and removed hulls of a change, leaving the other hulls alone', () => {
+    const tiles = new TileHulls(['#####....#', '#...#....#', '#####....#'], { solid: '#' });
+    expect(tiles.hulls).toHaveLength(3);
+    const [wall] = tiles.hulls.filter((h) => flat(h)[0] === 9);
+    // Opening the room's wall: its 2 hulls become 1 (a C); the lone wall on the right stays as it was.
+    const open = tiles.setTile(4, 1, false);
+    expect(open.removed).toHaveLength(2);
+    expect(open.added).toHaveLength(1);
+    expect(tiles.hulls).toHaveLength(2);
+    expect(tiles.hulls).toContain(wall);
+    expect(tiles.isSolid(4, 1)).toBe(false);
+    expect(tiles.setTile(4, 1, false)).toEqual({ added: [], removed: [] });
+    // A bridge to the wall merges everything into one group.
+    const bridge = tiles.setTile(5, 0, true);
+    expect(bridge.removed).toHaveLength(1);
+    expect(tiles.setTile(6, 0, true).removed).toHaveLength(1);
+    const join = tiles.setTile(7, 0, true), last = tiles.setTile(8, 0, true);
+    expect(join.added).toHaveLength(1);
+    expect(last.removed).toHaveLength(2);
+    expect(tiles.hulls).toHaveLength(1);
+  });
+
+  it('keeps the hulls a fresh hullsFromTiles makes, through random setTile sequences (200 grids, seeded)', () => {
+    const random = seeded(99);
+    for (let k = 0; k < 200; k++) {
+      const width = 1 + Math.floor(random() * 14), height = 1 + Math.floor(random() * 14);
+      const rows = randomRows(width, height, 0.2 + 0.7 * random(), random);
+      const tiles = new TileHulls(rows, { tileSize: 2, position: [1, 1] });
+      let current = new Set(tiles.hulls);
+      for (let step = 0; step < 20; step++) {
+        const x = Math.floor(random() * width), y = Math.floor(random() * height), solid = random() < 0.5;
+        const { added, removed } = tiles.setTile(x, y, solid);
+        rows[y][x] = solid ? 1 : 0;
+        for (const hull of removed) expect(current.delete(hull), 'a removed hull was current').toBe(true);
+        for (const hull of added) current.add(hull);
+        expect(new Set(tiles.hulls)).toEqual(current);
+      }
+      expect(shapes(tiles.hulls)).toEqual(shapes(hullsFromTiles(rows, { tileSize: 2, position: [1, 1] })));
+      expectCovers(tiles.hulls, (x, y) => rows[y][x] === 1, width, height, [2, 2], [1, 1]);
+    }
+  });
+});
