@@ -29,7 +29,9 @@ export interface TileHullsOptions<T = number | boolean> {
 
 /** What {@link TileHulls.setTile} changed: hulls to add to the renderer and hulls to remove from it. */
 export interface TileHullsChange {
+  /** New hulls, now in {@link TileHulls.hulls}: add them to the renderer. */
   readonly added: Hull[];
+  /** Hulls no longer in {@link TileHulls.hulls}: remove them from the renderer. */
   readonly removed: Hull[];
 }
 

@@ -1,0 +1,99 @@
+// The cases of `node bench/tiles.mjs`: tile grids → hulls (hullsFromTiles, TileHulls.setTile).
+// Each case builds its grid outside the timing and times only the library call.
+import { hullsFromTiles, TileHulls } from '../src/scene/tileHulls';
+
+/** Mulberry32: seeded, so every process times the same grids. */
+function seeded(seed: number): () => number {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+/** A perfect maze (depth-first, seeded) on (2n+1)² tiles: 1 = wall. Its walls are one group around one hole. */
+function maze(n: number): number[][] {
+  const size = 2 * n + 1, random = seeded(1);
+  const rows = Array.from({ length: size }, () => new Array<number>(size).fill(1));
+  const stack: Array<[number, number]> = [[0, 0]];
+  rows[1][1] = 0;
+  while (stack.length > 0) {
+    const [x, y] = stack[stack.length - 1];
+    const next = ([[1, 0], [-1, 0], [0, 1], [0, -1]] as const)
+      .map(([dx, dy]) => [x + dx, y + dy] as const)
+      .filter(([nx, ny]) => nx >= 0 && ny >= 0 && nx < n && ny < n && rows[2 * ny + 1][2 * nx + 1] === 1);
+    if (next.length === 0) {
+      stack.pop();
+      continue;
+    }
+    const [nx, ny] = next[Math.floor(random() * next.length)];
+    rows[y + ny + 1][x + nx + 1] = 0;
+    rows[2 * ny + 1][2 * nx + 1] = 0;
+    stack.push([nx, ny]);
+  }
+  return rows;
+}
+
+function randomMap(size: number, fill: number): number[][] {
+  const random = seeded(2);
+  return Array.from({ length: size }, () => Array.from({ length: size }, () => (random() < fill ? 1 : 0)));
+}
+
+const count = (rows: number[][]) => rows.reduce((sum, row) => sum + row.reduce((a, b) => a + b, 0), 0);
+
+export interface Case {
+  /** What the table says about the grid. */
+  describe(): string;
+  /** Runs the call once and returns milliseconds. */
+  run(): number;
+}
+
+function build(rows: number[][]): Case {
+  return {
+    describe: () => {
+      const hulls = hullsFromTiles(rows, { tileSize: 32 });
+      return `${rows[0].length}×${rows.length}, ${count(rows)} solid, ${hulls.length} hulls, ${hulls.reduce((s, h) => s + h.edgeCount, 0)} points`;
+    },
+    run: () => {
+      const start = performance.now();
+      const hulls = hullsFromTiles(rows, { tileSize: 32 });
+      const ms = performance.now() - start;
+      if (!hulls.every((h) => h.valid)) throw new Error('an invalid hull');
+      return ms;
+    },
+  };
+}
+
+/** One setTile per run, on a random tile; every other run undoes the previous one, so the map stays near its start. */
+function edit(rows: number[][]): Case {
+  const tiles = new TileHulls(rows, { tileSize: 32 });
+  const random = seeded(3);
+  let undo: [number, number, boolean] | null = null;
+  return {
+    describe: () => `${rows[0].length}×${rows.length}, ${count(rows)} solid, ${tiles.hulls.length} hulls`,
+    run: () => {
+      let x: number, y: number, solid: boolean;
+      if (undo) [x, y, solid] = undo;
+      else {
+        x = Math.floor(random() * rows[0].length);
+        y = Math.floor(random() * rows.length);
+        solid = !tiles.isSolid(x, y);
+      }
+      undo = undo ? null : [x, y, !solid];
+      const start = performance.now();
+      tiles.setTile(x, y, solid);
+      return performance.now() - start;
+    },
+  };
+}
+
+export const CASES: Record<string, () => Case> = {
+  'hullsFromTiles: 100×100 all solid': () => build(randomMap(100, 1)),
+  'hullsFromTiles: maze': () => build(maze(70)),
+  'hullsFromTiles: 256×256, 30% random walls': () => build(randomMap(256, 0.3)),
+  'setTile: 256×256, 30% random walls': () => edit(randomMap(256, 0.3)),
+  'setTile: maze (every edit re-traces the whole maze)': () => edit(maze(70)),
+};
