@@ -1,5 +1,7 @@
 // The cases of `node bench/tiles.mjs`: tile grids → hulls (hullsFromTiles, TileHulls.setTile).
 // Each case builds its grid outside the timing and times only the library call.
+import { holeFreeRegions } from '../src/geometry/gridRegions';
+import { traceOutlines } from '../src/geometry/tileOutlines';
 import { hullsFromTiles, TileHulls } from '../src/scene/tileHulls';
 
 /** Mulberry32: seeded, so every process times the same grids. */
@@ -67,6 +69,21 @@ function build(rows: number[][]): Case {
   };
 }
 
+/** The regions and their outlines alone, without making hulls of them. */
+function outlines(rows: number[][]): Case {
+  const width = rows[0].length, height = rows.length;
+  const grid = { width, height, solid: (x: number, y: number) => rows[y][x] === 1 };
+  return {
+    describe: () => `${width}×${height}, ${count(rows)} solid, ${holeFreeRegions(grid).count} regions`,
+    run: () => {
+      const start = performance.now();
+      const { labels, count: regions } = holeFreeRegions(grid);
+      traceOutlines(labels, width, height, regions);
+      return performance.now() - start;
+    },
+  };
+}
+
 /** One setTile per run, on a random tile; every other run undoes the previous one, so the map stays near its start. */
 function edit(rows: number[][]): Case {
   const tiles = new TileHulls(rows, { tileSize: 32 });
@@ -94,6 +111,7 @@ export const CASES: Record<string, () => Case> = {
   'hullsFromTiles: 100×100 all solid': () => build(randomMap(100, 1)),
   'hullsFromTiles: maze': () => build(maze(70)),
   'hullsFromTiles: 256×256, 30% random walls': () => build(randomMap(256, 0.3)),
+  'holeFreeRegions + traceOutlines only: 256×256, 30% random walls': () => outlines(randomMap(256, 0.3)),
   'setTile: 256×256, 30% random walls': () => edit(randomMap(256, 0.3)),
   'setTile: maze (every edit re-traces the whole maze)': () => edit(maze(70)),
 };
