@@ -177,16 +177,18 @@ class Tracer {
 const SMALLEST_TOLERANCE = 1 / 32;
 /** Factor by which the tolerance grows while an outline has more than `maxPoints` points. */
 const TOLERANCE_GROWTH = 1.5;
+/** Growth steps before giving up (1.5^80 ≈ 10^14 pixels: past any image, the chords leave only the anchors). */
+const MAX_GROWTH_STEPS = 80;
 
 /**
  * Simplifies a traced ring to within `tolerance` pixels, backing off (halving, down to 0) where
  * that makes it cross itself, then, while it has more than `maxPoints` points, growing the
  * tolerance until a simple outline fits. Tolerance 0 removes only collinear points, which always
- * leaves a simple polygon. If no tolerance yields a simple outline within the cap (pinned points
- * or a shape that no coarse outline follows), the cap wins over fidelity: with no pinned point the
- * result is the convex hull cut down to the cap; with pinned points, the fewest points found.
+ * leaves a simple polygon. If no tolerance yields a simple outline within the cap: with no pinned
+ * point, the convex hull cut down to the cap (the cap wins over fidelity); with pinned points, the
+ * simple outline with the fewest points found (the pins win over the cap: no gap along a cut).
  */
-export function simplifyOutline(ring: Ring, tolerance: number, maxPoints: number): Float64Array {
+function simplifyOutline(ring: Ring, tolerance: number, maxPoints: number): Float64Array {
   const anchors = anchorPoints(ring);
   let best: Float64Array | null = null;
   for (let t = tolerance; ; t = t / 2 < SMALLEST_TOLERANCE ? 0 : t / 2) {
@@ -202,7 +204,9 @@ export function simplifyOutline(ring: Ring, tolerance: number, maxPoints: number
   if (best.length >> 1 <= maxPoints) return best;
 
   let fewest = best;
-  for (let t = Math.max(tolerance, SMALLEST_TOLERANCE) * TOLERANCE_GROWTH; ; t *= TOLERANCE_GROWTH) {
+  let t = Math.max(tolerance, SMALLEST_TOLERANCE);
+  for (let step = 0; step < MAX_GROWTH_STEPS; step++) {
+    t *= TOLERANCE_GROWTH;
     const candidate = douglasPeucker(ring, anchors, t);
     const simple = isSimplePolygon(candidate);
     if (simple && candidate.length >> 1 <= maxPoints) return candidate;

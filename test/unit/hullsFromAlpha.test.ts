@@ -14,6 +14,11 @@
  *   squares). Misclassified centres lie in a one-sided band of width t + √2/4 along the outline,
  *   whose length is at most the number of boundary pixel edges: at most edges × (t + ½) of them,
  *   which bounds the IoU from below.
+ * - Tolerance t, outlines: the trace runs through the midpoint of every pixel edge of the true
+ *   outline, and Douglas–Peucker keeps every traced point within t of the simplified outline; the
+ *   reverse holds too (each chain crosses every perpendicular of its chord within t of it). So
+ *   each such midpoint is within t of a hull's edge, and each point of a hull's edge within
+ *   t + √2/4 of the true outline, or on a cut between two hulls.
  */
 import { describe, expect, it } from 'vitest';
 import { alphaOutlines } from '../../src/geometry/alphaOutlines';
@@ -144,8 +149,70 @@ function expectValid(hulls: readonly Hull[], maxPoints = 64): void {
   }
 }
 
-/** The simplified hulls against the mask: misclassified centres near the outline, IoU bounded (see the file's comment). */
+/**
+ * The true outline's pixel edges (between a solid pixel and an empty one or the border), as
+ * segments `[x0, y0, x1, y1]`, and the edges between two solid pixels (where hulls may be cut).
+ */
+function pixelEdges(mask: Uint8Array, width: number, height: number): { outline: number[][]; inner: number[][] } {
+  const at = (x: number, y: number) => (x >= 0 && y >= 0 && x < width && y < height ? mask[y * width + x] : 0);
+  const outline: number[][] = [], inner: number[][] = [];
+  for (let y = -1; y < height; y++) {
+    for (let x = -1; x < width; x++) {
+      const vertical = [x + 1, y, x + 1, y + 1], horizontal = [x, y + 1, x + 1, y + 1];
+      if (at(x, y) !== at(x + 1, y)) outline.push(vertical);
+      else if (at(x, y)) inner.push(vertical);
+      if (at(x, y) !== at(x, y + 1)) outline.push(horizontal);
+      else if (at(x, y)) inner.push(horizontal);
+    }
+  }
+  return { outline, inner };
+}
+
+function distanceToSegment(px: number, py: number, [ax, ay, bx, by]: readonly number[]): number {
+  const ex = bx - ax, ey = by - ay, length2 = ex * ex + ey * ey;
+  const along = length2 === 0 ? 0 : Math.min(1, Math.max(0, ((px - ax) * ex + (py - ay) * ey) / length2));
+  return Math.hypot(px - ax - along * ex, py - ay - along * ey);
+}
+
+/** Each hull's edges in pixel space (its points, unflipped), as segments. */
+function hullEdges(hulls: readonly Hull[]): number[][] {
+  return hulls.flatMap((hull) => hull.points.map((p, i) => {
+    const q = hull.points[(i + 1) % hull.points.length];
+    return [p[0], p[1], q[0], q[1]];
+  }));
+}
+
+/**
+ * The outlines of unflipped hulls and the true outline within each other's reach (a two-sided
+ * Hausdorff bound): every midpoint of a true outline's pixel edge (the trace runs through all of
+ * them) within `tolerance` of a hull's edge; every point of a hull's edge within
+ * `tolerance + √2/4` of the true outline (the trace is within √2/4 of it), or on a pixel edge
+ * between two solid pixels (a cut between hulls).
+ */
+function expectHausdorff(img: AlphaImage, hulls: readonly Hull[], tolerance: number): void {
+  const { outline, inner } = pixelEdges(maskOf(img), img.width, img.height), edges = hullEdges(hulls);
+  for (const [ax, ay, bx, by] of outline) {
+    const mx = (ax + bx) / 2, my = (ay + by) / 2;
+    const nearest = Math.min(...edges.map((edge) => distanceToSegment(mx, my, edge)));
+    expect(nearest, `pixel edge midpoint (${mx}, ${my})`).toBeLessThanOrEqual(tolerance + 1e-9);
+  }
+  for (const [ax, ay, bx, by] of edges) {
+    const samples = Math.ceil(4 * Math.hypot(bx - ax, by - ay));
+    for (let k = 0; k <= samples; k++) {
+      const px = ax + ((bx - ax) * k) / samples, py = ay + ((by - ay) * k) / samples;
+      if (inner.some((edge) => distanceToSegment(px, py, edge) === 0)) continue;
+      const nearest = Math.min(...outline.map((edge) => distanceToSegment(px, py, edge)));
+      expect(nearest, `hull edge point (${px}, ${py})`).toBeLessThanOrEqual(tolerance + Math.SQRT2 / 4 + 1e-9);
+    }
+  }
+}
+
+/**
+ * The simplified hulls against the mask (see the file's comment): misclassified centres near the
+ * outline, the IoU bounded, and the outlines within the tolerance of each other.
+ */
 function expectWithinTolerance(img: AlphaImage, hulls: readonly Hull[], tolerance: number): { iou: number; wrong: number } {
+  expectHausdorff(img, hulls, tolerance);
   const mask = maskOf(img), covered = coverage(img, hulls);
   const wrong = mismatches(mask, covered);
   for (const i of wrong) expect(distanceToOutline(mask, img.width, img.height, i, tolerance + 2)).toBeLessThanOrEqual(tolerance + 1);
