@@ -276,14 +276,27 @@ class SweepLine {
 
 /** Whether a simple counter-clockwise polygon is convex: it never turns clockwise. */
 export function isConvexPolygon(coords: ArrayLike<number>): boolean {
+  return sharpestRightTurn(coords) >= 0;
+}
+
+/** The least cross product of two consecutive edges: negative where the outline turns clockwise, 0 where it runs straight on. */
+function sharpestRightTurn(coords: ArrayLike<number>): number {
   const count = coords.length >> 1;
+  let least = Infinity;
   for (let i = 0; i < count; i++) {
     const a = (i + count - 1) % count, b = (i + 1) % count;
     const ax = coords[2 * i] - coords[2 * a], ay = coords[2 * i + 1] - coords[2 * a + 1];
     const bx = coords[2 * b] - coords[2 * i], by = coords[2 * b + 1] - coords[2 * i + 1];
-    if (ax * by - ay * bx < 0) return false;
+    least = Math.min(least, ax * by - ay * bx);
   }
-  return true;
+  return least;
+}
+
+/** The fan of triangles from point 0: a triangulation of an outline that turns strictly left everywhere. */
+function fan(n: number): number[] {
+  const triangles: number[] = [];
+  for (let i = 1; i + 1 < n; i++) triangles.push(0, i, i + 1);
+  return triangles;
 }
 
 /**
@@ -319,6 +332,8 @@ export function isInsidePolygon(coords: ArrayLike<number>, point: ArrayLike<numb
  */
 export function triangulate(coords: ArrayLike<number>): number[] {
   const n = coords.length >> 1;
+  // Every point of a strictly convex outline is an ear: its fan needs no test (a tile's box, most small hulls).
+  if (sharpestRightTurn(coords) > 0) return fan(n);
   const outline = new Outline(coords, n);
   const blockers = new ReflexPoints(coords, outline);
   const candidates = new PointQueue(n);

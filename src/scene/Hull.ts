@@ -1,5 +1,5 @@
 import { isConvexPolygon, isSimplePolygon, signedArea2, simplifyPolygon, triangulate } from '../geometry/polygon';
-import { assertBoolean, assertFinite, assertOptions, describeValue, frozenPair, frozenVec2, frozenVec2List, type Vec2Like } from './validate';
+import { assertBoolean, assertFinite, assertOptions, describeValue, frozenPair, frozenVec2, vec2ListCoords, type Vec2Like } from './validate';
 
 /** Options of a {@link Hull}; every field has the default shown. */
 export interface HullOptions {
@@ -29,7 +29,9 @@ export interface HullOptions {
  * {@link Hull.setPosition}, to change them.
  */
 export class Hull {
-  private _points: ReadonlyArray<readonly [number, number]> = Object.freeze([]);
+  /** The points as given, `[x0, y0, …]`; their frozen pairs are made when first asked for. */
+  private givenCoords!: Float64Array;
+  private _points: ReadonlyArray<readonly [number, number]> | null = null;
   private _position: readonly [number, number] = Object.freeze([0, 0] as const);
   private _origin: readonly [number, number] = Object.freeze([0, 0] as const);
   private _scale: readonly [number, number] = Object.freeze([1, 1] as const);
@@ -38,7 +40,7 @@ export class Hull {
   private _shapeValid = false;
   private _convex = false;
   /** Cleaned local points, counter-clockwise. */
-  private localPoints = new Float64Array(0);
+  private localPoints!: Float64Array;
   private localTriangles: readonly number[] = [];
   private mirroredTriangles: readonly number[] = [];
   private worldVersion = -1;
@@ -53,7 +55,7 @@ export class Hull {
    */
   version = 0;
   /** World-space points, counter-clockwise, `[x0, y0, x1, y1, …]`; see {@link Hull.updateWorld}. @internal */
-  worldPoints = new Float32Array(0);
+  worldPoints!: Float32Array;
   /** World-space bounds `[minX, minY, maxX, maxY]`. @internal */
   readonly worldBounds = new Float64Array(4);
   /**
@@ -74,17 +76,14 @@ export class Hull {
 
   /** The points as given (local space), frozen, pairs too. Assign a new array to reshape the hull. */
   get points(): ReadonlyArray<readonly [number, number]> {
-    return this._points;
+    const coords = this.givenCoords;
+    return (this._points ??= Object.freeze(Array.from({ length: coords.length >> 1 }, (_, i) => Object.freeze([coords[2 * i], coords[2 * i + 1]] as const))));
   }
   set points(points: ReadonlyArray<Vec2Like>) {
     if (!Array.isArray(points)) throw new TypeError(`Hull.points must be an array of [x, y] pairs, got ${describeValue(points)}`);
-    const copy = frozenVec2List('Hull.points', points);
-    this._points = copy;
-    const coords = new Float64Array(2 * copy.length);
-    for (let i = 0; i < copy.length; i++) {
-      coords[2 * i] = copy[i][0];
-      coords[2 * i + 1] = copy[i][1];
-    }
+    const coords = vec2ListCoords('Hull.points', points);
+    this.givenCoords = coords;
+    this._points = null;
     const cleaned = simplifyPolygon(coords);
     this._shapeValid = isSimplePolygon(cleaned);
     if (this._shapeValid && signedArea2(cleaned) < 0) reversePoints(cleaned);

@@ -59,9 +59,19 @@ export function frozenPair(name: string, x: number, y: number): readonly [number
   return Object.freeze([x, y] as const);
 }
 
-/** {@link frozenVec2} for each vector of `list`, named `name[i]` in a message; the names are built only for one. */
-export function frozenVec2List(name: string, list: ArrayLike<Vec2Like>): ReadonlyArray<readonly [number, number]> {
-  return Object.freeze(Array.from(list, (value, i) => isFinitePair(value) ? Object.freeze([value[0], value[1]] as const) : frozenVec2(`${name}[${i}]`, value)));
+/**
+ * Checks each vector of `list` as {@link frozenVec2} does (named `name[i]` in a message, the name
+ * built only for one) and returns them as `[x0, y0, x1, y1, …]`.
+ */
+export function vec2ListCoords(name: string, list: ArrayLike<Vec2Like>): Float64Array {
+  const coords = new Float64Array(2 * list.length);
+  for (let i = 0; i < list.length; i++) {
+    const value = list[i];
+    if (!isFinitePair(value)) frozenVec2(`${name}[${i}]`, value);
+    coords[2 * i] = value[0];
+    coords[2 * i + 1] = value[1];
+  }
+  return coords;
 }
 
 function isFinitePair(value: Vec2Like): boolean {
