@@ -214,39 +214,31 @@ function simplifyOutline(ring: Ring, tolerance: number, maxPoints: number): Floa
     // Only the anchors left: a larger tolerance cannot remove more.
     if (candidate.length >> 1 <= Math.max(anchors.length, 2)) break;
   }
-  return anchors.length > 0 && ringHasPins(ring) ? fewest : convexWithin(ring, maxPoints);
-}
-
-function ringHasPins(ring: Ring): boolean {
-  return ring.pinned.some((p) => p !== 0);
+  return ring.pinned.includes(1) ? fewest : convexWithin(ring, maxPoints);
 }
 
 /**
- * The ring's points that simplification must keep: of each run of pinned points, its ends and the
- * corners between. With none, the leftmost (then topmost) point and the point farthest from it:
+ * The ring's points that simplification must keep: the ends of each run of pinned points (the
+ * splitter cuts along rows, so a run is straight and its ends carry it). With none, point 0 (the
+ * middle of the first pixel's top edge: no point lies above it) and the point farthest from it:
  * both are extreme points of the outline, so the split into two chains follows its shape.
  */
 function anchorPoints(ring: Ring): number[] {
   const { xs, ys, pinned, n } = ring;
   const anchors: number[] = [];
   for (let i = 0; i < n; i++) {
-    if (!pinned[i]) continue;
-    const p = i === 0 ? n - 1 : i - 1, q = i + 1 === n ? 0 : i + 1;
-    const turn = (xs[i] - xs[p]) * (ys[q] - ys[i]) - (ys[i] - ys[p]) * (xs[q] - xs[i]);
-    if (!pinned[p] || !pinned[q] || turn !== 0) anchors.push(i);
+    if (pinned[i] && (!pinned[i === 0 ? n - 1 : i - 1] || !pinned[i + 1 === n ? 0 : i + 1])) anchors.push(i);
   }
   if (anchors.length > 0) return anchors;
-  let first = 0;
-  for (let i = 1; i < n; i++) if (xs[i] < xs[first] || (xs[i] === xs[first] && ys[i] < ys[first])) first = i;
-  let far = first, farDistance = -1;
-  for (let i = 0; i < n; i++) {
-    const distance = (xs[i] - xs[first]) ** 2 + (ys[i] - ys[first]) ** 2;
+  let far = 0, farDistance = -1;
+  for (let i = 1; i < n; i++) {
+    const distance = (xs[i] - xs[0]) ** 2 + (ys[i] - ys[0]) ** 2;
     if (distance > farDistance) {
       far = i;
       farDistance = distance;
     }
   }
-  return first < far ? [first, far] : [far, first];
+  return [0, far];
 }
 
 /**

@@ -65,6 +65,16 @@ function discs(width: number, height: number, solid: ReadonlyArray<readonly numb
   return image(width, height, (x, y) => (inAny(solid, x, y) && !inAny(holes, x, y) ? 255 : 0));
 }
 
+/** Alpha 255 within `halfWidth` of the polyline `line` (pixel centres), else 0. */
+function strokes(width: number, height: number, line: ReadonlyArray<readonly number[]>, halfWidth: number): AlphaImage {
+  return image(width, height, (x, y) => {
+    for (let i = 0; i + 1 < line.length; i++) {
+      if (distanceToSegment(x + 0.5, y + 0.5, [...line[i], ...line[i + 1]]) <= halfWidth) return 255;
+    }
+    return 0;
+  });
+}
+
 /** The reference: which pixels are solid (alpha ≥ threshold). */
 function maskOf(img: AlphaImage, threshold = 128): Uint8Array {
   return Uint8Array.from({ length: img.width * img.height }, (_, i) => (img.data[4 * i + 3] >= threshold ? 1 : 0));
@@ -265,6 +275,42 @@ describe('hullsFromAlpha: tracing', () => {
     for (let k = 0; k < 12; k++) {
       const tolerance = [0.5, 1, 2][k % 3];
       const img = discs(48, 40, [[random() * 48, random() * 40, 2 + random() * 20]]);
+      const hulls = hullsFromAlpha(img, { tolerance, maxPoints: Infinity });
+      expectValid(hulls, Infinity);
+      expectWithinTolerance(img, hulls, tolerance);
+    }
+  });
+
+  it('traces strokes that curl back on themselves (a spiral, an S, a G) within the tolerance', () => {
+    const spiral = Array.from({ length: 200 }, (_, i) => {
+      const angle = (i / 199) * 5 * Math.PI, r = 4 + 3.2 * angle;
+      return [48 + r * Math.cos(angle), 48 + r * Math.sin(angle)];
+    });
+    const arc = (cx: number, cy: number, r: number, from: number, to: number) =>
+      Array.from({ length: 40 }, (_, i) => [cx + r * Math.cos(from + ((to - from) * i) / 39), cy + r * Math.sin(from + ((to - from) * i) / 39)]);
+    const letterS = [...arc(30, 22, 12, -0.2, -1.5 * Math.PI), ...arc(30, 46, 12, -Math.PI / 2, 0.7 * Math.PI)];
+    const letterG = [...arc(36, 34, 22, -0.6, -2 * Math.PI + 0.2), [58, 34], [40, 34]];
+    for (const [name, line, halfWidth] of [['spiral', spiral, 2.2], ['S', letterS, 3], ['G', letterG, 4]] as const) {
+      const img = strokes(96, 96, line, halfWidth);
+      for (const tolerance of [0, 1, 2.5]) {
+        const hulls = hullsFromAlpha(img, { tolerance, maxPoints: Infinity });
+        expect(hulls, name).toHaveLength(1);
+        expectValid(hulls, Infinity);
+        if (tolerance === 0) expect(mismatches(maskOf(img), coverage(img, hulls))).toEqual([]);
+        else expectWithinTolerance(img, hulls, tolerance);
+      }
+    }
+  });
+
+  it('keeps a ledge over a long arm within the tolerance (the arm reaches back past where the outline starts)', () => {
+    const img = textImage([
+      '..................................',
+      '.................###############..',
+      '.###############################..',
+      '.###############################..',
+      '..................................',
+    ]);
+    for (const tolerance of [1, 1.5, 2, 3]) {
       const hulls = hullsFromAlpha(img, { tolerance, maxPoints: Infinity });
       expectValid(hulls, Infinity);
       expectWithinTolerance(img, hulls, tolerance);
@@ -480,6 +526,7 @@ describe('hullsFromAlpha: validation', () => {
     ['image.height', () => hullsFromAlpha({ ...ok, height: '4' as never }), TypeError, 'image.height must be a non-negative integer, got "4"'],
     ['image.data type', () => hullsFromAlpha({ ...ok, data: [1, 2, 3] as never }), TypeError, 'image.data must be a Uint8ClampedArray or Uint8Array'],
     ['image.data length', () => hullsFromAlpha({ ...ok, width: 5 }), RangeError, 'image.data must hold width × height × 4 = 80 bytes, got 64'],
+    ['image.data length (too long)', () => hullsFromAlpha({ ...ok, height: 3 }), RangeError, 'image.data must hold width × height × 4 = 48 bytes, got 64'],
     ['options', () => hullsFromAlpha(ok, 5 as never), TypeError, 'hullsFromAlpha options must be an object, got 5'],
     ['threshold', () => hullsFromAlpha(ok, { threshold: 256 }), RangeError, 'options.threshold must be at most 255, got 256'],
     ['threshold NaN', () => hullsFromAlpha(ok, { threshold: NaN }), RangeError, 'options.threshold must be a finite number, got NaN'],
