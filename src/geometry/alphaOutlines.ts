@@ -29,16 +29,12 @@ export interface OutlineOptions {
   readonly minArea: number;
 }
 
-/** The solid pixels of RGBA bytes (`alpha ≥ threshold`) as a mask, one byte a pixel. */
-export function alphaMask(data: ArrayLike<number>, width: number, height: number, threshold: number): Uint8Array {
-  const mask = new Uint8Array(width * height);
-  for (let i = 0, a = 3; i < mask.length; i++, a += 4) mask[i] = data[a] >= threshold ? 1 : 0;
-  return mask;
-}
-
-/** A mask (non-zero = solid, row after row) seen as the cell grid that {@link holeFreeRegions} reads. */
-export function maskGrid(mask: Uint8Array, width: number, height: number): CellGrid {
-  return { width, height, solid: (x, y) => mask[y * width + x] !== 0 };
+/**
+ * The pixels of RGBA bytes `data` (4 per pixel, row after row) with `alpha ≥ threshold`, as the
+ * cell grid that {@link holeFreeRegions} reads: straight from the bytes, no mask built first.
+ */
+export function alphaGrid(data: ArrayLike<number>, width: number, height: number, threshold: number): CellGrid {
+  return { width, height, solid: (x, y) => data[4 * (y * width + x) + 3] >= threshold };
 }
 
 /**
@@ -47,8 +43,7 @@ export function maskGrid(mask: Uint8Array, width: number, height: number): CellG
  */
 export function alphaOutlines(data: ArrayLike<number>, width: number, height: number, threshold: number, options: OutlineOptions): Float64Array[] {
   if (width === 0 || height === 0) return [];
-  const grid = maskGrid(alphaMask(data, width, height, threshold), width, height);
-  const { labels, count } = holeFreeRegions(grid);
+  const { labels, count } = holeFreeRegions(alphaGrid(data, width, height, threshold));
   return regionOutlines(labels, count, width, height, options);
 }
 
@@ -70,37 +65,45 @@ export function regionOutlines(labels: Int32Array, count: number, width: number,
 }
 
 /**
- * One pass over the labels: each region's first pixel in row order (where its outline starts, −1
- * for a region without pixels) and whether its island is at least `minArea` pixels. An island is
- * the regions joined across the splitter's cuts (solid neighbours with different labels), found
- * by union–find.
+ * Each region's first pixel in row order (where its outline starts; −1 for a region without
+ * pixels), and whether its island has at least `minArea` pixels.
+ *
+ * The first pixels come from `indexOf` (native, fast even before the JIT warms up, which is what
+ * the first sprite a game loads meets): regions are numbered in row order of their first pixel,
+ * so each search starts past the previous region's first pixel, and the searches cover the labels
+ * once. With `minArea`, one pass over the labels sums each region's pixels and joins the regions
+ * the splitter cut apart (solid neighbours with different labels) into islands, by union–find.
  */
 function scanRegions(labels: Int32Array, count: number, width: number, height: number, minArea: number): { starts: Int32Array; kept: Uint8Array } {
-  const starts = new Int32Array(count).fill(-1);
+  const starts = new Int32Array(count);
+  for (let r = 0, from = 0; r < count; r++) {
+    let start = labels.indexOf(r, from);
+    // Only if the numbering were not in row order: search from the top.
+    if (start < 0 && from > 0) start = labels.indexOf(r);
+    starts[r] = start;
+    if (start >= 0) from = start + 1;
+  }
   const kept = new Uint8Array(count).fill(1);
+  if (minArea <= 0) return { starts, kept };
   const areas = new Float64Array(count);
-  const parent = minArea > 0 ? Int32Array.from({ length: count }, (_, i) => i) : null;
+  const parent = Int32Array.from({ length: count }, (_, i) => i);
   const root = (r: number): number => {
-    while (parent![r] !== r) r = parent![r] = parent![parent![r]];
+    while (parent[r] !== r) r = parent[r] = parent[parent[r]];
     return r;
   };
   for (let y = 0, i = 0; y < height; y++) {
     for (let x = 0; x < width; x++, i++) {
       const label = labels[i];
       if (label < 0) continue;
-      if (starts[label] < 0) starts[label] = i;
-      if (parent === null) continue;
       areas[label]++;
       const right = x + 1 < width ? labels[i + 1] : -1, below = y + 1 < height ? labels[i + width] : -1;
       if (right >= 0 && right !== label) parent[root(right)] = root(label);
       if (below >= 0 && below !== label) parent[root(below)] = root(label);
     }
   }
-  if (parent !== null) {
-    const islandAreas = new Float64Array(count);
-    for (let r = 0; r < count; r++) islandAreas[root(r)] += areas[r];
-    for (let r = 0; r < count; r++) kept[r] = islandAreas[root(r)] >= minArea ? 1 : 0;
-  }
+  const islandAreas = new Float64Array(count);
+  for (let r = 0; r < count; r++) islandAreas[root(r)] += areas[r];
+  for (let r = 0; r < count; r++) kept[r] = islandAreas[root(r)] >= minArea ? 1 : 0;
   return { starts, kept };
 }
 
