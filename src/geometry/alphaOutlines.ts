@@ -12,9 +12,9 @@
  * - Unsimplified (tolerance 0), a region's outline holds exactly the centres of its pixels: the
  *   marching-squares contour passes midway between every inside and outside pixel centre.
  * - Two regions that the splitter cut apart share every midpoint of the pixel edges between them
- *   (both outlines run through them). Those points are pinned: simplification keeps the first and
- *   last of each run of them and every corner among them, so the simplified outlines still meet
- *   exactly along the cut, with no gap for light to pass.
+ *   (both outlines run through them). Those points are pinned: the splitter cuts along rows, so
+ *   each run of them is straight, and simplification keeps both ends of each run; the simplified
+ *   outlines still meet exactly along the cut, with no gap for light to pass.
  */
 import { holeFreeRegions, type CellGrid } from './gridRegions';
 import { isSimplePolygon, signedArea2 } from './polygon';
