@@ -6,6 +6,8 @@ export {
 } from './scene/lights';
 export type { Vec2Like, ColorLike } from './scene/validate';
 export { isSimplePolygon, signedArea2 } from './geometry/polygon';
+export { hullsFromTiles, TileHulls, type TileGrid, type TileHullsOptions, type TileHullsChange } from './scene/tileHulls';
+export { hullsFromAlpha, type AlphaImage, type HullsFromAlphaOptions } from './scene/hullsFromAlpha';
 export { readScene } from './format/readScene';
 export { writeScene } from './format/writeScene';
 export { SceneFormatError } from './format/SceneFormatError';
