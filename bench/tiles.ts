@@ -3,22 +3,12 @@
 import { holeFreeRegions } from '../src/geometry/gridRegions';
 import { traceOutlines } from '../src/geometry/tileOutlines';
 import { hullsFromTiles, TileHulls } from '../src/scene/tileHulls';
+import { createRandom } from '../test/reference/randomScenes';
 
-/** Mulberry32: seeded, so every process times the same grids. */
-function seeded(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /** A perfect maze (depth-first, seeded) on (2n+1)² tiles: 1 = wall. Its walls are one group around one hole. */
 function maze(n: number): number[][] {
-  const size = 2 * n + 1, random = seeded(1);
+  const size = 2 * n + 1, random = createRandom(1);
   const rows = Array.from({ length: size }, () => new Array<number>(size).fill(1));
   const stack: Array<[number, number]> = [[0, 0]];
   rows[1][1] = 0;
@@ -40,7 +30,7 @@ function maze(n: number): number[][] {
 }
 
 function randomMap(size: number, fill: number): number[][] {
-  const random = seeded(2);
+  const random = createRandom(2);
   return Array.from({ length: size }, () => Array.from({ length: size }, () => (random() < fill ? 1 : 0)));
 }
 
@@ -87,7 +77,7 @@ function outlines(rows: number[][]): Case {
 /** One setTile per run, on a random tile; every other run undoes the previous one, so the map stays near its start. */
 function edit(rows: number[][]): Case {
   const tiles = new TileHulls(rows, { tileSize: 32 });
-  const random = seeded(3);
+  const random = createRandom(3);
   let undo: [number, number, boolean] | null = null;
   return {
     describe: () => `${rows[0].length}×${rows.length}, ${count(rows)} solid, ${tiles.hulls.length} hulls`,

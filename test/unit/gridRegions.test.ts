@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { holeFreeRegions, type CellGrid } from '../../src/geometry/gridRegions';
-import { cellsByLabel, components4, isDisk, randomGrid, seeded, textGrid } from './gridSupport';
+import { cellsByLabel, components4, isDisk, randomGrid, textGrid } from './gridSupport';
+import { createRandom } from '../reference/randomScenes';
 
 /**
  * Checks every promise of holeFreeRegions against independent floods: each solid cell labelled
@@ -83,7 +84,7 @@ describe('holeFreeRegions', () => {
   });
 
   it('splits random grids into disks, never cutting a group that is one (600 grids, seeded)', () => {
-    const random = seeded(16);
+    const random = createRandom(16);
     for (let k = 0; k < 600; k++) {
       const width = 1 + Math.floor(random() * 24), height = 1 + Math.floor(random() * 24);
       checkRegions(randomGrid(width, height, 0.2 + 0.7 * random(), random));
@@ -91,7 +92,7 @@ describe('holeFreeRegions', () => {
   });
 
   it('cuts few times: a random grid has at most one region per group plus one per enclosed empty pocket', () => {
-    const random = seeded(7);
+    const random = createRandom(7);
     for (let k = 0; k < 50; k++) {
       const grid = randomGrid(40, 40, 0.6, random);
       const { count } = holeFreeRegions(grid);

@@ -1,17 +1,6 @@
-/** Helpers shared by the tile and grid-region tests: seeded randomness and independent grid checks. */
+/** Helpers shared by the tile and grid-region tests: independent grid checks. */
 import type { CellGrid } from '../../src/geometry/gridRegions';
 
-/** Mulberry32: a small seeded generator, uniform in [0, 1). */
-export function seeded(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /** A grid from rows of text: `#` solid, anything else empty. */
 export function textGrid(rows: readonly string[]): CellGrid {

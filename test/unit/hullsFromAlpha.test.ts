@@ -25,18 +25,8 @@ import { alphaOutlines } from '../../src/geometry/alphaOutlines';
 import { isInsidePolygon, isSimplePolygon, signedArea2 } from '../../src/geometry/polygon';
 import type { Hull } from '../../src/scene/Hull';
 import { hullsFromAlpha, type AlphaImage, type HullsFromAlphaOptions } from '../../src/scene/hullsFromAlpha';
+import { createRandom } from '../reference/randomScenes';
 
-/** Mulberry32: a small seeded generator, uniform in [0, 1). */
-function seeded(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /** An RGBA image whose alpha at pixel (x, y) is `alpha(x, y)`; colour channels carry noise that must not matter. */
 function image(width: number, height: number, alpha: (x: number, y: number) => number): AlphaImage {
@@ -273,7 +263,7 @@ describe('hullsFromAlpha: tracing', () => {
   });
 
   it('keeps discs of many sizes and places (some cut by the border) within the tolerance', () => {
-    const random = seeded(7);
+    const random = createRandom(7);
     for (let k = 0; k < 12; k++) {
       const tolerance = [0.5, 1, 2][k % 3];
       const img = discs(48, 40, [[random() * 48, random() * 40, 2 + random() * 20]]);
@@ -386,7 +376,7 @@ describe('hullsFromAlpha: tracing', () => {
   });
 
   it('handles noise at the threshold: valid hulls, exact with tolerance 0, specks dropped by minArea', () => {
-    const random = seeded(3);
+    const random = createRandom(3);
     const img = image(64, 48, (x, y) => {
       const inBlob = (x - 30) ** 2 / 500 + (y - 24) ** 2 / 250 < 1;
       const noise = random() < 0.5 ? 1 : -1;

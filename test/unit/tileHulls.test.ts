@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { isInsidePolygon, signedArea2 } from '../../src/geometry/polygon';
 import type { Hull } from '../../src/scene/Hull';
 import { hullsFromTiles, TileHulls } from '../../src/scene/tileHulls';
-import { seeded } from './gridSupport';
+import { createRandom } from '../reference/randomScenes';
 
 const flat = (hull: Hull) => hull.points.flat();
 
@@ -80,7 +80,7 @@ describe('hullsFromTiles', () => {
   });
 
   it('covers random grids exactly with valid hulls (300 grids, seeded)', () => {
-    const random = seeded(2024);
+    const random = createRandom(2024);
     for (let k = 0; k < 300; k++) {
       const width = 1 + Math.floor(random() * 20), height = 1 + Math.floor(random() * 20);
       const rows = randomRows(width, height, 0.15 + 0.8 * random(), random);
@@ -133,7 +133,7 @@ describe('TileHulls', () => {
   });
 
   it('keeps the hulls a fresh hullsFromTiles makes, through random setTile sequences (200 grids, seeded)', () => {
-    const random = seeded(99);
+    const random = createRandom(99);
     for (let k = 0; k < 200; k++) {
       const width = 1 + Math.floor(random() * 14), height = 1 + Math.floor(random() * 14);
       const rows = randomRows(width, height, 0.2 + 0.7 * random(), random);

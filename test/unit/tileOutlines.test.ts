@@ -2,7 +2,8 @@ import { describe, expect, it } from 'vitest';
 import { holeFreeRegions, type CellGrid } from '../../src/geometry/gridRegions';
 import { traceOutlines } from '../../src/geometry/tileOutlines';
 import { isInsidePolygon, isSimplePolygon, signedArea2 } from '../../src/geometry/polygon';
-import { randomGrid, seeded, textGrid } from './gridSupport';
+import { randomGrid, textGrid } from './gridSupport';
+import { createRandom } from '../reference/randomScenes';
 
 /**
  * Traces every region and checks each outline against the labels it came from: simple, positive
@@ -57,7 +58,7 @@ describe('traceOutlines', () => {
   });
 
   it('traces random grids (400, seeded): simple outlines covering exactly their cells', () => {
-    const random = seeded(3);
+    const random = createRandom(3);
     for (let k = 0; k < 400; k++) {
       const width = 1 + Math.floor(random() * 16), height = 1 + Math.floor(random() * 16);
       checkOutlines(randomGrid(width, height, 0.2 + 0.7 * random(), random));
