@@ -6,24 +6,19 @@
 // "outlines" is the splitting, tracing and simplification alone (src/geometry/alphaOutlines.ts);
 // "hullsFromAlpha" adds building the Hull objects (validation, triangulation). Target: ≤ 10 ms.
 //   node bench/alpha.mjs --runs=5
-import { spawnSync } from 'node:child_process';
 import { resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { runnerImport } from 'vite';
+import { benchArgs, median, runChild } from './coldWarm.mjs';
 
-const args = new Map(process.argv.slice(2).map((arg) => arg.replace(/^--/, '').split('=')));
-const median = (values) => values.sort((a, b) => a - b)[values.length >> 1];
+const args = benchArgs();
 
 if (args.has('child')) {
   await runnerImport(resolve(import.meta.dirname, 'alpha.ts'));
 } else {
   const runs = Number(args.get('runs') ?? 5);
   const script = fileURLToPath(import.meta.url);
-  const child = (what, repeat) => {
-    const run = spawnSync(process.execPath, [script, `--child=${what}`, `--repeat=${repeat}`], { encoding: 'utf8' });
-    if (run.status !== 0) throw new Error(run.stderr);
-    return JSON.parse(run.stdout.trim().split('\n').pop());
-  };
+  const child = (what, repeat) => runChild(script, what, repeat);
   console.log(`| 256 × 256 sprite | hulls | points | first in a process, ms (median of ${runs}) | warm, ms (median of calls 31–60) |`);
   console.log('|---|---|---|---|---|');
   for (const what of ['outlines', 'hullsFromAlpha']) {

@@ -5,8 +5,8 @@
 // several processes; and warm, median of later hulls in one process. A scene file's load (parse,
 // check, build) is timed the same way.
 //   npm run bench:hulls -- --runs=5
-import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
+import { benchArgs, median, runChild } from './coldWarm.mjs';
 
 const OUTLINES = {
   /** 10,000 spikes: half its points reflex, the sweep line crossing thousands of edges. */
@@ -32,9 +32,8 @@ function comb(n) {
   return points;
 }
 
-const args = new Map(process.argv.slice(2).map((arg) => arg.replace(/^--/, '').split('=')));
+const args = benchArgs();
 const runs = Number(args.get('runs') ?? 5);
-const median = (values) => values.sort((a, b) => a - b)[values.length >> 1];
 
 if (args.has('child')) {
   // One measurement in this process: `--child=<outline>|scene --repeat=<k>` prints k times in ms.
@@ -52,11 +51,7 @@ if (args.has('child')) {
   console.log(JSON.stringify(times));
 } else {
   const script = fileURLToPath(import.meta.url);
-  const child = (name, repeat) => {
-    const run = spawnSync(process.execPath, [script, `--child=${name}`, `--repeat=${repeat}`], { encoding: 'utf8' });
-    if (run.status !== 0) throw new Error(run.stderr);
-    return JSON.parse(run.stdout);
-  };
+  const child = (name, repeat) => runChild(script, name, repeat);
   console.log(`| outline | first in a process, ms (median of ${runs}) | warm, ms (median of 10) |`);
   console.log('|---|---|---|');
   for (const outline of Object.keys(OUTLINES)) {

@@ -4,14 +4,13 @@
 // timed twice: the first call in a fresh Node process (the code still cold, as for the first level
 // a game loads), median of several processes; and warm, median of later calls in one process.
 //   node bench/tiles.mjs -- --runs=5
-import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { resolve } from 'node:path';
 import { runnerImport } from 'vite';
+import { benchArgs, median, runChild } from './coldWarm.mjs';
 
-const args = new Map(process.argv.slice(2).filter((arg) => arg !== '--').map((arg) => arg.replace(/^--/, '').split('=')));
+const args = benchArgs();
 const runs = Number(args.get('runs') ?? 5);
-const median = (values) => [...values].sort((a, b) => a - b)[values.length >> 1];
 const { module } = await runnerImport(resolve(import.meta.dirname, 'tiles.ts'));
 
 if (args.has('child')) {
@@ -21,11 +20,7 @@ if (args.has('child')) {
   console.log(JSON.stringify(Array.from({ length: repeat }, () => bench.run())));
 } else {
   const script = fileURLToPath(import.meta.url);
-  const child = (name, repeat) => {
-    const run = spawnSync(process.execPath, [script, `--child=${name}`, `--repeat=${repeat}`], { encoding: 'utf8' });
-    if (run.status !== 0) throw new Error(run.stderr);
-    return JSON.parse(run.stdout.trim().split('\n').pop());
-  };
+  const child = (name, repeat) => runChild(script, name, repeat);
   console.log(`| case | grid | first in a process, ms (median of ${runs}) | warm, ms (median) |`);
   console.log('|---|---|---|---|');
   for (const name of Object.keys(module.CASES)) {
