@@ -12,11 +12,61 @@ export const PLAYER_RADIUS = 10;
 export const PLAYER_SPEED = 160;
 export const PLAYER_START: readonly [number, number] = [330, 300];
 
+/** Width and height of a tile of the level's tile map, in world units. */
+export const TILE_SIZE = 20;
+export const TILES_WIDE = WORLD_WIDTH / TILE_SIZE;
+export const TILES_HIGH = WORLD_HEIGHT / TILE_SIZE;
+
+/** The walls, whole tiles each: the examples build them as a tile map, whose solid tiles are the hulls. */
 export const WALLS: readonly Rect[] = [
   [0, 0, WORLD_WIDTH, 20], [0, WORLD_HEIGHT - 20, WORLD_WIDTH, 20],
   [0, 0, 20, WORLD_HEIGHT], [WORLD_WIDTH - 20, 0, 20, WORLD_HEIGHT],
-  [400, 150, 40, 300], [600, 20, 30, 200], [620, 420, 200, 30], [120, 440, 140, 40], [160, 150, 60, 60],
+  [400, 140, 40, 320], [600, 20, 40, 200], [620, 420, 200, 40], [120, 440, 140, 40], [160, 140, 60, 60],
 ];
+
+/** The level as a tile map, row by row: 1 for a wall tile, 0 for floor. A fresh copy on each call. */
+export function levelTiles(): number[][] {
+  const rows = Array.from({ length: TILES_HIGH }, () => new Array<number>(TILES_WIDE).fill(0));
+  for (const [x, y, w, h] of WALLS) {
+    for (let ty = y / TILE_SIZE; ty < (y + h) / TILE_SIZE; ty++) {
+      for (let tx = x / TILE_SIZE; tx < (x + w) / TILE_SIZE; tx++) rows[ty][tx] = 1;
+    }
+  }
+  return rows;
+}
+
+/** The prop: a sprite whose hulls are traced from its image's alpha; it turns slowly where it stands. */
+export const PROP_POSITION: readonly [number, number] = [530, 330];
+/** Size of the prop's image in pixels (drawn 1:1 in world units). */
+export const PROP_SIZE = 48;
+/** Turn rate of the prop, radians per second. */
+export const PROP_SPIN = 0.4;
+
+/**
+ * The prop's image, drawn in code: a five-pointed star with a round hole, RGBA bytes (an `ImageData`
+ * in the browser). Its alpha is what the hulls are traced from: the hole lets light through.
+ */
+export function propImage(): ImageData {
+  const size = PROP_SIZE;
+  const data = new Uint8ClampedArray(size * size * 4);
+  const centre = size / 2;
+  for (let y = 0; y < size; y++) {
+    for (let x = 0; x < size; x++) {
+      const dx = x + 0.5 - centre, dy = y + 0.5 - centre;
+      const distance = Math.hypot(dx, dy);
+      const angle = Math.atan2(dy, dx) + Math.PI / 2;
+      // A star: the outer radius swings between 10 and 23 pixels five times around.
+      const outline = 10 + 13 * Math.abs(Math.cos((angle * 5) / 2)) ** 2;
+      const solid = distance <= outline && distance >= 5;
+      const i = (y * size + x) * 4;
+      data[i] = 200;
+      data[i + 1] = 170;
+      data[i + 2] = 90;
+      data[i + 3] = solid ? 255 : 0;
+    }
+  }
+  return new ImageData(data, size, size);
+}
 
 /** Lamps: position and colour. */
 export const LAMPS: readonly { position: [number, number]; color: [number, number, number] }[] = [
@@ -96,6 +146,10 @@ export interface ExampleHook {
   removeLighting(): boolean;
   /** The canvas: its CSS size, and its drawing buffer's size (the engine resizes both with the window). */
   canvasSize(): { css: [number, number]; buffer: [number, number] };
+  /** Makes tile (x, y) of the level's tile map a wall or floor, through the engine's own tile map API where it has one. */
+  setTile(x: number, y: number, solid: boolean): void;
+  /** Places the prop sprite (world position, rotation in radians, scale, mirrored left–right) and stops its spinning. */
+  setProp(x: number, y: number, rotation: number, scale: number, flipX: boolean): void;
 }
 
 declare global {
