@@ -5,13 +5,19 @@
 // disk and nearest where it first meets a record. The integrand is smooth between "breaks": the
 // directions of the records' points (where the nearest edge changes), of their edges' crossings
 // with the disk's rim, and of the union's ends (where the records in front take over). The sweep
-// goes from break to break (pieces wider than MAX_STEP are cut), skips the pieces the union covers,
-// and gives each piece two Gauss–Legendre nodes. It keeps no arrays (ANGLE zeroes them in every
+// goes from break to break (pieces wider than MAX_STEP are cut, and breaks less than MIN_STEP after
+// the last one are passed over), skips the pieces the union covers, and gives each piece two
+// Gauss–Legendre nodes. It keeps no arrays (ANGLE zeroes them in every
 // fragment, used or not; see docs/performance.md): it scans the pixel's bin again for each next break and each node.
 // Directions in a piece outside the union miss every record in front, so the scans need not tell
 // records apart.
 const int MAX_PIECES = 64;
 const float MAX_STEP = PI / 16.0;
+// Breaks this close share a piece: the corners at each end of an open hull's thin segment box
+// (see ShadowGeometry) would otherwise take pieces of their own and use up MAX_PIECES. A break
+// passed over spoils the integrand over at most MIN_STEP of angle, which holds less than
+// ½ (2r)² MIN_STEP of the disk's area: under 2e-4 of it.
+const float MIN_STEP = 3e-4;
 
 // The angle of the direction to the disk's centre, and half the disk's angular width (π inside it).
 float axisAngle;
@@ -147,7 +153,7 @@ float hiddenPast() {
   for (int piece = 0; piece < MAX_PIECES; piece++) {
     if (from >= end) break;
     // The last piece allowed takes the rest of the domain.
-    float to = piece == MAX_PIECES - 1 ? end : nextBreak(from, min(end, from + MAX_STEP));
+    float to = piece == MAX_PIECES - 1 ? end : nextBreak(from + MIN_STEP, min(end, from + MAX_STEP));
     float middle = 0.5 * (from + to), step = to - from;
     if (insideDisk || !inUnion(middle)) {
       hidden += 0.5 * step * (hiddenAlong(middle - offset * step) + hiddenAlong(middle + offset * step));

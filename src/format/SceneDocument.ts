@@ -7,8 +7,11 @@
 
 /** The value of a scene file's `format` field. */
 export const SCENE_FORMAT = 'penumbra-scene';
-/** The format version this package writes; {@link readScene} rejects any other. */
-export const SCENE_FORMAT_VERSION = 1;
+/**
+ * The format version this package writes. {@link readScene} also reads version 1 files (the same
+ * without `hulls[i].closed`) and rejects any other version.
+ */
+export const SCENE_FORMAT_VERSION = 2;
 
 /**
  * The most points a hull of a scene file may have; {@link readScene} rejects a file with more
@@ -18,11 +21,11 @@ export const SCENE_FORMAT_VERSION = 1;
  */
 export const SCENE_MAX_HULL_POINTS = 20_000;
 
-/** A whole scene file, version 1. */
+/** A whole scene file, version 2 (what {@link readScene} returns for a version 1 file too). */
 export interface SceneDocument {
   /** Always `"penumbra-scene"`. */
   format: typeof SCENE_FORMAT;
-  /** Always `1`. */
+  /** Always `2`. */
   version: typeof SCENE_FORMAT_VERSION;
   /** Colour of unlit areas `[r, g, b]`, channels ≥ 0. Optional, default `[0.2, 0.2, 0.2]`. */
   ambient: [number, number, number];
@@ -59,6 +62,8 @@ export interface SceneHull {
   scale: [number, number];
   /** Optional, default `true`. */
   enabled: boolean;
+  /** `false` for an open polyline (see `Hull.closed`). Optional, default `true`; not in version 1 files. */
+  closed: boolean;
 }
 
 /** Fields every light kind has, as in `LightOptions`. */

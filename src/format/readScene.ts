@@ -11,7 +11,9 @@ import { SceneFormatError } from './SceneFormatError';
 
 const DOCUMENT_FIELDS = ['format', 'version', 'ambient', 'camera', 'hulls', 'lights'] as const;
 const CAMERA_FIELDS = ['center', 'zoom'] as const;
-const HULL_FIELDS = ['points', 'position', 'origin', 'rotation', 'scale', 'enabled'] as const;
+const HULL_FIELDS_V1 = ['points', 'position', 'origin', 'rotation', 'scale', 'enabled'] as const;
+/** Per version this reader knows, the fields a hull may have. */
+const HULL_FIELDS: Readonly<Record<number, readonly string[]>> = { 1: HULL_FIELDS_V1, [SCENE_FORMAT_VERSION]: [...HULL_FIELDS_V1, 'closed'] };
 const LIGHT_FIELDS = [
   'kind', 'position', 'range', 'radius', 'color', 'intensity', 'rotation', 'origin', 'shadowType', 'enabled',
   'castsShadows', 'ignoredHulls',
@@ -26,7 +28,7 @@ const LIGHT_KINDS = ['point', 'spot', 'textured'] as const;
  * @returns a complete {@link SceneDocument} with defaults filled in; it shares nothing with the input.
  * @throws {SceneFormatError} and nothing else, for any input, naming the path of the first bad
  *   field, e.g. `hulls[3].points[1]: expected two finite numbers, got [1,null]`; also for text
- *   that is not JSON, another `format`, a `version` other than {@link SCENE_FORMAT_VERSION}, a hole
+ *   that is not JSON, another `format`, a `version` other than 1 or {@link SCENE_FORMAT_VERSION}, a hole
  *   in an array, or a hull of more than {@link SCENE_MAX_HULL_POINTS} points. Bad values are shown
  *   cut to about 80 characters and 3 levels deep.
  */
@@ -46,10 +48,11 @@ function readDocument(input: unknown): SceneDocument {
     throw new SceneFormatError('format', `expected "${SCENE_FORMAT}", got ${describeValue(root.value.format)}`);
   }
   const version = numberField(root, 'version');
-  if (version !== SCENE_FORMAT_VERSION) {
-    throw new SceneFormatError('version', `unsupported version ${version} (this reader knows version ${SCENE_FORMAT_VERSION})`);
+  if (!Object.hasOwn(HULL_FIELDS, version)) {
+    throw new SceneFormatError('version', `unsupported version ${version} (this reader knows versions 1 and ${SCENE_FORMAT_VERSION})`);
   }
-  const hulls = readList(root.value.hulls, 'hulls', readHull);
+  const hullFields = HULL_FIELDS[version];
+  const hulls = readList(root.value.hulls, 'hulls', (value, path) => readHull(value, path, hullFields));
   const lights = readList(root.value.lights, 'lights', (value, path) => readLight(value, path, hulls.length));
   return {
     format: SCENE_FORMAT,
@@ -83,8 +86,8 @@ function readCamera(value: unknown, path: string): SceneCamera {
   return { center: vec2Field(camera, 'center', [0, 0]), zoom: positiveField(camera, 'zoom', 1) };
 }
 
-function readHull(value: unknown, path: string): SceneHull {
-  const hull = readObject(value, path, HULL_FIELDS);
+function readHull(value: unknown, path: string, fields: readonly string[]): SceneHull {
+  const hull = readObject(value, path, fields);
   const pointsPath = childPath(path, 'points');
   if (hull.value.points === undefined) throw new SceneFormatError(pointsPath, 'required field is missing');
   return {
@@ -94,6 +97,7 @@ function readHull(value: unknown, path: string): SceneHull {
     rotation: numberField(hull, 'rotation', 0),
     scale: vec2Field(hull, 'scale', [1, 1]),
     enabled: booleanField(hull, 'enabled', true),
+    closed: booleanField(hull, 'closed', true),
   };
 }
 

@@ -70,6 +70,7 @@ export function describeScene(input: SceneDescriptionInput): SceneDocument {
       rotation: hull.rotation,
       scale: [...hull.scale],
       enabled: hull.enabled,
+      closed: hull.closed,
     })),
     lights: input.lights.map((light) => describeLight(light, hullIndex, input.cookieName)),
   };

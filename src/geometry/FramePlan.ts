@@ -125,7 +125,7 @@ export class FramePlan {
       const k = 4 * index;
       if (bounds[k] > b[2] || bounds[k + 2] < b[0] || bounds[k + 1] > b[3] || bounds[k + 3] < b[1]) continue;
       if (bounds[k] <= lx && lx <= bounds[k + 2] && bounds[k + 1] <= ly && ly <= bounds[k + 3]
-        && isInsidePolygon(hulls[index].worldPoints, light.position)) return false;
+        && hulls[index].closed && isInsidePolygon(hulls[index].worldPoints, light.position)) return false;
       inRange[this.inRangeCount++] = index;
     }
     return true;

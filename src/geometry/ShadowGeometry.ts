@@ -150,9 +150,11 @@ export class ShadowGeometry {
 
   /** Writes the hull's records (see {@link recordCountOf}) and copies its world bounds. */
   private writeHull(hull: Hull, index: number): void {
-    const world = hull.worldPoints, count = hull.edgeCount;
+    const world = hull.worldPoints, count = hull.pointCount;
     let record = this.firstRecords[index];
-    if (hull.convex) {
+    if (!hull.closed) {
+      for (let i = 0; i + 1 < count; i++, record++) this.writeSegmentBox(record, world, i);
+    } else if (hull.convex) {
       // A fan: the first record takes points 0..7, each next one point 0, the previous record's last
       // point and up to RECORD_POINTS - 2 new ones.
       this.startRecord(record);
@@ -181,9 +183,34 @@ export class ShadowGeometry {
       const dx = world[2 * i] - cx, dy = world[2 * i + 1] - cy;
       farthest2 = Math.max(farthest2, dx * dx + dy * dy);
     }
+    // An open hull's boxes reach their half width past its points.
+    const margin = hull.closed ? 0 : segmentBoxHalfWidth(Math.max(-from[0], -from[1], from[2], from[3]));
     this.circles[3 * index] = cx;
     this.circles[3 * index + 1] = cy;
-    this.circles[3 * index + 2] = Math.sqrt(farthest2);
+    this.circles[3 * index + 2] = Math.sqrt(farthest2) + margin;
+  }
+
+  /**
+   * Writes the segment from world point `i` to point `i + 1` of an open hull as a box around it, as
+   * thin as float rounding allows: a record must have an inside, and any line that crosses the
+   * segment crosses the box, so the boxes of a polyline block all that it blocks (joints included).
+   */
+  private writeSegmentBox(record: number, world: Float32Array, i: number): void {
+    const ax = world[2 * i], ay = world[2 * i + 1], bx = world[2 * i + 2], by = world[2 * i + 3];
+    const halfWidth = segmentBoxHalfWidth(Math.max(Math.abs(ax), Math.abs(ay), Math.abs(bx), Math.abs(by)));
+    const length = Math.hypot(bx - ax, by - ay);
+    // The left normal (counter-clockwise in x-right, y-up axes) times the half width.
+    const nx = (-(by - ay) / length) * halfWidth, ny = ((bx - ax) / length) * halfWidth;
+    const records = this.records, k = record * RECORD_FLOATS;
+    records[k] = ax - nx;
+    records[k + 1] = ay - ny;
+    records[k + 2] = bx - nx;
+    records[k + 3] = by - ny;
+    records[k + 4] = bx + nx;
+    records[k + 5] = by + ny;
+    records[k + 6] = ax + nx;
+    records[k + 7] = ay + ny;
+    this.recordPointCounts[record] = RECORD_POINTS;
   }
 
   private startRecord(record: number): void {
@@ -201,9 +228,23 @@ export class ShadowGeometry {
   }
 }
 
-/** Records of a hull: one per {@link RECORD_POINTS}-point fan piece of a convex hull, one per triangle of a concave one. */
+/**
+ * Half the width of the box an open hull's segment is drawn as, for coordinates up to `magnitude`
+ * in absolute value: 2^-10 world units, small enough that the shadow differs from the segment's by
+ * less than the shader's other limits a pixel away from an end; and at least 16 float32 steps at
+ * that magnitude (2^-19 of it, from 512 on), so that rounding cannot close the box.
+ */
+function segmentBoxHalfWidth(magnitude: number): number {
+  return Math.max(2 ** -10, magnitude * 2 ** -19);
+}
+
+/**
+ * Records of a hull: one per {@link RECORD_POINTS}-point fan piece of a convex hull, one per
+ * triangle of a concave one, one box per segment of an open one.
+ */
 export function recordCountOf(hull: Hull): number {
   if (!hull.valid) return 0;
+  if (!hull.closed) return hull.edgeCount;
   if (hull.convex) return 1 + Math.max(0, Math.ceil((hull.edgeCount - RECORD_POINTS) / (RECORD_POINTS - 2)));
   return hull.worldTriangles.length / 3;
 }

@@ -20,13 +20,22 @@ export function signedArea2(coords: ArrayLike<number>, count = coords.length >> 
  * pushed and popped at most once.
  */
 export function simplifyPolygon(coords: ArrayLike<number>): number[] {
+  return closeSeam(simplifyPolyline(coords));
+}
+
+/**
+ * The points of an open polyline `[x0, y0, …]` without repeated points and without points that
+ * lie on the segment between their neighbours (where the line goes on in the same direction; a
+ * point where it turns back is kept). The ends are always kept.
+ */
+export function simplifyPolyline(coords: ArrayLike<number>): number[] {
   const out: number[] = [];
   for (let i = 0; i + 1 < coords.length; i += 2) {
     const x = coords[i], y = coords[i + 1];
     while (out.length >= 4 && isRemovable(out, out.length - 4, out.length - 2, x, y)) out.length -= 2;
     if (out.length < 2 || out[out.length - 2] !== x || out[out.length - 1] !== y) out.push(x, y);
   }
-  return closeSeam(out);
+  return out;
 }
 
 /**

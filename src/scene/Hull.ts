@@ -1,4 +1,4 @@
-import { isConvexPolygon, isSimplePolygon, signedArea2, simplifyPolygon, triangulate } from '../geometry/polygon';
+import { isConvexPolygon, isSimplePolygon, signedArea2, simplifyPolygon, simplifyPolyline, triangulate } from '../geometry/polygon';
 import { assertBoolean, assertFinite, assertOptions, describeValue, frozenPair, frozenVec2, vec2ListCoords, type Vec2Like } from './validate';
 
 /** Options of a {@link Hull}; every field has the default shown. */
@@ -13,15 +13,22 @@ export interface HullOptions {
   scale?: number | Vec2Like;
   /** A disabled hull casts no shadow. Default `true`. */
   enabled?: boolean;
+  /**
+   * `false` makes the hull an open polyline: a thin wall, fence or cliff edge that blocks light
+   * from both sides and has no inside (see {@link Hull.closed}). Fixed at construction. Default `true`.
+   */
+  closed?: boolean;
 }
 
 /**
- * A polygon that blocks light. Points are in the hull's local space, in either winding;
- * `position`, `origin`, `rotation` and `scale` place them in the world.
+ * A polygon that blocks light, or with `closed: false` an open polyline that does. Points are in
+ * the hull's local space, in either winding; `position`, `origin`, `rotation` and `scale` place
+ * them in the world.
  *
- * A hull with fewer than 3 distinct points, crossing edges or zero area is kept but flagged
+ * A polygon with fewer than 3 distinct points, crossing edges or zero area is kept but flagged
  * `valid === false` and ignored by the renderer; giving it correct points makes it valid again.
- * Checking and triangulating the points takes O(n log n) for most outlines.
+ * Checking and triangulating the points takes O(n log n) for most outlines. A polyline needs 2
+ * distinct points; it may cross itself.
  *
  * Setters and options are checked as the lights' are (`TypeError` for a wrong type, `RangeError`
  * for NaN or ∞, naming the property). `points`, `position`, `origin` and `scale` are frozen
@@ -37,9 +44,10 @@ export class Hull {
   private _scale: readonly [number, number] = Object.freeze([1, 1] as const);
   private _rotation = 0;
   private _enabled = true;
+  private readonly _closed: boolean;
   private _shapeValid = false;
   private _convex = false;
-  /** Cleaned local points, counter-clockwise. */
+  /** Cleaned local points: counter-clockwise for a polygon, in the given order for a polyline. */
   private localPoints!: Float64Array;
   private localTriangles: readonly number[] = [];
   private mirroredTriangles: readonly number[] = [];
@@ -66,6 +74,7 @@ export class Hull {
 
   constructor(points: ReadonlyArray<Vec2Like>, options: HullOptions = {}) {
     assertOptions('Hull', options);
+    this._closed = options.closed === undefined ? true : assertBoolean('Hull.closed', options.closed);
     this.points = points;
     if (options.position !== undefined) this.position = options.position;
     if (options.origin !== undefined) this.origin = options.origin;
@@ -84,12 +93,13 @@ export class Hull {
     const coords = vec2ListCoords('Hull.points', points);
     this.givenCoords = coords;
     this._points = null;
-    const cleaned = simplifyPolygon(coords);
-    this._shapeValid = isSimplePolygon(cleaned);
-    if (this._shapeValid && signedArea2(cleaned) < 0) reversePoints(cleaned);
+    const closed = this._closed;
+    const cleaned = closed ? simplifyPolygon(coords) : simplifyPolyline(coords);
+    this._shapeValid = closed ? isSimplePolygon(cleaned) : cleaned.length >= 4;
+    if (closed && this._shapeValid && signedArea2(cleaned) < 0) reversePoints(cleaned);
     this.localPoints = Float64Array.from(cleaned);
-    this.localTriangles = this._shapeValid ? triangulate(cleaned) : [];
-    this._convex = this._shapeValid && isConvexPolygon(cleaned);
+    this.localTriangles = closed && this._shapeValid ? triangulate(cleaned) : [];
+    this._convex = closed && this._shapeValid && isConvexPolygon(cleaned);
     const last = (cleaned.length >> 1) - 1;
     this.mirroredTriangles = this.localTriangles.map((index) => last - index);
     this.worldPoints = new Float32Array(cleaned.length);
@@ -150,7 +160,21 @@ export class Hull {
     this.touch();
   }
 
-  /** Whether the points form a simple polygon (≥ 3 points, no crossing edges, non-zero area) and the scale is non-zero. */
+  /**
+   * Whether the hull is closed (a polygon with an inside: see {@link Hull}) or an open polyline.
+   * A polyline's shadow is exact as a polygon's is, to within a band about a thousandth of a world
+   * unit wide along it (the renderer draws each segment as a box 2^-9 wide, or 2^-18 of the
+   * coordinates' magnitude where that is more, so that float rounding cannot close it). It has no inside:
+   * `ShadowType` and a light centre on it change nothing.
+   */
+  get closed(): boolean {
+    return this._closed;
+  }
+
+  /**
+   * Whether the points form a simple polygon (≥ 3 points, no crossing edges, non-zero area), or for
+   * an open hull a polyline of ≥ 2 distinct points, and the scale is non-zero.
+   */
   get valid(): boolean {
     return this._shapeValid && this._scale[0] !== 0 && this._scale[1] !== 0;
   }
@@ -160,8 +184,16 @@ export class Hull {
     return this._convex && this.valid;
   }
 
-  /** Number of points (= edges) the renderer uses: the given points without duplicates and collinear points. */
+  /**
+   * Number of edges the renderer uses: of a polygon, its points without duplicates and collinear
+   * points; of an open polyline, one fewer.
+   */
   get edgeCount(): number {
+    return this.pointCount - (this._closed ? 0 : 1);
+  }
+
+  /** Number of points the renderer uses (of `worldPoints`). @internal */
+  get pointCount(): number {
     return this.localPoints.length >> 1;
   }
 
@@ -182,7 +214,7 @@ export class Hull {
   updateWorld(): boolean {
     if (this.worldVersion === this.version) return false;
     this.worldVersion = this.version;
-    const n = this.edgeCount;
+    const n = this.pointCount;
     const cos = Math.cos(this._rotation), sin = Math.sin(this._rotation);
     // Indexed, not destructured: array destructuring goes through the iterator protocol and allocates.
     const sx = this._scale[0], sy = this._scale[1];

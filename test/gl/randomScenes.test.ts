@@ -11,7 +11,7 @@ import { renderLightmap } from './lightmap';
 
 /**
  * Property test: random scenes (convex and concave hulls of any size and rotation, rows of touching
- * tiles, overlapping hulls; 1–3 lights of radius 0–30 anywhere outside the hulls, their disks free
+ * tiles, overlapping hulls, open polylines; 1–3 lights of radius 0–30 anywhere outside the hulls, their disks free
  * to overlap them) rendered on headless-gl, each held to the same limits as the fixed reference
  * scenes (test/reference/limits.ts) against the exact CPU reference.
  *

@@ -24,6 +24,7 @@ export function setScene(renderer: PenumbraRenderer, scene: ReferenceScene): voi
     renderer.addLight(new PointLight({ position, range, radius, color, intensity, shadowType: ShadowType.Solid }));
   }
   for (const points of scene.hulls) renderer.addHull(new Hull(points));
+  for (const points of scene.polylines ?? []) renderer.addHull(new Hull(points, { closed: false }));
 }
 
 /** Lightmap texels (RGBA, rows bottom-up as GL reads them) → RGB rows top-down as the world is laid out. */

@@ -21,8 +21,9 @@ const snap = (value: number) => Math.round(value * 64) / 64;
 
 /**
  * A random scene of `width × height` from `seed`: 1–5 features, each a convex polygon, a rotated
- * box, a concave star or U, or a row of 3–8 touching square tiles (one hull each, on whole pixels
- * like a tile map); hulls may overlap one another and reach past the image. Then 1–3 lights,
+ * box, a concave star or U, a row of 3–8 touching square tiles (one hull each, on whole pixels
+ * like a tile map), or an open polyline of 2–6 points (a fence, free to cross itself); hulls and
+ * polylines may overlap one another and reach past the image. Then 1–3 lights,
  * anywhere within 8 pixels of the image, centre outside every hull (at least half a pixel from any
  * outline) with a disk free to overlap hulls: radius 0 one time in five, else 1–30; range 20–100;
  * white or coloured, intensity 0.5–1.5.
@@ -32,11 +33,12 @@ export function randomScene(seed: number, width: number, height: number): Refere
   const between = (low: number, high: number) => low + (high - low) * random();
   const integer = (low: number, high: number) => Math.floor(between(low, high + 1));
   const hulls: Point[][] = [];
+  const polylines: Point[][] = [];
   const featureCount = integer(1, 5);
   for (let f = 0; f < featureCount; f++) {
     const cx = between(0, width), cy = between(0, height);
     const rotation = between(0, 2 * Math.PI);
-    const kind = integer(0, 4);
+    const kind = integer(0, 5);
     if (kind === 0) {
       // Convex: 3–8 points on a circle at jittered angles, stretched into an ellipse and turned.
       const count = integer(3, 8), radius = between(1.5, 14), stretch = between(0.4, 1);
@@ -55,14 +57,24 @@ export function randomScene(seed: number, width: number, height: number): Refere
       const depth = between(0.3, 0.8);
       const u: Point[] = [[-1, -1], [-0.4, -1], [-0.4, 1 - 2 * depth], [0.4, 1 - 2 * depth], [0.4, -1], [1, -1], [1, 1], [-1, 1]];
       hulls.push(transform(u, cx, cy, rotation, between(5, 15)));
-    } else {
+    } else if (kind === 4) {
       // A row or column of touching square tiles on whole pixels.
       const size = random() < 0.5 ? 4 : 8, count = integer(3, 8), horizontal = random() < 0.5;
       const x0 = Math.round(cx - size), y0 = Math.round(cy - size);
       for (let i = 0; i < count; i++) hulls.push(horizontal ? box(x0 + i * size, y0, size, size) : box(x0, y0 + i * size, size, size));
+    } else {
+      // An open polyline: a walk of 1–5 steps of 4–20 pixels, turning up to 150° at each point.
+      const points: Point[] = [[snap(cx), snap(cy)]];
+      let heading = rotation;
+      for (let i = integer(1, 5); i > 0; i--) {
+        const [x, y] = points[points.length - 1], step = between(4, 20);
+        points.push([snap(x + step * Math.cos(heading)), snap(y + step * Math.sin(heading))]);
+        heading += between(-2.6, 2.6);
+      }
+      polylines.push(points);
     }
   }
-  const geometry = new SceneGeometry(hulls);
+  const geometry = new SceneGeometry(hulls, polylines);
   const lights: ReferenceLight[] = [];
   const lightCount = integer(1, 3);
   for (let attempt = 0; lights.length < lightCount && attempt < 1000; attempt++) {
@@ -76,7 +88,7 @@ export function randomScene(seed: number, width: number, height: number): Refere
     if (intensity !== 1) light.intensity = intensity;
     lights.push(light);
   }
-  return { name: `random scene (seed ${seed})`, width, height, lights, hulls };
+  return { name: `random scene (seed ${seed})`, width, height, lights, hulls, polylines };
 }
 
 /** `count` points at (radius, angle) pairs around (cx, cy). */

@@ -1,9 +1,9 @@
 import type { Point } from './scenes';
 
 /**
- * The hulls of a scene as the CPU references use them: every edge, every point where two edges
- * cross (overlapping hulls), and point-in-hull tests. Plain double-precision geometry, none of the
- * renderer's code.
+ * The hulls and open polylines of a scene as the CPU references use them: every edge, every point
+ * where two edges cross (overlapping hulls), and point-in-hull tests (polylines have no inside).
+ * Plain double-precision geometry, none of the renderer's code.
  */
 export class SceneGeometry {
   /** Every hull edge, `[ax, ay, bx, by, …]`. */
@@ -14,17 +14,19 @@ export class SceneGeometry {
   readonly vertices: Float64Array;
   private readonly hulls: readonly Float64Array[];
 
-  constructor(hulls: readonly (readonly Point[])[]) {
+  constructor(hulls: readonly (readonly Point[])[], polylines: readonly (readonly Point[])[] = []) {
     this.hulls = hulls.map((hull) => Float64Array.from(hull.flat()));
     const edges: number[] = [];
-    for (const hull of hulls) {
-      for (let i = 0; i < hull.length; i++) {
-        const a = hull[i], b = hull[(i + 1) % hull.length];
+    const addEdges = (points: readonly Point[], closed: boolean): void => {
+      for (let i = 0; i < points.length - (closed ? 0 : 1); i++) {
+        const a = points[i], b = points[(i + 1) % points.length];
         edges.push(a[0], a[1], b[0], b[1]);
       }
-    }
+    };
+    for (const hull of hulls) addEdges(hull, true);
+    for (const polyline of polylines) addEdges(polyline, false);
     this.edges = Float64Array.from(edges);
-    this.vertices = Float64Array.from(hulls.flat(2));
+    this.vertices = Float64Array.from([...hulls, ...polylines].flat(2));
     this.crossings = findCrossings(this.edges);
   }
 

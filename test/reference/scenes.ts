@@ -21,6 +21,8 @@ export interface ReferenceScene {
   lights: ReferenceLight[];
   /** World-space outlines, in either winding. */
   hulls: Point[][];
+  /** World-space open polylines (`new Hull(points, { closed: false })`): edges that block light from both sides, no inside. */
+  polylines?: Point[][];
   /**
    * Also held to UMBRA_LIMIT (test/reference/limits.ts) in its umbra: set on the tile walls, where
    * light leaking through the seams between tiles shows as lit pixels the reference calls umbra.
@@ -135,4 +137,24 @@ export const REFERENCE_SCENES: readonly ReferenceScene[] = [
   // A wide light whose disk reaches a little into two hulls on either side.
   { name: 'wide light grazing two hulls (r=20)', width: WIDTH, height: HEIGHT,
     lights: [{ position: [80, 60], range: 110, radius: 20 }], hulls: [box(44, 45, 18, 10), box(93, 73, 14, 14)] },
+
+  // Open polylines: thin walls and fences with no inside, blocking light from both sides.
+  { name: 'fence across the light (r=8)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [40, 60], range: 140, radius: 8 }], hulls: [], polylines: [[[80, 35], [80, 85]]] },
+  { name: 'zigzag fence, hard (r=0)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [40.3, 60.2], range: 140, radius: 0 }], hulls: [], polylines: [[[70, 30], [85, 45], [70, 60], [85, 75], [70, 90]]] },
+  // The pixels inside the V see the disk past its arms, each arm hiding part of it from the other's side.
+  { name: 'V fence opening towards the light (r=6)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [30, 60], range: 150, radius: 6 }], hulls: [], polylines: [[[105, 30], [75, 60], [105, 90]]] },
+  // A path that crosses itself, and a box behind it: the union of everything between pixel and disk.
+  { name: 'self-crossing fence and a box (r=10)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [35, 60], range: 140, radius: 10 }], hulls: [box(115, 52, 10, 16)], polylines: [[[65, 40], [95, 80], [95, 40], [65, 80]]] },
+  // A torch on a thin wall: the line cuts its disk, and each side sees only its own part of it.
+  { name: 'torch on a thin wall, disk cut in two (r=8)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [80, 58], range: 120, radius: 8 }], hulls: [], polylines: [[[20, 60], [140, 60]]] },
+  { name: 'light centred on a thin wall (r=8)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [80, 60], range: 120, radius: 8 }], hulls: [], polylines: [[[20, 60], [140, 60]]] },
+  // A ring of fence around the light with one gap: light leaves only through the gap.
+  { name: 'light inside a fence ring with a gap (r=6)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [80, 60], range: 110, radius: 6 }], hulls: [], polylines: [[[60, 48], [60, 30], [100, 30], [100, 90], [60, 90], [60, 62]]] },
 ];

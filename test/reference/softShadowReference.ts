@@ -66,7 +66,7 @@ export const HARD_EDGE_BAND = 1 / 16;
 export function computeReference(scene: ReferenceScene, options: ReferenceOptions = {}): ReferenceImage {
   const { width, height } = scene;
   const { method = 'exact', step = 1 } = options;
-  const geometry = new SceneGeometry(scene.hulls);
+  const geometry = new SceneGeometry(scene.hulls, scene.polylines);
   const fractionOf = method === 'sampled'
     ? sampledFraction(geometry, options.samples ?? DISK_SAMPLES)
     : exactFraction(geometry, method === 'quadrature' ? { method: 'quadrature', nodes: options.nodes } : {});

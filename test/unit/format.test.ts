@@ -29,7 +29,7 @@ describe('scene format', () => {
     });
     expect(scene.ambient).toEqual([0.2, 0.2, 0.2]);
     expect(scene.camera).toEqual({ center: [0, 0], zoom: 1 });
-    expect(scene.hulls[0]).toEqual({ points: [[0, 0], [1, 0], [0, 1]], position: [0, 0], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: true });
+    expect(scene.hulls[0]).toEqual({ points: [[0, 0], [1, 0], [0, 1]], position: [0, 0], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: true, closed: true });
     expect(scene.lights[0]).toEqual({
       kind: 'point', position: [1, 2], range: 100, radius: 0, color: [1, 1, 1], intensity: 1, rotation: 0,
       origin: [0.5, 0.5], shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [],
@@ -43,8 +43,17 @@ describe('scene format', () => {
     expect(scene.hulls[0].points).toEqual([[0, 0], [1, 1]]);
   });
 
+  it('reads version 1 files, which have no open hulls', () => {
+    const v1 = { format: 'penumbra-scene', version: 1, hulls: [{ points: [[0, 0], [1, 0], [0, 1]] }] };
+    const scene = readScene(v1);
+    expect(scene.version).toBe(2);
+    expect(scene.hulls[0].closed).toBe(true);
+    expect(errorOf({ ...v1, hulls: [{ points: [[0, 0], [1, 0]], closed: false }] }).message)
+      .toBe('hulls[0].closed: unknown field (allowed: points, position, origin, rotation, scale, enabled)');
+  });
+
   it('rejects an unknown version and another format', () => {
-    expect(errorOf(withField(['version'], 2)).message).toBe('version: unsupported version 2 (this reader knows version 1)');
+    expect(errorOf(withField(["version"], 3)).message).toBe("version: unsupported version 3 (this reader knows versions 1 and 2)");
     expect(errorOf(withField(['version'], undefined)).message).toBe('version: required field is missing');
     expect(errorOf(withField(['format'], 'tiled-map')).message).toBe('format: expected "penumbra-scene", got "tiled-map"');
   });
@@ -75,7 +84,7 @@ describe('scene format', () => {
     ['hull rotation', ['hulls', 0, 'rotation'], '90deg', 'hulls[0].rotation: expected a finite number, got "90deg"'],
     ['hull scale', ['hulls', 0, 'scale'], 2, 'hulls[0].scale: expected two finite numbers, got 2'],
     ['hull enabled', ['hulls', 0, 'enabled'], 1, 'hulls[0].enabled: expected true or false, got 1'],
-    ['hull unknown field', ['hulls', 0, 'colour'], 'red', 'hulls[0].colour: unknown field (allowed: points, position, origin, rotation, scale, enabled)'],
+    ['hull unknown field', ['hulls', 0, 'colour'], 'red', 'hulls[0].colour: unknown field (allowed: points, position, origin, rotation, scale, enabled, closed)'],
     ['lights not an array', ['lights'], 'none', 'lights: expected an array, got "none"'],
     ['light not an object', ['lights', 0], null, 'lights[0]: expected an object, got null'],
     ['light kind missing', ['lights', 0, 'kind'], undefined, 'lights[0].kind: required field is missing'],
@@ -92,8 +101,8 @@ describe('scene format', () => {
     ['light enabled', ['lights', 0, 'enabled'], 'yes', 'lights[0].enabled: expected true or false, got "yes"'],
     ['light castsShadows', ['lights', 0, 'castsShadows'], 0, 'lights[0].castsShadows: expected true or false, got 0'],
     ['ignoredHulls not an array', ['lights', 0, 'ignoredHulls'], 1, 'lights[0].ignoredHulls: expected an array, got 1'],
-    ['ignoredHulls out of range', ['lights', 2, 'ignoredHulls', 1], 2, 'lights[2].ignoredHulls[1]: expected a hull index from 0 to 1, got 2'],
-    ['ignoredHulls not an integer', ['lights', 2, 'ignoredHulls', 0], 0.5, 'lights[2].ignoredHulls[0]: expected a hull index from 0 to 1, got 0.5'],
+    ['ignoredHulls out of range', ['lights', 2, 'ignoredHulls', 1], 3, 'lights[2].ignoredHulls[1]: expected a hull index from 0 to 2, got 3'],
+    ['ignoredHulls not an integer', ['lights', 2, 'ignoredHulls', 0], 0.5, 'lights[2].ignoredHulls[0]: expected a hull index from 0 to 2, got 0.5'],
     ['light unknown field', ['lights', 0, 'coneAngle'], 1, 'lights[0].coneAngle: unknown field (allowed: kind, position, range, radius, color, intensity, rotation, origin, shadowType, enabled, castsShadows, ignoredHulls)'],
     ['spot coneAngle above π', ['lights', 1, 'coneAngle'], 4, 'lights[1].coneAngle: expected a number ≤ 3.141592653589793, got 4'],
     ['spot coneAngle negative', ['lights', 1, 'coneAngle'], -1, 'lights[1].coneAngle: expected a number ≥ 0, got -1'],
@@ -137,15 +146,16 @@ describe('scene objects', () => {
   it('builds lights and hulls and describes them back to the same document', () => {
     const scene = fullScene();
     const objects = createSceneObjects(scene, resolve);
-    expect(objects.hulls).toHaveLength(2);
+    expect(objects.hulls).toHaveLength(3);
     expect(objects.hulls[1].enabled).toBe(false);
+    expect(objects.hulls.map((hull) => hull.closed)).toEqual([true, true, false]);
     const spot = objects.lights[1] as Spotlight;
     expect(spot).toBeInstanceOf(Spotlight);
     expect(spot.coneAngle).toBe(0.9);
     const textured = objects.lights[2] as TexturedLight;
     expect(textured).toBeInstanceOf(TexturedLight);
     expect(textured.texture).toBe(flame);
-    expect([...textured.ignoredHulls]).toEqual(objects.hulls);
+    expect([...textured.ignoredHulls]).toEqual(objects.hulls.slice(0, 2));
     const described = describeScene({ ...objects, ambient: scene.ambient, camera: scene.camera, cookieName: () => 'flame' });
     expect(described).toEqual(scene);
   });
