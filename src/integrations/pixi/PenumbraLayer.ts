@@ -1,7 +1,10 @@
 import { mat4 } from 'gl-matrix';
-import { RenderContainer, type Container, type Renderer, type WebGLRenderer } from 'pixi.js';
-import { PenumbraRenderer, type Hull, type Light, type PenumbraRendererOptions } from '../../index';
+import { Graphics, RenderContainer, Sprite, type Container, type Renderer, type WebGLRenderer } from 'pixi.js';
+import { Hull, PenumbraRenderer, type Light, type PenumbraRendererOptions } from '../../index';
 import { setViewProjection } from '../viewProjection';
+import { GraphicsOccluder, type GraphicsHullsOptions } from './graphicsHulls';
+import { Occluder, prepareSpace, type OccluderSpace } from './Occluder';
+import { gpuReads, SpriteOccluder, type SpriteHullsOptions } from './spriteHulls';
 
 /** Options of a {@link PenumbraLayer}: the core renderer's options plus the camera. */
 export interface PenumbraLayerOptions extends Omit<PenumbraRendererOptions, 'viewProjection' | 'width' | 'height'> {
@@ -28,6 +31,10 @@ type BindState = ReturnType<WebGLRenderer['renderTarget']['getBindState']>;
  * lighting.addLight(new PointLight({ position: [200, 150], range: 300, radius: 10 }));
  * ```
  *
+ * Hulls can also follow display objects: {@link PenumbraLayer.addOccluder} traces a `Sprite`'s
+ * alpha or reads a `Graphics`' shapes, {@link PenumbraLayer.follow} takes your own hulls; the
+ * layer moves them with their objects each time it renders (see {@link Occluder}).
+ *
  * Only the WebGL renderer is supported (`preference: 'webgl'`). `destroy()` frees the GL resources.
  * The members it inherits from Pixi's `RenderContainer` are documented by Pixi.
  *
@@ -40,6 +47,12 @@ export class PenumbraLayer extends RenderContainer {
   camera: Container | null;
 
   private readonly bindState = {} as BindState;
+  private readonly pixi: Renderer;
+  private readonly _occluders: Occluder[] = [];
+  private readonly space: OccluderSpace = { camera: null, root: null, fromRoot: new Float64Array(6) };
+  private readonly removeDestroyed = (occluder: Occluder): void => {
+    this.removeOccluder(occluder);
+  };
   private readonly viewProjection = mat4.create();
   private targetWidth = 0;
   private targetHeight = 0;
@@ -50,6 +63,7 @@ export class PenumbraLayer extends RenderContainer {
     if (!gl) throw new TypeError('penumbra: PenumbraLayer needs Pixi\'s WebGL renderer (Application.init({ preference: \'webgl\' }))');
     const { camera = null, ...rendererOptions } = options;
     this.camera = camera;
+    this.pixi = renderer;
     // Every renderer option goes through; the size and the view follow Pixi's target each frame.
     this.penumbra = new PenumbraRenderer(gl, {
       ...rendererOptions,
@@ -78,25 +92,114 @@ export class PenumbraLayer extends RenderContainer {
     return this.penumbra.removeHull(hull);
   }
 
+  /** The occluders: hulls following display objects, in the order they were added. */
+  get occluders(): readonly Occluder[] {
+    return this._occluders;
+  }
+
+  /**
+   * Makes a display object cast shadows: hulls traced from a `Sprite`'s texture alpha (see
+   * {@link hullsFromTexture}; `options` are the tracing options), or covering a `Graphics`' filled
+   * shapes (see {@link hullsFromGraphics}; `options.tolerance` for its curves). The hulls follow
+   * the object from then on (its transform relative to {@link PenumbraLayer.camera}, its
+   * visibility, its texture and anchor, its redrawn shapes) until it is destroyed or
+   * {@link PenumbraLayer.removeOccluder} is called. See {@link Occluder}.
+   *
+   * ```ts
+   * const crate = world.addChild(new Sprite(await Assets.load('crate.png')));
+   * lighting.addOccluder(crate);                                   // its opaque pixels cast shadows
+   * lighting.addOccluder(world.addChild(new Graphics().circle(0, 0, 30).fill(0x555555)));
+   * ```
+   * @throws the errors of {@link hullsFromTexture} or {@link hullsFromGraphics}.
+   */
+  addOccluder(sprite: Sprite, options?: SpriteHullsOptions): SpriteOccluder;
+  addOccluder(graphics: Graphics, options?: GraphicsHullsOptions): GraphicsOccluder;
+  addOccluder(object: Sprite | Graphics, options: SpriteHullsOptions & GraphicsHullsOptions = {}): SpriteOccluder | GraphicsOccluder {
+    let occluder: SpriteOccluder | GraphicsOccluder;
+    if (object instanceof Sprite) occluder = new SpriteOccluder(object, this.penumbra, this.pixi, options, this.removeDestroyed);
+    else if (object instanceof Graphics) occluder = new GraphicsOccluder(object, this.penumbra, options, this.removeDestroyed);
+    else throw new TypeError(`penumbra: addOccluder takes a Sprite or a Graphics (for another object, lighting.follow(object, hulls)), got ${String(object)}`);
+    return this.start(occluder);
+  }
+
+  /**
+   * Makes `hulls` follow a display object: their points are in the object's local space (placed
+   * within it by each hull's `position`, `origin`, `rotation` and `scale` as they are now), and
+   * from now on the layer moves them with the object. The hulls are added to the renderer. See
+   * {@link Occluder}.
+   *
+   * ```ts
+   * const door = world.addChild(new Sprite(doorTexture));
+   * lighting.follow(door, new Hull([[0, 0], [64, 0], [64, 8], [0, 8]]));  // a thin slab, not every pixel
+   * ```
+   */
+  follow(object: Container, hulls: Hull | readonly Hull[]): Occluder {
+    const list = hulls instanceof Hull ? [hulls] : hulls;
+    return this.start(new Occluder(object, this.penumbra, list, this.removeDestroyed));
+  }
+
+  /**
+   * Stops an occluder, or every occluder of a display object: its hulls are removed from the
+   * renderer. Returns whether there was one. Called for you when the object is destroyed.
+   */
+  removeOccluder(target: Occluder | Container): boolean {
+    let removed = false;
+    for (let i = this._occluders.length - 1; i >= 0; i--) {
+      const occluder = this._occluders[i];
+      if (occluder !== target && occluder.object !== target) continue;
+      this._occluders.splice(i, 1);
+      occluder.detach();
+      removed = true;
+    }
+    return removed;
+  }
+
+  /**
+   * Places every occluder's hulls for its object's current transform. The layer does it each time
+   * it renders; call it to read the hulls' placement before then.
+   */
+  updateOccluders(): void {
+    const occluders = this._occluders;
+    if (occluders.length === 0) return;
+    prepareSpace(this.space, this, this.camera);
+    for (let i = 0; i < occluders.length; i++) occluders[i].update(this.space);
+  }
+
+  private start<T extends Occluder>(occluder: T): T {
+    this._occluders.push(occluder);
+    prepareSpace(this.space, this, this.camera);
+    occluder.update(this.space);
+    return occluder;
+  }
+
   /** Called by Pixi's render pipe at this object's place in the draw order. @internal */
   override render(renderer: Renderer): void {
     const pixi = renderer as WebGLRenderer;
     const targets = pixi.renderTarget;
     const target = targets.renderTarget;
+    targets.getBindState(this.bindState);
+    const reads = gpuReads;
+    this.updateOccluders();
+    // A texture read back from the GPU left its own framebuffer bound: back to Pixi's target.
+    if (gpuReads !== reads) {
+      pixi.resetState();
+      targets.bind(this.bindState);
+    }
     this.fitTarget(target.pixelWidth, target.pixelHeight);
     // Pixi draws render textures upside down (row 0 at the top) and the screen right side up.
     const cameraTransform = this.camera?.worldTransform ?? null;
     setViewProjection(this.viewProjection, target.width, target.height, !target.isRoot, cameraTransform);
     this.penumbra.viewProjection = this.viewProjection;
-    targets.getBindState(this.bindState);
     this.penumbra.drawInPlace();
     // The engine's own mechanism for foreign GL code; it forgets the bound target too, so bind it back.
     pixi.resetState();
     targets.bind(this.bindState);
   }
 
-  /** Frees the lighting's GL resources, then destroys the display object. */
+  /** Stops the occluders, frees the lighting's GL resources, then destroys the display object. */
   override destroy(options?: Parameters<RenderContainer['destroy']>[0]): void {
+    for (const occluder of this._occluders) occluder.detach();
+    this._occluders.length = 0;
     this.penumbra.dispose();
     super.destroy(options);
   }

@@ -4,4 +4,7 @@
  */
 export { PenumbraLayer, type PenumbraLayerOptions } from './PenumbraLayer';
 export { hullFromBounds, hullFromPolygon } from './hulls';
+export { Occluder } from './Occluder';
+export { SpriteOccluder, hullsFromTexture, forgetTextureHulls, type SpriteHullsOptions, type TextureHullsOptions } from './spriteHulls';
+export { GraphicsOccluder, hullsFromGraphics, type GraphicsHullsOptions } from './graphicsHulls';
 export * from '../../index';
