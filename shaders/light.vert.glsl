@@ -12,6 +12,7 @@ uniform vec3 u_light; // position xy, range
 uniform vec3 u_lightColor; // colour × intensity
 uniform vec4 u_shadow; // position xy, disk radius, row of the light's shadow bins
 uniform float u_illuminated; // 1: the light lights the hulls themselves, 0: they stay dark
+uniform vec3 u_shadowKept; // the fraction of each channel a pixel in full shadow keeps (Light.writeShadowKept)
 
 out vec2 v_fromLight;
 out vec2 v_uv;
@@ -19,6 +20,7 @@ out vec2 v_world;
 flat out vec3 v_color;
 flat out vec4 v_shadow;
 flat out float v_illuminated;
+flat out vec3 v_shadowKept;
 
 void main() {
   vec2 world = u_quad[0] + a_corner.x * u_quad[1] + a_corner.y * u_quad[2];
@@ -28,6 +30,7 @@ void main() {
   v_color = u_lightColor;
   v_shadow = u_shadow;
   v_illuminated = u_illuminated;
+  v_shadowKept = u_shadowKept;
   gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
   // Depth ½ whatever the view: the quadrature pass tests it against the main pass's marks (LightPass).
   gl_Position.z = 0.0;

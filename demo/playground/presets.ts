@@ -4,11 +4,11 @@ import { seededRandom } from './textures';
 type Point = [number, number];
 
 function scene(ambient: [number, number, number], center: Point, zoom: number, hulls: SceneHull[], lights: SceneLight[]): SceneDocument {
-  return { format: 'penumbra-scene', version: 1, ambient, camera: { center, zoom }, hulls, lights };
+  return { format: 'penumbra-scene', version: 2, ambient, camera: { center, zoom }, hulls, lights };
 }
 
 function hull(points: Point[], position: Point, rotation = 0): SceneHull {
-  return { points, position, origin: [0, 0], rotation, scale: [1, 1], enabled: true };
+  return { points, position, origin: [0, 0], rotation, scale: [1, 1], enabled: true, closed: true, layers: 1 };
 }
 
 /** A w × h box centred on its position. */
@@ -26,7 +26,8 @@ function pillar(x: number, y: number, radius: number, sides = 8): SceneHull {
 function light(position: Point, fields: Partial<SceneLightBase> = {}): SceneLightBase {
   return {
     position, range: 300, radius: 10, color: [1, 1, 1], intensity: 1, rotation: 0, origin: [0.5, 0.5],
-    shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [], ...fields,
+    shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [],
+    shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, ...fields,
   };
 }
 

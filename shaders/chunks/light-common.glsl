@@ -15,13 +15,18 @@ float distanceFalloff() {
   return max(0.0, 1.0 - length(v_fromLight));
 }
 
-// Writes colour × strength × the visible fraction of the disk. Alpha is 0 so additive blending
-// leaves the lightmap's alpha untouched.
+#ifdef SHADOWED
+flat in vec3 v_shadowKept;
+#endif
+
+// Writes colour × strength × what passes: the visible fraction of the disk, and of the rest the
+// fraction the light's shadows keep (0 by default: mix(0, 1, v) is v exactly). Alpha is 0 so
+// additive blending leaves the lightmap's alpha untouched.
 void writeLight(float strength) {
 #ifdef SHADOWED
-  float visible = strength > 0.0 ? shadowVisibility() : 0.0;
+  vec3 passes = mix(v_shadowKept, vec3(1.0), strength > 0.0 ? shadowVisibility() : 0.0);
 #else
-  float visible = 1.0;
+  vec3 passes = vec3(1.0);
 #endif
 #if defined(SHADOW_STATISTICS)
   // The benchmark's statistics build: per light pixel 1, the records visited, 1 when none was, and 1
@@ -33,6 +38,6 @@ void writeLight(float strength) {
 #endif
   o_light = strength > 0.0 ? vec4(1.0, visited, visited == 0.0 ? 1.0 : 0.0, past) : vec4(0.0);
 #else
-  o_light = vec4(v_color * (strength * visible), 0.0);
+  o_light = vec4(v_color * (strength * passes), 0.0);
 #endif
 }

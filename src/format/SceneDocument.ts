@@ -64,6 +64,8 @@ export interface SceneHull {
   enabled: boolean;
   /** `false` for an open polyline (see `Hull.closed`). Optional, default `true`; not in version 1 files. */
   closed: boolean;
+  /** Layer bit mask, an integer 0..0xffffffff (see `Hull.layers`). Optional, default `1`; not in version 1 files. */
+  layers: number;
 }
 
 /** Fields every light kind has, as in `LightOptions`. */
@@ -90,6 +92,12 @@ export interface SceneLightBase {
   castsShadows: boolean;
   /** Indices into the file's `hulls` that this light passes through. Optional, default `[]`. */
   ignoredHulls: number[];
+  /** Hull layers that shadow the light, an integer 0..0xffffffff. Optional, default `0xffffffff`; not in version 1 files. */
+  shadowLayers: number;
+  /** `[r, g, b]`, channels ≥ 0. Optional, default `[0, 0, 0]`; not in version 1 files. */
+  shadowColor: [number, number, number];
+  /** 0..1. Optional, default `1`; not in version 1 files. */
+  shadowStrength: number;
 }
 
 /** A `PointLight`. */

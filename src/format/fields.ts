@@ -73,6 +73,16 @@ export function numberField(fields: Fields, key: string, fallback?: number, min 
   });
 }
 
+/** A layer bit mask: an integer from 0 to 0xffffffff. */
+export function layersField(fields: Fields, key: string, fallback: number): number {
+  return field(fields, key, fallback, (value, path) => {
+    if (typeof value !== 'number' || !Number.isInteger(value) || value < 0 || value > 0xffffffff) {
+      throw new SceneFormatError(path, `expected an integer from 0 to 4294967295 (a bit mask), got ${describeValue(value)}`);
+    }
+    return value;
+  });
+}
+
 /** A strictly positive finite number. */
 export function positiveField(fields: Fields, key: string, fallback?: number): number {
   const value = numberField(fields, key, fallback);

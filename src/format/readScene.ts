@@ -1,5 +1,5 @@
 import {
-  booleanField, childPath, choiceField, colorField, nameField, numberField, positiveField, readArray, readObject,
+  booleanField, childPath, choiceField, colorField, layersField, nameField, numberField, positiveField, readArray, readObject,
   readVec2, vec2Field, type Fields,
 } from './fields';
 import { describeValue, shortened } from '../scene/validate';
@@ -11,13 +11,23 @@ import { SceneFormatError } from './SceneFormatError';
 
 const DOCUMENT_FIELDS = ['format', 'version', 'ambient', 'camera', 'hulls', 'lights'] as const;
 const CAMERA_FIELDS = ['center', 'zoom'] as const;
-const HULL_FIELDS_V1 = ['points', 'position', 'origin', 'rotation', 'scale', 'enabled'] as const;
-/** Per version this reader knows, the fields a hull may have. */
-const HULL_FIELDS: Readonly<Record<number, readonly string[]>> = { 1: HULL_FIELDS_V1, [SCENE_FORMAT_VERSION]: [...HULL_FIELDS_V1, 'closed'] };
-const LIGHT_FIELDS = [
+const HULL_FIELDS_V1 = ['points', 'position', 'origin', 'rotation', 'scale', 'enabled'];
+const LIGHT_FIELDS_V1 = [
   'kind', 'position', 'range', 'radius', 'color', 'intensity', 'rotation', 'origin', 'shadowType', 'enabled',
   'castsShadows', 'ignoredHulls',
-] as const;
+];
+/** The fields hulls and lights (besides their kind's) may have, per version this reader knows. */
+interface VersionFields {
+  readonly hull: readonly string[];
+  readonly light: readonly string[];
+}
+const VERSION_FIELDS: Readonly<Record<number, VersionFields>> = {
+  1: { hull: HULL_FIELDS_V1, light: LIGHT_FIELDS_V1 },
+  [SCENE_FORMAT_VERSION]: {
+    hull: [...HULL_FIELDS_V1, 'closed', 'layers'],
+    light: [...LIGHT_FIELDS_V1, 'shadowLayers', 'shadowColor', 'shadowStrength'],
+  },
+};
 const KIND_FIELDS = { point: [], spot: ['coneAngle', 'coneDecay'], textured: ['cookie', 'size'] } as const;
 const LIGHT_KINDS = ['point', 'spot', 'textured'] as const;
 
@@ -48,12 +58,12 @@ function readDocument(input: unknown): SceneDocument {
     throw new SceneFormatError('format', `expected "${SCENE_FORMAT}", got ${describeValue(root.value.format)}`);
   }
   const version = numberField(root, 'version');
-  if (!Object.hasOwn(HULL_FIELDS, version)) {
+  if (!Object.hasOwn(VERSION_FIELDS, version)) {
     throw new SceneFormatError('version', `unsupported version ${version} (this reader knows versions 1 and ${SCENE_FORMAT_VERSION})`);
   }
-  const hullFields = HULL_FIELDS[version];
-  const hulls = readList(root.value.hulls, 'hulls', (value, path) => readHull(value, path, hullFields));
-  const lights = readList(root.value.lights, 'lights', (value, path) => readLight(value, path, hulls.length));
+  const fields = VERSION_FIELDS[version];
+  const hulls = readList(root.value.hulls, 'hulls', (value, path) => readHull(value, path, fields.hull));
+  const lights = readList(root.value.lights, 'lights', (value, path) => readLight(value, path, fields.light, hulls.length));
   return {
     format: SCENE_FORMAT,
     version: SCENE_FORMAT_VERSION,
@@ -98,14 +108,15 @@ function readHull(value: unknown, path: string, fields: readonly string[]): Scen
     scale: vec2Field(hull, 'scale', [1, 1]),
     enabled: booleanField(hull, 'enabled', true),
     closed: booleanField(hull, 'closed', true),
+    layers: layersField(hull, 'layers', 1),
   };
 }
 
-function readLight(value: unknown, path: string, hullCount: number): SceneLight {
+function readLight(value: unknown, path: string, fields: readonly string[], hullCount: number): SceneLight {
   // The kind decides which extra fields are allowed, so it is read before the field check.
   const kindFields = readObject(value, path);
   const kind = choiceField(kindFields, 'kind', LIGHT_KINDS);
-  const light = readObject(value, path, [...LIGHT_FIELDS, ...KIND_FIELDS[kind]]);
+  const light = readObject(value, path, [...fields, ...KIND_FIELDS[kind]]);
   const base = readLightBase(light, hullCount);
   switch (kind) {
     case 'point':
@@ -138,6 +149,9 @@ function readLightBase(light: Fields, hullCount: number): SceneLightBase {
     enabled: booleanField(light, 'enabled', true),
     castsShadows: booleanField(light, 'castsShadows', true),
     ignoredHulls: readIgnoredHulls(light, hullCount),
+    shadowLayers: layersField(light, 'shadowLayers', 0xffffffff),
+    shadowColor: colorField(light, 'shadowColor', [0, 0, 0]),
+    shadowStrength: numberField(light, 'shadowStrength', 1, 0, 1),
   };
 }
 

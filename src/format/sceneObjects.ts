@@ -71,6 +71,7 @@ export function describeScene(input: SceneDescriptionInput): SceneDocument {
       scale: [...hull.scale],
       enabled: hull.enabled,
       closed: hull.closed,
+      layers: hull.layers,
     })),
     lights: input.lights.map((light) => describeLight(light, hullIndex, input.cookieName)),
   };
@@ -89,6 +90,9 @@ function describeLight(light: Light, hullIndex: ReadonlyMap<Hull, number>, cooki
     enabled: light.enabled,
     castsShadows: light.castsShadows,
     ignoredHulls: [...light.ignoredHulls].flatMap((hull) => hullIndex.get(hull) ?? []),
+    shadowLayers: light.shadowLayers,
+    shadowColor: [...light.shadowColor] as [number, number, number],
+    shadowStrength: light.shadowStrength,
   };
   if (light instanceof Spotlight) return { kind: 'spot', ...base, coneAngle: light.coneAngle, coneDecay: light.coneDecay };
   if (light instanceof TexturedLight) {

@@ -26,8 +26,8 @@ export class LightDraw {
 
 /**
  * Decides each frame which lights are drawn and, per light, which hulls shadow it: a light is
- * skipped when disabled, black, off screen, or when its centre is inside a hull it does not
- * ignore. The shadow bins of all drawn lights share the arrays of one {@link ShadowBins}, reused
+ * skipped when disabled, black, off screen, or when its centre is inside a hull that shadows it
+ * (one it does not ignore, in one of its `shadowLayers`). The shadow bins of all drawn lights share the arrays of one {@link ShadowBins}, reused
  * from frame to frame.
  */
 export class FramePlan {
@@ -117,9 +117,11 @@ export class FramePlan {
     const grid = this.grid;
     const count = grid.search(b);
     this.hullsInRange = grow(this.hullsInRange, 0, count);
-    const inRange = this.hullsInRange, bounds = geometry.worldBounds;
+    const inRange = this.hullsInRange, bounds = geometry.worldBounds, layers = geometry.layers;
+    const shadowLayers = light.shadowLayers;
     for (let i = 0; i < count; i++) {
       const index = grid.found[i];
+      if ((layers[index] & shadowLayers) === 0) continue;
       if (light.ignoredHulls.size > 0 && light.ignoredHulls.has(hulls[index])) continue;
       geometry.prepare(index);
       const k = 4 * index;

@@ -26,6 +26,8 @@ export class ShadowGeometry {
   castsShadow = new Uint8Array(0);
   /** Per hull: 1 when it is convex (and valid). */
   convex = new Uint8Array(0);
+  /** Per hull: `Hull.layers`. */
+  layers = new Uint32Array(0);
   /** Per hull: where its records sit in `records`, and how many. */
   firstRecords = new Int32Array(0);
   recordCounts = new Int32Array(0);
@@ -101,6 +103,7 @@ export class ShadowGeometry {
     to[4 * index + 3] = from[3];
     this.castsShadow[index] = hull.enabled && hull.valid ? 1 : 0;
     this.convex[index] = hull.convex ? 1 : 0;
+    this.layers[index] = hull.layers;
     const edges = hull.valid ? hull.edgeCount : 0;
     this.validEdgeCount += edges - this.countedEdges[index];
     this.countedEdges[index] = edges;
@@ -136,6 +139,7 @@ export class ShadowGeometry {
       this.circles = new Float64Array(3 * capacity);
       this.castsShadow = new Uint8Array(capacity);
       this.convex = new Uint8Array(capacity);
+      this.layers = new Uint32Array(capacity);
       this.firstRecords = new Int32Array(capacity);
       this.recordCounts = new Int32Array(capacity);
       this.refreshedVersions = new Float64Array(capacity);

@@ -27,6 +27,7 @@ export class LightPass {
   private readonly lightColor = new Float32Array(3);
   private readonly lightPositionAndRange = new Float32Array(3);
   private readonly shadow = new Float32Array(4);
+  private readonly shadowKept = new Float32Array(3);
   private readonly direction = new Float32Array(2);
   private readonly coneHalfAngle = new Float32Array(1);
   private readonly coneDecay = new Float32Array(1);
@@ -113,6 +114,7 @@ export class LightPass {
     if (uniforms.u_shadow) {
       gl.uniform4fv(uniforms.u_shadow, this.shadow);
       gl.uniform1f(uniforms.u_illuminated, light.shadowType === ShadowType.Illuminated ? 1 : 0);
+      gl.uniform3fv(uniforms.u_shadowKept, this.shadowKept);
     }
     if (light instanceof Spotlight) {
       gl.uniform2fv(uniforms.u_direction, this.direction);
@@ -137,6 +139,7 @@ export class LightPass {
     this.shadow[1] = light.position[1];
     this.shadow[2] = light.radius;
     this.shadow[3] = draw.binRow;
+    light.writeShadowKept(this.shadowKept);
     if (light instanceof Spotlight) {
       this.direction[0] = Math.cos(light.rotation);
       this.direction[1] = Math.sin(light.rotation);

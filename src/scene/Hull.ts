@@ -1,5 +1,5 @@
 import { isConvexPolygon, isSimplePolygon, signedArea2, simplifyPolygon, simplifyPolyline, triangulate } from '../geometry/polygon';
-import { assertBoolean, assertFinite, assertOptions, describeValue, frozenPair, frozenVec2, vec2ListCoords, type Vec2Like } from './validate';
+import { assertBoolean, assertFinite, assertLayerMask, assertOptions, describeValue, frozenPair, frozenVec2, vec2ListCoords, type Vec2Like } from './validate';
 
 /** Options of a {@link Hull}; every field has the default shown. */
 export interface HullOptions {
@@ -18,6 +18,12 @@ export interface HullOptions {
    * from both sides and has no inside (see {@link Hull.closed}). Fixed at construction. Default `true`.
    */
   closed?: boolean;
+  /**
+   * The layers the hull is in, a bit mask: it shadows only the lights whose `shadowLayers` share
+   * a bit with it (a player's own hull left out of the player's torch, low walls that block some
+   * lights only). Default `1`.
+   */
+  layers?: number;
 }
 
 /**
@@ -44,6 +50,7 @@ export class Hull {
   private _scale: readonly [number, number] = Object.freeze([1, 1] as const);
   private _rotation = 0;
   private _enabled = true;
+  private _layers = 1;
   private readonly _closed: boolean;
   private _shapeValid = false;
   private _convex = false;
@@ -81,6 +88,7 @@ export class Hull {
     if (options.rotation !== undefined) this.rotation = options.rotation;
     if (options.scale !== undefined) this.scale = options.scale;
     if (options.enabled !== undefined) this.enabled = options.enabled;
+    if (options.layers !== undefined) this.layers = options.layers;
   }
 
   /** The points as given (local space), frozen, pairs too. Assign a new array to reshape the hull. */
@@ -157,6 +165,15 @@ export class Hull {
   }
   set enabled(value: boolean) {
     this._enabled = assertBoolean('Hull.enabled', value);
+    this.touch();
+  }
+
+  /** The layers the hull is in; see {@link HullOptions.layers}. */
+  get layers(): number {
+    return this._layers;
+  }
+  set layers(value: number) {
+    this._layers = assertLayerMask('Hull.layers', value);
     this.touch();
   }
 

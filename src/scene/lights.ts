@@ -1,7 +1,7 @@
 import { Hull } from './Hull';
 import {
-  assertBoolean, assertFinite, assertNonNegative, assertOneOf, assertOptions, describeValue, frozenColor, frozenPair, frozenVec2,
-  type ColorLike, type Vec2Like,
+  ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, assertOptions, assertUnit, describeValue,
+  frozenColor, frozenPair, frozenVec2, type ColorLike, type Vec2Like,
 } from './validate';
 
 /** How a light treats the inside of the hulls it shines on. */
@@ -38,6 +38,22 @@ export interface LightOptions {
   castsShadows?: boolean;
   /** Hulls this light passes through (e.g. its own lamp housing). Default none. */
   ignoredHulls?: Iterable<Hull>;
+  /**
+   * The hull layers that shadow this light, a bit mask: a hull shadows it only when
+   * `hull.layers & light.shadowLayers` is not 0. Default `0xffffffff` (every layer).
+   */
+  shadowLayers?: number;
+  /**
+   * Colour of this light's shadows: the fraction of each channel of the light that a point in
+   * full shadow still gets, where {@link LightOptions.shadowStrength} is 1. Default `[0, 0, 0]`.
+   */
+  shadowColor?: ColorLike;
+  /**
+   * How dark this light's shadows are, 0..1: a point in full shadow gets
+   * `1 − shadowStrength × (1 − shadowColor)` of the light per channel (and a point in part shadow
+   * a mix of that and the full light by the visible fraction). Default `1`.
+   */
+  shadowStrength?: number;
 }
 
 /** The kind of a light, used by the renderer to pick its light pass. */
@@ -67,6 +83,9 @@ export abstract class Light {
   private _enabled = true;
   private _castsShadows = true;
   private _shadowType: ShadowType = ShadowType.Illuminated;
+  private _shadowLayers = ALL_LAYERS;
+  private _shadowColor: readonly [number, number, number] = Object.freeze([0, 0, 0] as const);
+  private _shadowStrength = 1;
   /** Hulls this light passes through: they neither shadow it nor make it skip when its centre is inside them. */
   readonly ignoredHulls = new Set<Hull>();
 
@@ -83,6 +102,9 @@ export abstract class Light {
     if (options.enabled !== undefined) this.enabled = options.enabled;
     if (options.castsShadows !== undefined) this.castsShadows = options.castsShadows;
     if (options.ignoredHulls !== undefined) this.ignoreHulls(options.ignoredHulls);
+    if (options.shadowLayers !== undefined) this.shadowLayers = options.shadowLayers;
+    if (options.shadowColor !== undefined) this.shadowColor = options.shadowColor;
+    if (options.shadowStrength !== undefined) this.shadowStrength = options.shadowStrength;
   }
 
   /** Which light pass draws this light. A getter, not a field: the constructor names the class by it. */
@@ -176,6 +198,39 @@ export abstract class Light {
   }
   set shadowType(value: ShadowType) {
     this._shadowType = assertOneOf(`${this.className}.shadowType`, value, SHADOW_TYPES);
+  }
+
+  /** The hull layers that shadow this light; see {@link LightOptions.shadowLayers}. */
+  get shadowLayers(): number {
+    return this._shadowLayers;
+  }
+  set shadowLayers(value: number) {
+    this._shadowLayers = assertLayerMask(`${this.className}.shadowLayers`, value);
+  }
+
+  /** Colour of this light's shadows, frozen; see {@link LightOptions.shadowColor}. */
+  get shadowColor(): readonly [number, number, number] {
+    return this._shadowColor;
+  }
+  set shadowColor(value: ColorLike) {
+    this._shadowColor = frozenColor(`${this.className}.shadowColor`, value);
+  }
+
+  /** How dark this light's shadows are, 0..1; see {@link LightOptions.shadowStrength}. */
+  get shadowStrength(): number {
+    return this._shadowStrength;
+  }
+  set shadowStrength(value: number) {
+    this._shadowStrength = assertUnit(`${this.className}.shadowStrength`, value);
+  }
+
+  /**
+   * Writes into `out` the fraction of each channel of the light that a point in full shadow gets:
+   * `1 − shadowStrength × (1 − shadowColor)`.
+   * @internal
+   */
+  writeShadowKept(out: Float32Array): void {
+    for (let c = 0; c < 3; c++) out[c] = 1 - this._shadowStrength * (1 - this._shadowColor[c]);
   }
 
   /** Adds `hulls` to {@link Light.ignoredHulls} after checking that every one is a `Hull`; on an error none is added. */

@@ -23,6 +23,25 @@ export function assertNonNegative(name: string, value: number): number {
   return value;
 }
 
+/** The largest layer mask: all 32 layers. */
+export const ALL_LAYERS = 0xffffffff;
+
+/** Throws unless `value` is a layer mask: an integer from 0 to {@link ALL_LAYERS} (bit k set: in layer k). */
+export function assertLayerMask(name: string, value: number): number {
+  if (typeof value !== 'number') throw new TypeError(`${name} must be an integer from 0 to 0xffffffff (a bit mask), got ${describeValue(value)}`);
+  if (!Number.isInteger(value) || value < 0 || value > ALL_LAYERS) {
+    throw new RangeError(`${name} must be an integer from 0 to 0xffffffff (a bit mask), got ${describeValue(value)}`);
+  }
+  return value;
+}
+
+/** Throws unless `value` is a finite number from 0 to 1. */
+export function assertUnit(name: string, value: number): number {
+  assertFinite(name, value);
+  if (value < 0 || value > 1) throw new RangeError(`${name} must be from 0 to 1, got ${value}`);
+  return value;
+}
+
 /** Throws a `TypeError` naming the class unless a constructor's `options` is an object. */
 export function assertOptions(className: string, options: object): void {
   if (typeof options !== 'object' || options === null) throw new TypeError(`${className} options must be an object, got ${describeValue(options)}`);

@@ -17,11 +17,12 @@ const PAGE_READY_MS = 100_000;
 /** One light at `light` (no source radius, so the umbra is exact) and one 40 × 120 box at (220, 200). */
 function testScene(light: [number, number], range = 300): SceneDocument {
   return {
-    format: 'penumbra-scene', version: 1, ambient: [0.02, 0.02, 0.02], camera: { center: [300, 200], zoom: 1 },
-    hulls: [{ points: [[-20, -60], [20, -60], [20, 60], [-20, 60]], position: [220, 200], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: true }],
+    format: 'penumbra-scene', version: 2, ambient: [0.02, 0.02, 0.02], camera: { center: [300, 200], zoom: 1 },
+    hulls: [{ points: [[-20, -60], [20, -60], [20, 60], [-20, 60]], position: [220, 200], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: true, closed: true, layers: 1 }],
     lights: [{
       kind: 'point', position: light, range, radius: 0, color: [1, 1, 1], intensity: 1, rotation: 0, origin: [0.5, 0.5],
       shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [],
+      shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1,
     }],
   };
 }

@@ -29,10 +29,11 @@ describe('scene format', () => {
     });
     expect(scene.ambient).toEqual([0.2, 0.2, 0.2]);
     expect(scene.camera).toEqual({ center: [0, 0], zoom: 1 });
-    expect(scene.hulls[0]).toEqual({ points: [[0, 0], [1, 0], [0, 1]], position: [0, 0], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: true, closed: true });
+    expect(scene.hulls[0]).toEqual({ points: [[0, 0], [1, 0], [0, 1]], position: [0, 0], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: true, closed: true, layers: 1 });
     expect(scene.lights[0]).toEqual({
       kind: 'point', position: [1, 2], range: 100, radius: 0, color: [1, 1, 1], intensity: 1, rotation: 0,
       origin: [0.5, 0.5], shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [],
+      shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1,
     });
     expect(scene.lights[1]).toMatchObject({ coneAngle: Math.PI / 2, coneDecay: 1 });
     expect(scene.lights[2]).toMatchObject({ cookie: 'c', size: null });
@@ -84,7 +85,7 @@ describe('scene format', () => {
     ['hull rotation', ['hulls', 0, 'rotation'], '90deg', 'hulls[0].rotation: expected a finite number, got "90deg"'],
     ['hull scale', ['hulls', 0, 'scale'], 2, 'hulls[0].scale: expected two finite numbers, got 2'],
     ['hull enabled', ['hulls', 0, 'enabled'], 1, 'hulls[0].enabled: expected true or false, got 1'],
-    ['hull unknown field', ['hulls', 0, 'colour'], 'red', 'hulls[0].colour: unknown field (allowed: points, position, origin, rotation, scale, enabled, closed)'],
+    ['hull unknown field', ['hulls', 0, 'colour'], 'red', 'hulls[0].colour: unknown field (allowed: points, position, origin, rotation, scale, enabled, closed, layers)'],
     ['lights not an array', ['lights'], 'none', 'lights: expected an array, got "none"'],
     ['light not an object', ['lights', 0], null, 'lights[0]: expected an object, got null'],
     ['light kind missing', ['lights', 0, 'kind'], undefined, 'lights[0].kind: required field is missing'],
@@ -100,10 +101,14 @@ describe('scene format', () => {
     ['light shadowType', ['lights', 0, 'shadowType'], 'occluded', 'lights[0].shadowType: expected one of "solid", "illuminated", got "occluded"'],
     ['light enabled', ['lights', 0, 'enabled'], 'yes', 'lights[0].enabled: expected true or false, got "yes"'],
     ['light castsShadows', ['lights', 0, 'castsShadows'], 0, 'lights[0].castsShadows: expected true or false, got 0'],
+    ['light shadowLayers', ['lights', 0, 'shadowLayers'], -1, 'lights[0].shadowLayers: expected an integer from 0 to 4294967295 (a bit mask), got -1'],
+    ['hull layers', ['hulls', 1, 'layers'], 0.5, 'hulls[1].layers: expected an integer from 0 to 4294967295 (a bit mask), got 0.5'],
+    ['light shadowStrength', ['lights', 1, 'shadowStrength'], 2, 'lights[1].shadowStrength: expected a number ≤ 1, got 2'],
+    ['light shadowColor', ['lights', 2, 'shadowColor'], [0, 0], 'lights[2].shadowColor: expected three finite numbers ≥ 0, got [0,0]'],
     ['ignoredHulls not an array', ['lights', 0, 'ignoredHulls'], 1, 'lights[0].ignoredHulls: expected an array, got 1'],
     ['ignoredHulls out of range', ['lights', 2, 'ignoredHulls', 1], 3, 'lights[2].ignoredHulls[1]: expected a hull index from 0 to 2, got 3'],
     ['ignoredHulls not an integer', ['lights', 2, 'ignoredHulls', 0], 0.5, 'lights[2].ignoredHulls[0]: expected a hull index from 0 to 2, got 0.5'],
-    ['light unknown field', ['lights', 0, 'coneAngle'], 1, 'lights[0].coneAngle: unknown field (allowed: kind, position, range, radius, color, intensity, rotation, origin, shadowType, enabled, castsShadows, ignoredHulls)'],
+    ['light unknown field', ['lights', 0, 'coneAngle'], 1, 'lights[0].coneAngle: unknown field (allowed: kind, position, range, radius, color, intensity, rotation, origin, shadowType, enabled, castsShadows, ignoredHulls, shadowLayers, shadowColor, shadowStrength)'],
     ['spot coneAngle above π', ['lights', 1, 'coneAngle'], 4, 'lights[1].coneAngle: expected a number ≤ 3.141592653589793, got 4'],
     ['spot coneAngle negative', ['lights', 1, 'coneAngle'], -1, 'lights[1].coneAngle: expected a number ≥ 0, got -1'],
     ['spot coneDecay negative', ['lights', 1, 'coneDecay'], -2, 'lights[1].coneDecay: expected a number ≥ 0, got -2'],

@@ -38,24 +38,25 @@ export function fullScene(): SceneDocument {
     ambient: [0.1, 0.2, 0.3],
     camera: { center: [120, -40], zoom: 1.5 },
     hulls: [
-      { points: [[0, 0], [40, 0], [40, 30], [0, 30]], position: [200, 100], origin: [20, 15], rotation: 0.3, scale: [1, -2], enabled: true, closed: true },
-      { points: [[0, 0], [60, 0], [60, 20], [20, 20], [20, 60], [0, 60]], position: [400, 300], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: false, closed: true },
-      { points: [[0, 0], [30, 10], [60, 0]], position: [100, 400], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: true, closed: false },
+      { points: [[0, 0], [40, 0], [40, 30], [0, 30]], position: [200, 100], origin: [20, 15], rotation: 0.3, scale: [1, -2], enabled: true, closed: true, layers: 1 },
+      { points: [[0, 0], [60, 0], [60, 20], [20, 20], [20, 60], [0, 60]], position: [400, 300], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: false, closed: true, layers: 6 },
+      { points: [[0, 0], [30, 10], [60, 0]], position: [100, 400], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: true, closed: false, layers: 0xffffffff },
     ],
     lights: [
       {
         kind: 'point', position: [10, 20], range: 300, radius: 12, color: [1, 0.8, 0.6], intensity: 1.5, rotation: 0,
         origin: [0.5, 0.5], shadowType: 'solid', enabled: true, castsShadows: false, ignoredHulls: [1],
+        shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1,
       },
       {
         kind: 'spot', position: [50, 60], range: 250, radius: 4, color: [0.5, 0.5, 1], intensity: 1, rotation: 1.2,
         origin: [0.5, 0.5], shadowType: 'illuminated', enabled: false, castsShadows: true, ignoredHulls: [],
-        coneAngle: 0.9, coneDecay: 2,
+        shadowLayers: 2, shadowColor: [0.2, 0.3, 0.6], shadowStrength: 0.75, coneAngle: 0.9, coneDecay: 2,
       },
       {
         kind: 'textured', position: [70, 80], range: 200, radius: 8, color: [1, 0.6, 0.2], intensity: 2, rotation: -0.4,
         origin: [0.25, 0.75], shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [0, 1],
-        cookie: 'flame', size: [160, 120],
+        shadowLayers: 0, shadowColor: [1, 1, 1], shadowStrength: 0, cookie: 'flame', size: [160, 120],
       },
     ],
   };

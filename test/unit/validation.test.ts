@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { PointLight, Spotlight } from '../../src/index';
+import { Hull, PointLight, Spotlight } from '../../src/index';
 
 /** Expects a RangeError whose message names the property and shows the value. */
 function expectRangeError(assign: () => void, property: string, value: string): void {
@@ -40,6 +40,23 @@ describe('light validation', () => {
     const light = new PointLight();
     expectRangeError(() => { light.position = [1, NaN]; }, 'PointLight.position[1]', 'NaN');
     expectRangeError(() => { light.color = [1, -1, 0]; }, 'PointLight.color[1]', '-1');
+  });
+
+  it('rejects layer masks that are not 32-bit unsigned integers, and shadow strengths outside 0..1', () => {
+    const light = new PointLight();
+    const hull = new Hull([[0, 0], [1, 0], [0, 1]]);
+    expect(light.shadowLayers).toBe(0xffffffff);
+    expect(hull.layers).toBe(1);
+    expectRangeError(() => { light.shadowLayers = 1.5; }, 'PointLight.shadowLayers', '1.5');
+    expectRangeError(() => { light.shadowLayers = -1; }, 'PointLight.shadowLayers', '-1');
+    expectRangeError(() => { hull.layers = 2 ** 32; }, 'Hull.layers', '4294967296');
+    expect(() => { hull.layers = '2' as unknown as number; }).toThrow(new TypeError('Hull.layers must be an integer from 0 to 0xffffffff (a bit mask), got "2"'));
+    expectRangeError(() => { light.shadowStrength = 1.01; }, 'PointLight.shadowStrength', '1.01');
+    expectRangeError(() => new PointLight({ shadowStrength: NaN }), 'PointLight.shadowStrength', 'NaN');
+    expectRangeError(() => { light.shadowColor = [0, -1, 0]; }, 'PointLight.shadowColor[1]', '-1');
+    light.shadowLayers = 0x80000000;
+    hull.layers = 0;
+    expect([light.shadowLayers, hull.layers]).toEqual([0x80000000, 0]);
   });
 
   it('keeps the previous value after a rejected assignment', () => {
