@@ -1,11 +1,13 @@
 // PixiJS v8 example: a character with a flashlight aimed at the mouse, walking (WASD / arrows)
-// through walls that cast soft shadows, with a few lamps. The HUD is drawn after the lighting.
-import { Application, Container, Graphics, Text, type WebGLRenderer } from 'pixi.js';
-import { PenumbraLayer, PointLight, Spotlight, hullFromBounds } from 'penumbra-gl/pixi';
+// through a tile map's walls that cast soft shadows, past a spinning prop whose shadow is traced
+// from its sprite's alpha, with a few lamps. The HUD is drawn after the lighting.
+import { Application, Container, Graphics, Rectangle, Sprite, Text, Texture, type WebGLRenderer } from 'pixi.js';
+import { PenumbraLayer, PointLight, Spotlight, TileHulls } from 'penumbra-gl/pixi';
 import {
-  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, WALLS, WORLD_HEIGHT, WORLD_WIDTH,
-  canvasSize, followPlayer, moveWithCollisions, readPixels, waitFrames,
+  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, PROP_POSITION, PROP_SIZE, PROP_SPIN, TILE_SIZE,
+  WORLD_HEIGHT, WORLD_WIDTH, canvasSize, followPlayer, levelTiles, moveWithCollisions, propImage, readPixels, waitFrames,
 } from '../examples/level';
+import { exposeOccluderCheck } from './occluderCheck';
 
 const app = new Application<WebGLRenderer>();
 // resizeTo: the canvas fills the window and follows it; the lighting resizes with Pixi's render target.
@@ -15,11 +17,21 @@ document.body.appendChild(app.canvas);
 // The world container is the camera: its position and scale pan and zoom everything in it.
 const world = new Container();
 world.addChild(drawFloor());
-const walls = WALLS.map(([x, y, w, h]) => world.addChild(new Graphics().rect(x, y, w, h).fill(0x8a7f72)));
-const player = world.addChild(new Graphics().circle(0, 0, PLAYER_RADIUS).fill(0xe8d8b0).rect(4, -3, 12, 6).fill(0x444444));
-
 const lighting = new PenumbraLayer(app.renderer, { camera: world, ambientColor: [0.08, 0.08, 0.12] });
-for (const wall of walls) lighting.addHull(hullFromBounds(wall, world));
+
+// The walls: a tile map, drawn as rectangles, whose hulls cover its solid tiles (a few large hulls).
+const tiles = new TileHulls(levelTiles(), { tileSize: TILE_SIZE });
+for (const hull of tiles.hulls) lighting.addHull(hull);
+const walls = world.addChild(new Graphics());
+drawWalls();
+
+// The prop: a sprite whose shadow is traced from its texture's alpha, and follows it as it turns.
+const prop = world.addChild(new Sprite({ texture: propTexture(), anchor: 0.5 }));
+prop.position.set(PROP_POSITION[0], PROP_POSITION[1]);
+lighting.addOccluder(prop);
+let propSpinning = true;
+
+const player = world.addChild(new Graphics().circle(0, 0, PLAYER_RADIUS).fill(0xe8d8b0).rect(4, -3, 12, 6).fill(0x444444));
 for (const lamp of LAMPS) {
   lighting.addLight(new PointLight({ position: lamp.position, color: lamp.color, range: 220, radius: 8, intensity: 1.2 }));
   world.addChild(new Graphics().circle(lamp.position[0], lamp.position[1], 5).fill(0xffffff));
@@ -52,8 +64,43 @@ function update(seconds: number): void {
   player.rotation = aim;
   flashlight.setPosition(position[0], position[1]);
   flashlight.rotation = aim;
+  if (propSpinning) prop.rotation += PROP_SPIN * seconds;
 }
 app.ticker.add((ticker) => update(Math.min(ticker.deltaMS, 50) / 1000));
+
+/** Redraws the wall tiles, one rectangle per run of solid tiles in a row. */
+function drawWalls(): void {
+  walls.clear();
+  for (let y = 0; y < tiles.height; y++) {
+    for (let x = 0; x < tiles.width; x++) {
+      if (!tiles.isSolid(x, y)) continue;
+      const start = x;
+      while (x + 1 < tiles.width && tiles.isSolid(x + 1, y)) x++;
+      walls.rect(start * TILE_SIZE, y * TILE_SIZE, (x + 1 - start) * TILE_SIZE, TILE_SIZE);
+    }
+  }
+  walls.fill(0x8a7f72);
+}
+
+/**
+ * The prop's texture: a frame of a small atlas canvas, as a sprite sheet would give it, trimmed of
+ * the image's transparent border (`trim` places it within the image's original size, so the
+ * anchor is still the image's centre). The atlas holds other pixels beside it that must not cast.
+ */
+function propTexture(): Texture {
+  const [left, top, width, height] = [2, 1, 44, 42];  // the opaque part of the prop's image
+  const atlas = Object.assign(document.createElement('canvas'), { width: 64, height: 64 });
+  const context = atlas.getContext('2d')!;
+  context.fillStyle = '#5a4a3a';
+  context.fillRect(0, 0, 12, 64);  // another sprite's pixels
+  context.putImageData(propImage(), 16 - left, 8 - top, left, top, width, height);
+  return new Texture({
+    source: Texture.from(atlas).source,
+    frame: new Rectangle(16, 8, width, height),
+    orig: new Rectangle(0, 0, PROP_SIZE, PROP_SIZE),
+    trim: new Rectangle(left, top, width, height),
+  });
+}
 
 function drawFloor(): Graphics {
   const floor = new Graphics();
@@ -79,9 +126,22 @@ window.penumbraExample = {
   },
   frames: waitFrames,
   canvasSize: () => canvasSize(app.renderer.gl),
+  setTile(x, y, solid) {
+    const { added, removed } = tiles.setTile(x, y, solid);
+    for (const hull of removed) lighting.removeHull(hull);
+    for (const hull of added) lighting.addHull(hull);
+    drawWalls();
+  },
+  setProp(x, y, rotation, scale, flipX) {
+    propSpinning = false;
+    prop.position.set(x, y);
+    prop.rotation = rotation;
+    prop.scale.set(flipX ? -scale : scale, scale);  // Pixi mirrors with a negative scale
+  },
   removeLighting() {
     lighting.destroy();
     const gl = app.renderer.gl;
     return gl.getError() === gl.NO_ERROR;
   },
 };
+exposeOccluderCheck(app, world, lighting, (x, y) => window.penumbraExample!.setPlayer(x, y));
