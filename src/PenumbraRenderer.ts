@@ -6,12 +6,13 @@ import { HostState } from './gl/HostState';
 import { RenderTarget, type TargetFormat } from './gl/RenderTarget';
 import { LightShapes } from './gl/LightShapes';
 import { CompositePass } from './passes/CompositePass';
+import { Dithering, ToneMapping } from './passes/compositeLayout';
 import { DebugPass } from './passes/DebugPass';
 import { LightPass } from './passes/LightPass';
 import { ShadowTextures } from './passes/ShadowTextures';
 import { Hull } from './scene/Hull';
 import { Light, TexturedLight } from './scene/lights';
-import { assertFinite, describeValue, frozenColor, type ColorLike } from './scene/validate';
+import { assertFinite, assertNonNegative, assertOneOf, describeValue, frozenColor, type ColorLike } from './scene/validate';
 
 /** Options of a {@link PenumbraRenderer}; every field has the default shown. */
 export interface PenumbraRendererOptions {
@@ -35,6 +36,12 @@ export interface PenumbraRendererOptions {
   measureCpuTime?: boolean;
   /** See {@link PenumbraRenderer.onContextRestored}. Default `null`. */
   onContextRestored?: ((renderer: PenumbraRenderer) => void) | null;
+  /** See {@link PenumbraRenderer.exposure}. Default `1`. */
+  exposure?: number;
+  /** See {@link PenumbraRenderer.toneMapping}. Default `'none'`. */
+  toneMapping?: ToneMapping;
+  /** See {@link PenumbraRenderer.dithering}. Default `'none'`. */
+  dithering?: Dithering;
 }
 
 /** Figures about the last frame, for overlays and benchmarks. */
@@ -111,6 +118,9 @@ export class PenumbraRenderer {
   private readonly _lights: Light[] = [];
   private readonly _hulls: Hull[] = [];
   private _ambient: readonly [number, number, number] = Object.freeze([0.2, 0.2, 0.2] as const);
+  private _exposure = 1;
+  private _toneMapping: ToneMapping = ToneMapping.None;
+  private _dithering: Dithering = Dithering.None;
   private readonly _viewProjection = mat4.create();
   private customViewProjection = false;
   private readonly geometry = new ShadowGeometry();
@@ -139,6 +149,9 @@ export class PenumbraRenderer {
     this.measureCpuTime = options.measureCpuTime ?? false;
     this.onContextRestored = options.onContextRestored ?? null;
     if (options.ambientColor !== undefined) this.ambientColor = options.ambientColor;
+    if (options.exposure !== undefined) this.exposure = options.exposure;
+    if (options.toneMapping !== undefined) this.toneMapping = options.toneMapping;
+    if (options.dithering !== undefined) this.dithering = options.dithering;
     this.maxSize = maxTargetSize(gl);
     this.width = checkSize('PenumbraRenderer.width', options.width ?? gl.drawingBufferWidth, this.maxSize);
     this.height = checkSize('PenumbraRenderer.height', options.height ?? gl.drawingBufferHeight, this.maxSize);
@@ -161,6 +174,41 @@ export class PenumbraRenderer {
   }
   set ambientColor(value: ColorLike) {
     this._ambient = frozenColor('PenumbraRenderer.ambientColor', value);
+  }
+
+  /**
+   * Multiplier on the lit colour (scene × lightmap) before tone mapping, ≥ 0: brighter or darker
+   * without changing the lights. Applies where the renderer composites (`draw`, `drawInPlace`), not
+   * to `lightmapTexture`.
+   */
+  get exposure(): number {
+    return this._exposure;
+  }
+  set exposure(value: number) {
+    this._exposure = assertNonNegative('PenumbraRenderer.exposure', value);
+  }
+
+  /**
+   * The curve from the lit colour × exposure to output colour, one of {@link ToneMapping}:
+   * `'none'` (clipped at 1, as before), `'reinhard'`, `'aces'`. Applies where the renderer composites.
+   */
+  get toneMapping(): ToneMapping {
+    return this._toneMapping;
+  }
+  set toneMapping(value: ToneMapping) {
+    this._toneMapping = assertOneOf('PenumbraRenderer.toneMapping', value, Object.values(ToneMapping));
+  }
+
+  /**
+   * Dithering of the composited output, one of {@link Dithering}: `'none'`, `'ordered'` (4 × 4
+   * Bayer) or `'noise'` (interleaved gradient noise). It moves each 8-bit output value by at most
+   * one step and removes the bands of dark gradients; meant for 8-bit targets.
+   */
+  get dithering(): Dithering {
+    return this._dithering;
+  }
+  set dithering(value: Dithering) {
+    this._dithering = assertOneOf('PenumbraRenderer.dithering', value, Object.values(Dithering));
   }
 
   /**
@@ -308,7 +356,7 @@ export class PenumbraRenderer {
     try {
       this.renderLightmapInto(resources);
       this.bindCompositeTarget();
-      resources.composite.render(resources.scene.texture, resources.light.lightmap.texture);
+      resources.composite.render(resources.scene.texture, resources.light.lightmap.texture, this);
       if (this.debug) {
         resources.debug.render(this.plan.draws, this.plan.drawCount, resources.shadows.records, this.geometry.recordCount, this._viewProjection);
       }

@@ -1,4 +1,5 @@
 export { PenumbraRenderer, type PenumbraRendererOptions, type FrameStats } from './PenumbraRenderer';
+export { ToneMapping, Dithering } from './passes/compositeLayout';
 export { Hull, type HullOptions } from './scene/Hull';
 export {
   Light, PointLight, Spotlight, TexturedLight, ShadowType,

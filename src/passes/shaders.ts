@@ -11,6 +11,7 @@ import shadowBehind from '../../shaders/chunks/shadow-behind.glsl?raw';
 import shadowQuadrature from '../../shaders/chunks/shadow-quadrature.glsl?raw';
 import shadowVisibility from '../../shaders/chunks/shadow-visibility.glsl?raw';
 import { SHADOW_DEFINES } from '../geometry/shadowLayout';
+import { COMPOSITE_DEFINES } from './compositeLayout';
 import { resolveIncludes, withDefines } from '../gl/program';
 
 const chunks = { 'light-common': lightCommon, 'shadow-visibility': shadowVisibility, 'shadow-behind': shadowBehind, 'shadow-quadrature': shadowQuadrature };
@@ -44,7 +45,7 @@ function lightStage(source: string): LightStages {
  * drops this object and every shader string with it.
  */
 export const shaderSources = {
-  compositeFragment,
+  compositeFragment: /* @__PURE__ */ withDefines(compositeFragment, COMPOSITE_DEFINES),
   debugFragment,
   debugRecordsVertex: /* @__PURE__ */ withDefines(debugRecordsVertex, SHADOW_DEFINES),
   fullscreenVertex,

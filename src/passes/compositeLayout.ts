@@ -1,0 +1,41 @@
+/**
+ * The composite's look: tone-mapping curves and dithering, as the public option values and as the
+ * codes the composite shader (shaders/composite.frag.glsl) compares its uniforms with, which reach
+ * it as defines ({@link COMPOSITE_DEFINES}).
+ */
+
+/** Curves that map the lit colour (scene × lightmap × exposure, unbounded) into the output's 0..1. */
+export const ToneMapping = {
+  /** None: the colour as it is, clipped at 1 by the output (the default; overlapping lights blow out). */
+  None: 'none',
+  /** Reinhard, per channel: c / (1 + c). Never clips; halves a colour of 1 (raise the exposure to compensate). */
+  Reinhard: 'reinhard',
+  /** The ACES filmic curve as fitted by Narkowicz (2015), per channel: contrast in the mid tones, a soft shoulder above. */
+  Aces: 'aces',
+} as const;
+/** One of the {@link ToneMapping} values. */
+export type ToneMapping = (typeof ToneMapping)[keyof typeof ToneMapping];
+
+/** Noise added to the output before it is stored, against banding in dark gradients of 8-bit output. */
+export const Dithering = {
+  /** No dithering (the default). */
+  None: 'none',
+  /** A 4 × 4 Bayer matrix: a fine regular pattern. */
+  Ordered: 'ordered',
+  /** Interleaved gradient noise (Jimenez 2014): no visible pattern, close to blue noise. */
+  Noise: 'noise',
+} as const;
+/** One of the {@link Dithering} values. */
+export type Dithering = (typeof Dithering)[keyof typeof Dithering];
+
+/** The shader's code of each curve and dithering. */
+export const TONE_MAPPING_CODES: Readonly<Record<ToneMapping, number>> = { none: 0, reinhard: 1, aces: 2 };
+export const DITHERING_CODES: Readonly<Record<Dithering, number>> = { none: 0, ordered: 1, noise: 2 };
+
+/** The codes as `#define`s. */
+export const COMPOSITE_DEFINES: Readonly<Record<string, number>> = {
+  TONE_REINHARD: TONE_MAPPING_CODES.reinhard,
+  TONE_ACES: TONE_MAPPING_CODES.aces,
+  DITHER_ORDERED: DITHERING_CODES.ordered,
+  DITHER_NOISE: DITHERING_CODES.noise,
+};
