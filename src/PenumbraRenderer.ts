@@ -5,8 +5,9 @@ import { isWebGL2, supportsFloatTargets } from './gl/capabilities';
 import { HostState } from './gl/HostState';
 import { RenderTarget, type TargetFormat } from './gl/RenderTarget';
 import { LightShapes } from './gl/LightShapes';
+import { BlurPass } from './passes/BlurPass';
 import { CompositePass } from './passes/CompositePass';
-import { Dithering, ToneMapping } from './passes/compositeLayout';
+import { Dithering, MAX_BLUR_RADIUS, ToneMapping } from './passes/compositeLayout';
 import { DebugPass } from './passes/DebugPass';
 import { LightPass } from './passes/LightPass';
 import { ShadowTextures } from './passes/ShadowTextures';
@@ -42,6 +43,8 @@ export interface PenumbraRendererOptions {
   toneMapping?: ToneMapping;
   /** See {@link PenumbraRenderer.dithering}. Default `'none'`. */
   dithering?: Dithering;
+  /** See {@link PenumbraRenderer.lightmapBlur}. Default `0`. */
+  lightmapBlur?: number;
 }
 
 /** Figures about the last frame, for overlays and benchmarks. */
@@ -68,6 +71,7 @@ interface Resources {
   scene: RenderTarget;
   light: LightPass;
   composite: CompositePass;
+  blur: BlurPass;
   debug: DebugPass;
 }
 
@@ -121,6 +125,7 @@ export class PenumbraRenderer {
   private _exposure = 1;
   private _toneMapping: ToneMapping = ToneMapping.None;
   private _dithering: Dithering = Dithering.None;
+  private _lightmapBlur = 0;
   private readonly _viewProjection = mat4.create();
   private customViewProjection = false;
   private readonly geometry = new ShadowGeometry();
@@ -152,6 +157,7 @@ export class PenumbraRenderer {
     if (options.exposure !== undefined) this.exposure = options.exposure;
     if (options.toneMapping !== undefined) this.toneMapping = options.toneMapping;
     if (options.dithering !== undefined) this.dithering = options.dithering;
+    if (options.lightmapBlur !== undefined) this.lightmapBlur = options.lightmapBlur;
     this.maxSize = maxTargetSize(gl);
     this.width = checkSize('PenumbraRenderer.width', options.width ?? gl.drawingBufferWidth, this.maxSize);
     this.height = checkSize('PenumbraRenderer.height', options.height ?? gl.drawingBufferHeight, this.maxSize);
@@ -209,6 +215,21 @@ export class PenumbraRenderer {
   }
   set dithering(value: Dithering) {
     this._dithering = assertOneOf('PenumbraRenderer.dithering', value, Object.values(Dithering));
+  }
+
+  /**
+   * Blur of the lightmap, a radius in the renderer's pixels from 0 (off, the default) to 32: a
+   * Gaussian of standard deviation radius / 2 cut at the radius, for a softer look. A look, not a
+   * physics: it also spreads light past hull edges and into umbrae. The first frame with a blur
+   * makes one more lightmap-sized texture; the blur costs two full-lightmap passes a frame.
+   */
+  get lightmapBlur(): number {
+    return this._lightmapBlur;
+  }
+  set lightmapBlur(value: number) {
+    assertNonNegative('PenumbraRenderer.lightmapBlur', value);
+    if (value > MAX_BLUR_RADIUS) throw new RangeError(`PenumbraRenderer.lightmapBlur must be at most ${MAX_BLUR_RADIUS}, got ${value}`);
+    this._lightmapBlur = value;
   }
 
   /**
@@ -427,6 +448,7 @@ export class PenumbraRenderer {
     resources.shadows.upload(this.geometry, plan.bins);
     resources.light.begin(this._ambient, viewProjection);
     for (let i = 0; i < plan.drawCount; i++) resources.light.render(plan.draws[i]);
+    if (this._lightmapBlur > 0) resources.blur.render(resources.light.lightmap, this._lightmapBlur * this.lightmapScale);
     this.updateStats(this.measureCpuTime ? performance.now() - start : 0);
   }
 
@@ -520,6 +542,7 @@ export class PenumbraRenderer {
           scene: keep(new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, this.width, this.height)),
           light: keep(new LightPass(gl, shapes, this.lightmapFormat, this.lightmapWidth, this.lightmapHeight)),
           composite: keep(new CompositePass(gl)),
+          blur: keep(new BlurPass(gl, this.lightmapFormat)),
           debug: keep(new DebugPass(gl, shapes)),
         };
       });

@@ -1,11 +1,13 @@
 // Phaser 4 example: a character with a flashlight aimed at the mouse, walking (WASD / arrows)
-// through walls that cast soft shadows, with a few lamps. The HUD sits above the lighting layer.
+// through a tilemap's walls that cast soft shadows, past a spinning prop whose shadow is traced
+// from its sprite's alpha, with a few lamps. The HUD sits above the lighting layer.
 import Phaser from 'phaser';
-import { DEFAULT_LAYER_DEPTH, Hull, PenumbraPlugin, PointLight, Spotlight } from 'penumbra-gl/phaser';
+import { DEFAULT_LAYER_DEPTH, PenumbraPlugin, PointLight, Spotlight } from 'penumbra-gl/phaser';
 import {
-  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, WALLS, WORLD_HEIGHT, WORLD_WIDTH,
-  canvasSize, followPlayer, moveWithCollisions, readPixels, waitFrames,
+  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, PROP_POSITION, PROP_SPIN, TILE_SIZE, WORLD_HEIGHT,
+  WORLD_WIDTH, canvasSize, followPlayer, levelTiles, moveWithCollisions, readPixels, waitFrames,
 } from '../examples/level';
+import { ART_KEY, FLASHLIGHT, PROP_CUT, PROP_FRAME, PROP_TRIMMED_WIDTH, WALL_TILE, drawArt } from './content';
 
 class LevelScene extends Phaser.Scene {
   declare penumbra: PenumbraPlugin;
@@ -16,6 +18,9 @@ class LevelScene extends Phaser.Scene {
   private player!: Phaser.GameObjects.Graphics;
   private hud!: Phaser.GameObjects.Container;
   private flashlight!: Spotlight;
+  private walls!: Phaser.Tilemaps.TilemapLayer;
+  private prop!: Phaser.GameObjects.Sprite;
+  private propSpinning = true;
 
   create(): void {
     const floor = this.add.graphics();
@@ -25,17 +30,26 @@ class LevelScene extends Phaser.Scene {
         floor.fillStyle(((x + y) / tile) % 2 === 0 ? 0x9a9a9a : 0x8c8c8c).fillRect(x, y, tile, tile);
       }
     }
-    const walls = this.add.graphics().fillStyle(0x8a7f72);
-    for (const [x, y, w, h] of WALLS) {
-      walls.fillRect(x, y, w, h);
-      this.penumbra.addHull(new Hull([[0, 0], [w, 0], [w, h], [0, h]], { position: [x, y] }));
-    }
+    // The art: one texture drawn in code, the wall tile and the prop's frame (a trimmed crop of it).
+    const art = this.textures.addCanvas(ART_KEY, drawArt())!;
+    const [propWidth, propHeight] = [art.source[0].width - PROP_CUT[0], art.source[0].height - PROP_CUT[1]];
+    art.add(PROP_FRAME, 0, PROP_CUT[0], PROP_CUT[1], propWidth, propHeight)!.setTrim(PROP_TRIMMED_WIDTH, propHeight, 0, 0, propWidth, propHeight);
+
+    // The walls: a tilemap layer, whose colliding tiles cast shadows and follow putTileAt / removeTileAt.
+    const map = this.make.tilemap({ data: levelTiles().map((row) => row.map((wall) => (wall ? WALL_TILE : -1))), tileWidth: TILE_SIZE, tileHeight: TILE_SIZE });
+    const tileset = map.addTilesetImage(ART_KEY, ART_KEY, TILE_SIZE, TILE_SIZE)!;
+    this.walls = (map.createLayer(0, tileset, 0, 0) as Phaser.Tilemaps.TilemapLayer).setCollision(WALL_TILE);
+    this.penumbra.addTilemapLayer(this.walls);
+
+    // The prop: its shadow is traced from its frame's alpha and follows it (turning about the frame's centre).
+    this.prop = this.add.sprite(PROP_POSITION[0], PROP_POSITION[1], ART_KEY, PROP_FRAME);
+    this.penumbra.addSprite(this.prop);
     for (const lamp of LAMPS) {
       this.penumbra.addLight(new PointLight({ position: lamp.position, color: lamp.color, range: 220, radius: 8, intensity: 1.2 }));
       this.add.graphics().fillStyle(0xffffff).fillCircle(lamp.position[0], lamp.position[1], 5);
     }
     this.player = this.add.graphics().fillStyle(0xe8d8b0).fillCircle(0, 0, PLAYER_RADIUS).fillStyle(0x444444).fillRect(4, -3, 12, 6);
-    this.flashlight = this.penumbra.addLight(new Spotlight({ range: 320, radius: 3, coneAngle: Math.PI / 3.5, coneDecay: 0.6, intensity: 1.3, color: [1, 0.95, 0.8] }));
+    this.flashlight = this.penumbra.addLight(new Spotlight(FLASHLIGHT));
     this.cameras.main.setOrigin(0, 0);
 
     // Above the lighting layer: unlit.
@@ -63,6 +77,7 @@ class LevelScene extends Phaser.Scene {
     this.player.setPosition(position[0], position[1]).setRotation(aim);
     this.flashlight.setPosition(position[0], position[1]);
     this.flashlight.rotation = aim;
+    if (this.propSpinning) this.prop.rotation += PROP_SPIN * seconds;
   }
 
   private exposeTestHook(): void {
@@ -82,6 +97,14 @@ class LevelScene extends Phaser.Scene {
       },
       frames: waitFrames,
       canvasSize: () => canvasSize(gl),
+      setTile: (x, y, solid) => {
+        if (solid) this.walls.putTileAt(WALL_TILE, x, y);
+        else this.walls.removeTileAt(x, y);
+      },
+      setProp: (x, y, rotation, scale, flipX) => {
+        this.propSpinning = false;
+        this.prop.setPosition(x, y).setRotation(rotation).setScale(scale).setFlipX(flipX);
+      },
       removeLighting: () => {
         this.plugins.removeScenePlugin('PenumbraPlugin');
         this.penumbra.destroy();

@@ -1,8 +1,11 @@
 /**
- * The composite's look: tone-mapping curves and dithering, as the public option values and as the
- * codes the composite shader (shaders/composite.frag.glsl) compares its uniforms with, which reach
- * it as defines ({@link COMPOSITE_DEFINES}).
+ * The look of the final image: tone-mapping curves and dithering, as the public option values and
+ * as the codes the composite shader (shaders/composite.frag.glsl) compares its uniforms with, which
+ * reach it as defines ({@link COMPOSITE_DEFINES}); and the widest lightmap blur (shaders/blur.frag.glsl).
  */
+
+/** The widest lightmap blur, in lightmap pixels either side: the blur shader's loop bound and weight array (a define). */
+export const MAX_BLUR_RADIUS = 32;
 
 /** Curves that map the lit colour (scene × lightmap × exposure, unbounded) into the output's 0..1. */
 export const ToneMapping = {

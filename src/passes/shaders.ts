@@ -1,3 +1,4 @@
+import blurFragment from '../../shaders/blur.frag.glsl?raw';
 import compositeFragment from '../../shaders/composite.frag.glsl?raw';
 import debugFragment from '../../shaders/debug.frag.glsl?raw';
 import debugRecordsVertex from '../../shaders/debug-records.vert.glsl?raw';
@@ -11,7 +12,7 @@ import shadowBehind from '../../shaders/chunks/shadow-behind.glsl?raw';
 import shadowQuadrature from '../../shaders/chunks/shadow-quadrature.glsl?raw';
 import shadowVisibility from '../../shaders/chunks/shadow-visibility.glsl?raw';
 import { SHADOW_DEFINES } from '../geometry/shadowLayout';
-import { COMPOSITE_DEFINES } from './compositeLayout';
+import { COMPOSITE_DEFINES, MAX_BLUR_RADIUS } from './compositeLayout';
 import { resolveIncludes, withDefines } from '../gl/program';
 
 const chunks = { 'light-common': lightCommon, 'shadow-visibility': shadowVisibility, 'shadow-behind': shadowBehind, 'shadow-quadrature': shadowQuadrature };
@@ -45,6 +46,7 @@ function lightStage(source: string): LightStages {
  * drops this object and every shader string with it.
  */
 export const shaderSources = {
+  blurFragment: /* @__PURE__ */ withDefines(blurFragment, { MAX_BLUR_RADIUS }),
   compositeFragment: /* @__PURE__ */ withDefines(compositeFragment, COMPOSITE_DEFINES),
   debugFragment,
   debugRecordsVertex: /* @__PURE__ */ withDefines(debugRecordsVertex, SHADOW_DEFINES),

@@ -2,6 +2,8 @@ import Phaser from 'phaser';
 import { mat4 } from 'gl-matrix';
 import { PenumbraRenderer, type Hull, type Light, type PenumbraRendererOptions } from '../../index';
 import { setViewProjection, type Affine2D } from '../viewProjection';
+import { SpriteHulls, type FrameObject, type SpriteHullsOptions } from './SpriteHulls';
+import { TilemapLayerHulls, type TilemapLayerHullsOptions } from './TilemapLayerHulls';
 
 /** Depth of the lighting layer unless changed: objects above it (the HUD) stay unlit. */
 export const DEFAULT_LAYER_DEPTH = 1000;
@@ -26,6 +28,10 @@ export type PenumbraPluginOptions = Omit<PenumbraRendererOptions, 'viewProjectio
  * zoom and rotation are honoured. The layer is an `Extern`, Phaser's own hook for foreign GL
  * code, so Phaser yields the context before and rebinds its state after. On scene shutdown the
  * lights and hulls are dropped; when the scene or the plugin is destroyed the GL resources are freed.
+ *
+ * Game content casts shadows through {@link PenumbraPlugin.addTilemapLayer} (a tilemap layer's
+ * solid tiles, kept in step as tiles change) and {@link PenumbraPlugin.addSprite} (a sprite's
+ * opaque pixels, following the sprite).
  */
 export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   private renderer: PenumbraRenderer | null = null;
@@ -35,6 +41,8 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   private readonly camera: Affine2D = { a: 1, b: 0, c: 0, d: 1, tx: 0, ty: 0 };
   private targetWidth = 0;
   private targetHeight = 0;
+  /** The tilemap layers and sprites added, with their hulls. */
+  private readonly occluders = new Map<Phaser.GameObjects.GameObject, TilemapLayerHulls | SpriteHulls>();
 
   /** The core renderer: ambient colour, debug wireframe, stats, lights and hulls. */
   get penumbra(): PenumbraRenderer {
@@ -86,9 +94,55 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   addHull(hull: Hull): Hull {
     return this.penumbra.addHull(hull);
   }
-  /** Removes a hull; returns whether it was there. */
+  /** Removes a hull; returns whether it was there (false once the plugin is destroyed). */
   removeHull(hull: Hull): boolean {
-    return this.penumbra.removeHull(hull);
+    return this.renderer?.removeHull(hull) ?? false;
+  }
+
+  /**
+   * Makes a tilemap layer's solid tiles cast shadows: by default the tiles that collide (set with
+   * `layer.setCollision…`), or `options.solid` (tile indices, or a test of a tile). The hulls
+   * (one per group of touching tiles) follow the layer's position and scale, and are rebuilt
+   * around any tile that changes (`putTileAt`, `removeTileAt`, `fill`, …) before the next render.
+   * Adding a layer again replaces its hulls. See {@link TilemapLayerHulls}.
+   *
+   * ```ts
+   * const layer = map.createLayer(0, tileset)!.setCollision([1, 2, 3]);
+   * this.penumbra.addTilemapLayer(layer);
+   * ```
+   * @throws TypeError or RangeError for a layer or option that does not fit (see {@link TilemapLayerHulls}).
+   */
+  addTilemapLayer(layer: Phaser.Tilemaps.TilemapLayerBase, options?: TilemapLayerHullsOptions): TilemapLayerHulls {
+    this.occluders.get(layer)?.destroy();
+    return this.track(layer, new TilemapLayerHulls(layer, this, options));
+  }
+
+  /** Removes a tilemap layer's hulls; returns whether it had some. Destroying the layer does it too. */
+  removeTilemapLayer(layer: Phaser.Tilemaps.TilemapLayerBase): boolean {
+    return this.untrack(layer);
+  }
+
+  /**
+   * Makes a sprite (or image) cast the shadow of its opaque pixels: hulls traced from the alpha of
+   * the frame it shows (read once per frame and shared), following its position, rotation, scale,
+   * origin, flips, frame and visibility every frame. Adding a sprite again replaces its hulls.
+   * See {@link SpriteHulls}.
+   *
+   * ```ts
+   * const barrel = this.add.sprite(320, 240, 'props', 'barrel');
+   * this.penumbra.addSprite(barrel, { tolerance: 1.5, maxPoints: 16 });
+   * ```
+   * @throws TypeError when the frame's pixels cannot be read (then give `options.image`), or for
+   * an option of the wrong type; RangeError for an option out of range.
+   */
+  addSprite(sprite: FrameObject, options?: SpriteHullsOptions): SpriteHulls {
+    this.occluders.get(sprite)?.destroy();
+    return this.track(sprite, new SpriteHulls(sprite, this, options));
+  }
+
+  /** Removes a sprite's hulls; returns whether it had some. Destroying the sprite does it too. */
+  removeSprite(sprite: FrameObject): boolean {
+    return this.untrack(sprite);
   }
 
   /** Called by Phaser once, when the scene boots. @internal */
@@ -107,11 +161,30 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     events?.off(Phaser.Scenes.Events.START, this.onStart, this);
     events?.off(Phaser.Scenes.Events.SHUTDOWN, this.onShutdown, this);
     events?.off(Phaser.Scenes.Events.DESTROY, this.destroy, this);
+    this.dropOccluders();
     this.extern?.destroy();
     this.extern = null;
     this.renderer?.dispose();
     this.renderer = null;
     super.destroy();
+  }
+
+  private track<T extends TilemapLayerHulls | SpriteHulls>(object: Phaser.GameObjects.GameObject, occluder: T): T {
+    this.occluders.set(object, occluder);
+    occluder.onDestroy = () => {
+      if (this.occluders.get(object) === occluder) this.occluders.delete(object);
+    };
+    return occluder;
+  }
+
+  private untrack(object: Phaser.GameObjects.GameObject): boolean {
+    const occluder = this.occluders.get(object);
+    occluder?.destroy();
+    return occluder !== undefined;
+  }
+
+  private dropOccluders(): void {
+    for (const occluder of [...this.occluders.values()]) occluder.destroy();
   }
 
   private createRenderer(options: PenumbraPluginOptions): PenumbraRenderer {
@@ -151,6 +224,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
 
   private onShutdown(): void {
     this.extern = null;
+    this.dropOccluders();
     const penumbra = this.renderer;
     if (!penumbra) return;
     for (let i = penumbra.lights.length - 1; i >= 0; i--) penumbra.removeLight(penumbra.lights[i]);
