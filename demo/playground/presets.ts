@@ -4,7 +4,10 @@ import { seededRandom } from './textures';
 type Point = [number, number];
 
 function scene(ambient: [number, number, number], center: Point, zoom: number, hulls: SceneHull[], lights: SceneLight[]): SceneDocument {
-  return { format: 'penumbra-scene', version: 2, ambient, camera: { center, zoom }, hulls, lights };
+  return {
+    format: 'penumbra-scene', version: 2, ambient, camera: { center, zoom }, hulls, lights,
+    look: { exposure: 1, toneMapping: 'none', dithering: 'none', lightmapBlur: 0 },
+  };
 }
 
 function hull(points: Point[], position: Point, rotation = 0): SceneHull {

@@ -35,6 +35,27 @@ export interface SceneDocument {
   hulls: SceneHull[];
   /** Lights, in drawing order. Optional, default `[]`. */
   lights: SceneLight[];
+  /**
+   * How the final image is made from the lightmap: the renderer's properties of the same names.
+   * Apply it with `Object.assign(renderer, scene.look)`. Optional, default the renderer's defaults;
+   * not in version 1 files.
+   */
+  look: SceneLook;
+}
+
+/** The look of a file that has none: the renderer's defaults. @internal */
+export const DEFAULT_LOOK: Readonly<SceneLook> = Object.freeze({ exposure: 1, toneMapping: 'none', dithering: 'none', lightmapBlur: 0 });
+
+/** The renderer's look (`PenumbraRenderer.exposure` and the next three), as a scene file stores it. */
+export interface SceneLook {
+  /** ≥ 0. Optional, default `1`. */
+  exposure: number;
+  /** `"none"`, `"reinhard"` or `"aces"`. Optional, default `"none"`. */
+  toneMapping: 'none' | 'reinhard' | 'aces';
+  /** `"none"`, `"ordered"` or `"noise"`. Optional, default `"none"`. */
+  dithering: 'none' | 'ordered' | 'noise';
+  /** 0..32. Optional, default `0`. */
+  lightmapBlur: number;
 }
 
 /** The view: the world point at the centre of the screen and how many screen pixels a world unit covers. */

@@ -4,13 +4,15 @@ import {
 } from './fields';
 import { describeValue, shortened } from '../scene/validate';
 import {
-  SCENE_FORMAT, SCENE_FORMAT_VERSION, SCENE_MAX_HULL_POINTS,
-  type SceneCamera, type SceneDocument, type SceneHull, type SceneLight, type SceneLightBase,
+  DEFAULT_LOOK, SCENE_FORMAT, SCENE_FORMAT_VERSION, SCENE_MAX_HULL_POINTS,
+  type SceneCamera, type SceneDocument, type SceneHull, type SceneLight, type SceneLightBase, type SceneLook,
 } from './SceneDocument';
 import { SceneFormatError } from './SceneFormatError';
 
-const DOCUMENT_FIELDS = ['format', 'version', 'ambient', 'camera', 'hulls', 'lights'] as const;
+const DOCUMENT_FIELDS = ['format', 'version', 'ambient', 'camera', 'hulls', 'lights', 'look'] as const;
 const CAMERA_FIELDS = ['center', 'zoom'] as const;
+const LOOK_FIELDS = ['exposure', 'toneMapping', 'dithering', 'lightmapBlur'] as const;
+
 const HULL_FIELDS_V1 = ['points', 'position', 'origin', 'rotation', 'scale', 'enabled'];
 const LIGHT_FIELDS_V1 = [
   'kind', 'position', 'range', 'radius', 'color', 'intensity', 'rotation', 'origin', 'shadowType', 'enabled',
@@ -18,12 +20,14 @@ const LIGHT_FIELDS_V1 = [
 ];
 /** The fields hulls and lights (besides their kind's) may have, per version this reader knows. */
 interface VersionFields {
+  readonly document: readonly string[];
   readonly hull: readonly string[];
   readonly light: readonly string[];
 }
 const VERSION_FIELDS: Readonly<Record<number, VersionFields>> = {
-  1: { hull: HULL_FIELDS_V1, light: LIGHT_FIELDS_V1 },
+  1: { document: DOCUMENT_FIELDS.filter((field) => field !== 'look'), hull: HULL_FIELDS_V1, light: LIGHT_FIELDS_V1 },
   [SCENE_FORMAT_VERSION]: {
+    document: DOCUMENT_FIELDS,
     hull: [...HULL_FIELDS_V1, 'closed', 'layers'],
     light: [...LIGHT_FIELDS_V1, 'shadowLayers', 'shadowColor', 'shadowStrength'],
   },
@@ -62,6 +66,7 @@ function readDocument(input: unknown): SceneDocument {
     throw new SceneFormatError('version', `unsupported version ${version} (this reader knows versions 1 and ${SCENE_FORMAT_VERSION})`);
   }
   const fields = VERSION_FIELDS[version];
+  readObject(input, '', fields.document);
   const hulls = readList(root.value.hulls, 'hulls', (value, path) => readHull(value, path, fields.hull));
   const lights = readList(root.value.lights, 'lights', (value, path) => readLight(value, path, fields.light, hulls.length));
   return {
@@ -71,6 +76,7 @@ function readDocument(input: unknown): SceneDocument {
     camera: root.value.camera === undefined ? { center: [0, 0], zoom: 1 } : readCamera(root.value.camera, 'camera'),
     hulls,
     lights,
+    look: root.value.look === undefined ? { ...DEFAULT_LOOK } : readLook(root.value.look, 'look'),
   };
 }
 
@@ -94,6 +100,16 @@ function readList<T>(value: unknown, path: string, read: (item: unknown, path: s
 function readCamera(value: unknown, path: string): SceneCamera {
   const camera = readObject(value, path, CAMERA_FIELDS);
   return { center: vec2Field(camera, 'center', [0, 0]), zoom: positiveField(camera, 'zoom', 1) };
+}
+
+function readLook(value: unknown, path: string): SceneLook {
+  const look = readObject(value, path, LOOK_FIELDS);
+  return {
+    exposure: numberField(look, 'exposure', DEFAULT_LOOK.exposure, 0),
+    toneMapping: choiceField(look, 'toneMapping', ['none', 'reinhard', 'aces'] as const, DEFAULT_LOOK.toneMapping),
+    dithering: choiceField(look, 'dithering', ['none', 'ordered', 'noise'] as const, DEFAULT_LOOK.dithering),
+    lightmapBlur: numberField(look, 'lightmapBlur', DEFAULT_LOOK.lightmapBlur, 0, 32),
+  };
 }
 
 function readHull(value: unknown, path: string, fields: readonly string[]): SceneHull {

@@ -1,7 +1,7 @@
 import { Hull } from '../scene/Hull';
 import { Light, PointLight, Spotlight, TexturedLight } from '../scene/lights';
 import { describeValue } from '../scene/validate';
-import { SCENE_FORMAT, SCENE_FORMAT_VERSION, type SceneCamera, type SceneDocument, type SceneLight } from './SceneDocument';
+import { DEFAULT_LOOK, SCENE_FORMAT, SCENE_FORMAT_VERSION, type SceneCamera, type SceneDocument, type SceneLight, type SceneLook } from './SceneDocument';
 import { SceneFormatError } from './SceneFormatError';
 
 /** Lights and hulls built from a {@link SceneDocument}, ready for `renderer.addLight` / `addHull`. */
@@ -50,6 +50,8 @@ export interface SceneDescriptionInput extends SceneObjects {
   camera: SceneCamera;
   /** The cookie name of a textured light's texture. */
   cookieName: (texture: WebGLTexture) => string;
+  /** The look to store, e.g. the renderer itself (its `exposure`, `toneMapping`, `dithering`, `lightmapBlur`). Default: the renderer's defaults. */
+  look?: Readonly<SceneLook>;
 }
 
 /**
@@ -74,7 +76,12 @@ export function describeScene(input: SceneDescriptionInput): SceneDocument {
       layers: hull.layers,
     })),
     lights: input.lights.map((light) => describeLight(light, hullIndex, input.cookieName)),
+    look: describeLook(input.look ?? DEFAULT_LOOK),
   };
+}
+
+function describeLook({ exposure, toneMapping, dithering, lightmapBlur }: Readonly<SceneLook>): SceneLook {
+  return { exposure, toneMapping, dithering, lightmapBlur };
 }
 
 function describeLight(light: Light, hullIndex: ReadonlyMap<Hull, number>, cookieName: (texture: WebGLTexture) => string): SceneLight {

@@ -24,6 +24,7 @@ function testScene(light: [number, number], range = 300): SceneDocument {
       shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [],
       shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1,
     }],
+    look: { exposure: 1, toneMapping: 'none', dithering: 'none', lightmapBlur: 0 },
   };
 }
 

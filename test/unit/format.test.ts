@@ -51,6 +51,8 @@ describe('scene format', () => {
     expect(scene.hulls[0].closed).toBe(true);
     expect(errorOf({ ...v1, hulls: [{ points: [[0, 0], [1, 0]], closed: false }] }).message)
       .toBe('hulls[0].closed: unknown field (allowed: points, position, origin, rotation, scale, enabled)');
+    expect(errorOf({ ...v1, look: { exposure: 2 } }).message).toBe('look: unknown field (allowed: format, version, ambient, camera, hulls, lights)');
+    expect(scene.look).toEqual({ exposure: 1, toneMapping: 'none', dithering: 'none', lightmapBlur: 0 });
   });
 
   it('rejects an unknown version and another format', () => {
@@ -67,7 +69,7 @@ describe('scene format', () => {
 
   // Every check of the reader, with the path it must name.
   const cases: [string, (string | number)[], unknown, string][] = [
-    ['unknown top-level field', ['light'], [], 'light: unknown field (allowed: format, version, ambient, camera, hulls, lights)'],
+    ['unknown top-level field', ['light'], [], 'light: unknown field (allowed: format, version, ambient, camera, hulls, lights, look)'],
     ['ambient not a triple', ['ambient'], [1, 1], 'ambient: expected three finite numbers ≥ 0, got [1,1]'],
     ['ambient negative', ['ambient'], [1, -1, 1], 'ambient: expected three finite numbers ≥ 0, got [1,-1,1]'],
     ['camera not an object', ['camera'], 3, 'camera: expected an object, got 3'],
@@ -101,6 +103,9 @@ describe('scene format', () => {
     ['light shadowType', ['lights', 0, 'shadowType'], 'occluded', 'lights[0].shadowType: expected one of "solid", "illuminated", got "occluded"'],
     ['light enabled', ['lights', 0, 'enabled'], 'yes', 'lights[0].enabled: expected true or false, got "yes"'],
     ['light castsShadows', ['lights', 0, 'castsShadows'], 0, 'lights[0].castsShadows: expected true or false, got 0'],
+    ['look toneMapping', ['look', 'toneMapping'], 'filmic', 'look.toneMapping: expected one of "none", "reinhard", "aces", got "filmic"'],
+    ['look lightmapBlur', ['look', 'lightmapBlur'], 33, 'look.lightmapBlur: expected a number ≤ 32, got 33'],
+    ['look unknown field', ['look', 'gamma'], 2.2, 'look.gamma: unknown field (allowed: exposure, toneMapping, dithering, lightmapBlur)'],
     ['light shadowLayers', ['lights', 0, 'shadowLayers'], -1, 'lights[0].shadowLayers: expected an integer from 0 to 4294967295 (a bit mask), got -1'],
     ['hull layers', ['hulls', 1, 'layers'], 0.5, 'hulls[1].layers: expected an integer from 0 to 4294967295 (a bit mask), got 0.5'],
     ['light shadowStrength', ['lights', 1, 'shadowStrength'], 2, 'lights[1].shadowStrength: expected a number ≤ 1, got 2'],
@@ -161,7 +166,7 @@ describe('scene objects', () => {
     expect(textured).toBeInstanceOf(TexturedLight);
     expect(textured.texture).toBe(flame);
     expect([...textured.ignoredHulls]).toEqual(objects.hulls.slice(0, 2));
-    const described = describeScene({ ...objects, ambient: scene.ambient, camera: scene.camera, cookieName: () => 'flame' });
+    const described = describeScene({ ...objects, ambient: scene.ambient, camera: scene.camera, look: scene.look, cookieName: () => 'flame' });
     expect(described).toEqual(scene);
   });
 

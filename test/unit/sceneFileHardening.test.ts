@@ -11,7 +11,7 @@ function withPosition(value: unknown): unknown {
 function saveAsBuilt(scene: SceneDocument): string {
   const cookie = {} as WebGLTexture;
   const objects = createSceneObjects(scene, () => cookie);
-  return writeScene(describeScene({ ...objects, ambient: scene.ambient, camera: scene.camera, cookieName: () => 'flame' }));
+  return writeScene(describeScene({ ...objects, ambient: scene.ambient, camera: scene.camera, look: scene.look, cookieName: () => 'flame' }));
 }
 
 describe('readScene throws only SceneFormatError, with a path', () => {
