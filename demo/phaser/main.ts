@@ -7,6 +7,7 @@ import {
   HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, PROP_POSITION, PROP_SPIN, TILE_SIZE, WORLD_HEIGHT,
   WORLD_WIDTH, canvasSize, followPlayer, levelTiles, moveWithCollisions, readPixels, waitFrames,
 } from '../examples/level';
+import { installOccluderCheck } from './occluderCheck';
 import { ART_KEY, FLASHLIGHT, PROP_CUT, PROP_FRAME, PROP_TRIMMED_WIDTH, WALL_TILE, drawArt } from './content';
 
 class LevelScene extends Phaser.Scene {
@@ -58,6 +59,7 @@ class LevelScene extends Phaser.Scene {
     hud.add(this.add.text(44, 12, 'WASD / arrows to move, mouse to aim', { color: '#ffffff', fontSize: '14px' }));
     this.hud = hud;
     this.exposeTestHook();
+    installOccluderCheck(this);
   }
 
   override update(_time: number, delta: number): void {

@@ -282,6 +282,29 @@ describe('Phaser example: occluders from the tilemap and the prop sprite', () =>
     });
   });
 
+  it('places a tilemap layer\'s hulls by its position and scale, rebuilds them when a tile changes, and drops them with the layer', async () => {
+    const report = await page.evaluate(() => window.penumbraPhaserOccluders!.tilemap());
+    // A ring of 3 × 3 tiles of 20 units is 2 hulls (a hull has no holes); filled, one square.
+    expect(report.ringHulls).toBe(2);
+    expect(report.ringBounds).toEqual([2000, 3000, 2000 + 3 * 20 * 2, 3000 + 3 * 20 * 2]);
+    expect(report.filledHulls).toBe(1);
+    expect(report.swappedInRenderer).toBe(true);
+    expect(report.movedBounds).toEqual([2100, 3050, 2100 + 3 * 20, 3050 + 3 * 20]);
+    expect(report.goneWhenDestroyed).toBe(true);
+  });
+
+  it('keeps a sprite\'s hulls with its visibility, display list, frame and container, and drops them with the sprite', async () => {
+    const report = await page.evaluate(() => window.penumbraPhaserOccluders!.sprite());
+    expect(report.addedToRenderer).toBe(true);
+    expect(report.followVisible).toBe(true);
+    expect(report.followDisplayList).toBe(true);
+    expect(report.replacedOnFrameChange).toBe(true);
+    // The container's transform applied to the sprite's: (100, 50) + R(90°) · 2 × (10, 0), turned 90°, scaled 2.
+    const [x, y, rotation, scale] = report.inContainer;
+    expect([x, y, rotation, scale].map((v) => Math.round(v * 1e6) / 1e6)).toEqual([100, 70, Math.round((Math.PI / 2) * 1e6) / 1e6, 2]);
+    expect(report.goneWhenDestroyed).toBe(true);
+  });
+
   it('logs no console errors', () => {
     expect(errors).toEqual([]);
   });
