@@ -40,6 +40,8 @@ export interface OccluderCheckHook {
   lifecycle(): LifecycleReport;
   /** Whether the still prop's hulls keep their very placement objects while the camera pans from `from` to `to`. */
   stillWhilePanning(from: [number, number], to: [number, number]): boolean;
+  /** After a render: every occluder's enabled hulls, `[x0, y0, x1, y1, …]` each, in the camera's space. */
+  occluderOutlines(): number[][];
 }
 
 declare global {
@@ -124,6 +126,11 @@ export function exposeOccluderCheck(app: Application, world: Container, lighting
       app.render();
       const goneWhenDestroyed = !lighting.occluders.includes(occluder) && !second.some(inRenderer);
       return { addedToRenderer, disabledWhenRemoved, enabledWhenAddedBack, replacedWhenRedrawn, goneWhenDestroyed };
+    },
+
+    occluderOutlines() {
+      app.render();
+      return lighting.occluders.flatMap((occluder) => occluder.hulls.filter((hull) => hull.enabled && inRenderer(hull)).map(outline));
     },
 
     stillWhilePanning(from, to) {

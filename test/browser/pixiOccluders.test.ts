@@ -260,6 +260,26 @@ describe('PixiJS example: occluders from tiles, sprites and Graphics', () => {
     await expectFlip(propScene({ rotation: Math.PI / 10, flipX: true }), propScene({ rotation: -Math.PI / 10 }), PROP_AREA);
   });
 
+  it('traces the prop\'s hulls from its atlas frame\'s alpha, placed within the image by the frame\'s trim', async () => {
+    // Every hull point is a point of the traced outline (simplifying only drops points), so it lies
+    // within ½ px of the star's outline or of its hole's (radius 5), whatever the transform.
+    const prop: Prop = { x: PROP_POSITION[0] + 10, y: PROP_POSITION[1] - 5, rotation: 0.7, scale: 1.3, flipX: true };
+    await page.evaluate(({ x, y, rotation, scale, flipX }) => window.penumbraExample!.setProp(x, y, rotation, scale, flipX), prop);
+    const outlines = await page.evaluate(() => window.penumbraPixiOccluders!.occluderOutlines());
+    const far: string[] = [];
+    let points = 0;
+    for (const outline of outlines) {
+      for (let i = 0; i < outline.length; i += 2) {
+        const [lx, ly] = propLocal(prop, outline[i], outline[i + 1]);
+        const off = Math.min(Math.abs(STAR_DISTANCE(lx, ly)), Math.abs(Math.hypot(lx, ly) - 5));
+        points++;
+        if (off > 0.75) far.push(`(${lx.toFixed(2)}, ${ly.toFixed(2)}) ${off.toFixed(2)} px off`);
+      }
+    }
+    expect(points, 'hull points').toBeGreaterThan(20);
+    expect(far, 'hull points off the star\'s outlines').toEqual([]);
+  });
+
   it('leaves a still prop\'s hulls untouched while the camera pans', async () => {
     await page.evaluate((x, y) => window.penumbraExample!.setProp(x, y, 0.3, 1, false), PROP_POSITION[0], PROP_POSITION[1]);
     const still = await page.evaluate(() => window.penumbraPixiOccluders!.stillWhilePanning([470, 330], [380, 250]));
