@@ -94,8 +94,8 @@ export function segmentsIntersect(
  * True for a simple polygon: at least 3 points, non-zero area, and no two edges meeting
  * anywhere but at their shared end point (so also no outline folding back along itself).
  * O(n log n): after linear checks of the points, a sweep line (Shamos–Hoey) tests only edges
- * that become neighbours in the order the sweep meets them. Outlines of up to
- * {@link PAIRWISE_MAX_POINTS} points test every pair instead, without sorting or allocating.
+ * that become neighbours in the order the sweep meets them. Outlines of up to 8 points
+ * (`PAIRWISE_MAX_POINTS`) test every pair instead, without sorting or allocating.
  */
 export function isSimplePolygon(coords: ArrayLike<number>): boolean {
   const n = coords.length >> 1;
