@@ -19,7 +19,10 @@ let browser: Browser;
 let page: Page;
 let errors: string[];
 
-const OPTIONS: PenumbraPluginOptions = { lightmapScale: 0.5, measureCpuTime: true, ambientColor: [0.25, 0.5, 0.75], debug: true };
+const OPTIONS: PenumbraPluginOptions = {
+  lightmapScale: 0.5, measureCpuTime: true, ambientColor: [0.25, 0.5, 0.75], debug: true,
+  exposure: 1.5, toneMapping: 'aces', dithering: 'ordered', lightmapBlur: 2,
+};
 const HALF: [number, number] = [CANVAS[0] / 2, CANVAS[1] / 2];
 
 beforeAll(async () => {
@@ -60,6 +63,7 @@ function expectOptionsTaken(report: RendererReport): void {
   expect(Math.max(...report.cpuTimes)).toBeGreaterThan(0);
   expect(report.ambientColor).toEqual([0.25, 0.5, 0.75]);
   expect(report.debug).toBe(true);
+  expect(report.look).toEqual([1.5, 'aces', 'ordered', 2]);
   expect(report.restoredHandlerKept).toBe(true);
   expectSceneDrawn(report);
 }
@@ -78,7 +82,7 @@ describe('engine options', () => {
     expectSceneDrawn(report);
   });
 
-  it('PenumbraLayer (PixiJS) forwards lightmapScale, measureCpuTime, ambientColor, debug and onContextRestored', async () => {
+  it('PenumbraLayer (PixiJS) forwards lightmapScale, measureCpuTime, ambientColor, debug, the look and onContextRestored', async () => {
     expectOptionsTaken(await pixi(OPTIONS));
   });
 

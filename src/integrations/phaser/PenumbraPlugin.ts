@@ -61,7 +61,8 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
    * and earlier calls), keeping its lights and hulls: for options fixed at construction, such as
    * `lightmapScale`. Call it in the scene's `init` or `create`; {@link PenumbraPlugin.penumbra} is a
    * new renderer afterwards. Options the renderer can change in place (`ambientColor`, `debug`,
-   * `measureCpuTime`, `onContextRestored`) can also be set on {@link PenumbraPlugin.penumbra}.
+   * `measureCpuTime`, `onContextRestored`, `exposure`, `toneMapping`, `dithering`, `lightmapBlur`)
+   * can also be set on {@link PenumbraPlugin.penumbra}, and survive a later `configure`.
    */
   configure(options: PenumbraPluginOptions): this {
     const old = this.penumbra;
@@ -71,6 +72,10 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
       debug: old.debug,
       measureCpuTime: old.measureCpuTime,
       onContextRestored: old.onContextRestored,
+      exposure: old.exposure,
+      toneMapping: old.toneMapping,
+      dithering: old.dithering,
+      lightmapBlur: old.lightmapBlur,
       ...options,
     };
     const renderer = this.createRenderer(merged);

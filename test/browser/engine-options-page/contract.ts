@@ -10,6 +10,8 @@ export interface RendererReport {
   lightmapSize: [number, number];
   ambientColor: number[];
   debug: boolean;
+  /** The look: exposure, tone mapping, dithering and lightmap blur. */
+  look: [number, string, string, number];
   measureCpuTime: boolean;
   /** `stats.cpuTime` of several frames. */
   cpuTimes: number[];

@@ -65,6 +65,7 @@ function report(gl: WebGL2RenderingContext, penumbra: PenumbraRenderer, cpuTimes
     lightmapSize: textureSize(gl, penumbra.lightmapTexture, penumbra.hasFloatLightmap),
     ambientColor: [...penumbra.ambientColor],
     debug: penumbra.debug,
+    look: [penumbra.exposure, penumbra.toneMapping, penumbra.dithering, penumbra.lightmapBlur],
     measureCpuTime: penumbra.measureCpuTime,
     cpuTimes,
     restoredHandlerKept: penumbra.onContextRestored === onRestored,
