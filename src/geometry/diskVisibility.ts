@@ -28,9 +28,19 @@
  * segment p → c can hide any of the disk (the disk and p lie in that capsule): the others are left
  * out as they are added. Radius 0 is a single segment test p → c (hard shadows).
  *
+ * A shortcut for convex pieces (a convex polygon, an open polyline's segment) from outside the
+ * disk, as the renderer's union of the records in front: such a piece spans less than 180° from p,
+ * between its clockwise-most point a and counter-clockwise-most b, and every ray between them
+ * crosses the chord a–b, which lies in the piece. When the disk misses the triangle (p, a, b), every
+ * disk point in that wedge lies beyond the chord: the piece hides exactly the wedge's directions,
+ * and no others. Its edges are then left out and the wedge is kept as a covered interval of
+ * directions, which the sweep skips; once the intervals cover the whole disk the fraction is 0 with
+ * no sweep at all (the common case of a light far behind walls). A piece whose wedge misses the
+ * disk's directions is left out too.
+ *
  * Cost: O(B · E) per point for E edges kept and B cuts (2E plus the edge crossings and rim
- * crossings), with the pairs of edges tested for crossings in O(E²). Nothing is allocated once the
- * buffers have grown to the largest edge count seen.
+ * crossings), with the pairs of edges tested for crossings in O(E²); O(points) per convex piece.
+ * Nothing is allocated once the buffers have grown to the largest counts seen.
  */
 export class DiskVisibility {
   /** The kept edges, `[ax, ay, bx, by, …]` (the first `4 × edgeCount`). */
@@ -53,15 +63,40 @@ export class DiskVisibility {
   private readonly box = new Float64Array(4);
   /** Offset in `edges` of the edge the last {@link DiskVisibility.firstHit} met. */
   private hitEdge = -1;
+  /** Directions (δ) hidden whole by convex pieces in front: sorted, disjoint `[low, high]` pairs, the first `coverCount`. */
+  private covers = new Float64Array(16);
+  private coverCount = 0;
+  /** Set when the whole disk is known to be hidden. */
+  private hidden = false;
+  /**
+   * What {@link DiskVisibility.start} reads: `[px, py, cx, cy, r]`. Hot callers write it and call
+   * `start()` instead of `begin(…)`: doubles in a typed array are never boxed, arguments of a call
+   * that is not inlined are (16 bytes each).
+   */
+  readonly input = new Float64Array(5);
+  /** What {@link DiskVisibility.computeFraction} found: `[fraction]`. */
+  readonly output = new Float64Array(1);
+  /** An edge given to {@link DiskVisibility.addEdge}, in the layout `keepEdge` reads. */
+  private readonly edgeInput = new Float64Array(4);
 
   /** Starts a point p = (px, py) and a disk of centre (cx, cy) and radius r ≥ 0; forgets the edges. */
   begin(px: number, py: number, cx: number, cy: number, r: number): void {
-    this.px = px;
-    this.py = py;
-    this.cx = cx;
-    this.cy = cy;
-    this.r = r;
+    const input = this.input;
+    input[0] = px;
+    input[1] = py;
+    input[2] = cx;
+    input[3] = cy;
+    input[4] = r;
+    this.start();
+  }
+
+  /** {@link DiskVisibility.begin} with the point and disk from {@link DiskVisibility.input}. */
+  start(): void {
+    const input = this.input;
+    const px = this.px = input[0], py = this.py = input[1], cx = this.cx = input[2], cy = this.cy = input[3], r = this.r = input[4];
     this.edgeCount = 0;
+    this.coverCount = 0;
+    this.hidden = false;
     const dx = cx - px, dy = cy - py;
     this.d = Math.sqrt(dx * dx + dy * dy);
     this.inside = this.d < r;
@@ -79,16 +114,58 @@ export class DiskVisibility {
     return this.box;
   }
 
-  /** Number of edges kept since {@link DiskVisibility.begin}. */
-  get keptEdges(): number {
-    return this.edgeCount;
+  /** Whether the edges and pieces added so far hide the whole disk (then {@link DiskVisibility.fraction} is 0 whatever else is added). */
+  get covered(): boolean {
+    return this.hidden;
   }
 
   /** Adds the edge a → b, kept only when it comes within r of the segment from the point to the centre. */
   addEdge(ax: number, ay: number, bx: number, by: number): void {
+    const edge = this.edgeInput;
+    edge[0] = ax;
+    edge[1] = ay;
+    edge[2] = bx;
+    edge[3] = by;
+    this.keepEdge(edge, 0, 1);
+  }
+
+  /**
+   * Keeps the edge from point `i` to point `j` of `coords` when it crosses the segment p → c or
+   * comes within r of it. One body, no helper returning a number: this runs for every edge near
+   * every light of every query.
+   */
+  private keepEdge(coords: ArrayLike<number>, i: number, j: number): void {
+    const ax = coords[2 * i], ay = coords[2 * i + 1], bx = coords[2 * j], by = coords[2 * j + 1];
     const box = this.box;
-    if (Math.max(ax, bx) < box[0] || Math.min(ax, bx) > box[2] || Math.max(ay, by) < box[1] || Math.min(ay, by) > box[3]) return;
-    if (!segmentsWithin(this.r, this.px, this.py, this.cx, this.cy, ax, ay, bx, by)) return;
+    if ((ax < bx ? bx : ax) < box[0] || (ax < bx ? ax : bx) > box[2] || (ay < by ? by : ay) < box[1] || (ay < by ? ay : by) > box[3]) return;
+    const px = this.px, py = this.py, r = this.r;
+    const dx = this.cx - px, dy = this.cy - py, ex = bx - ax, ey = by - ay;
+    // Crossing (ends included; parallel segments count as not crossing).
+    const denominator = dx * ey - dy * ex;
+    let near = false;
+    if (denominator !== 0) {
+      const wx = ax - px, wy = ay - py;
+      const t = (wx * ey - wy * ex) / denominator, u = (wx * dy - wy * dx) / denominator;
+      near = t >= 0 && t <= 1 && u >= 0 && u <= 1;
+    }
+    if (!near && r > 0) {
+      // Within r: an end of either segment within r of the other segment.
+      const r2 = r * r, e2 = ex * ex + ey * ey, d2 = dx * dx + dy * dy;
+      for (let k = 0; k < 4 && !near; k++) {
+        // Point (qx, qy) against segment (sx, sy) + t (vx, vy).
+        const onEdge = k < 2;
+        const qx = k === 0 ? px : k === 1 ? this.cx : k === 2 ? ax : bx;
+        const qy = k === 0 ? py : k === 1 ? this.cy : k === 2 ? ay : by;
+        const sx = onEdge ? ax : px, sy = onEdge ? ay : py, vx = onEdge ? ex : dx, vy = onEdge ? ey : dy, v2 = onEdge ? e2 : d2;
+        let t = v2 > 0 ? ((qx - sx) * vx + (qy - sy) * vy) / v2 : 0;
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+        const ox = qx - sx - t * vx, oy = qy - sy - t * vy;
+        near = ox * ox + oy * oy < r2;
+      }
+    }
+    if (!near) return;
+    // With radius 0 the capsule is the segment p → c: an edge in it hides the whole (point) light.
+    if (r === 0) this.hidden = true;
     const k = 4 * this.edgeCount++;
     if (k + 4 > this.edges.length) this.edges = grown(this.edges, k + 4);
     const edges = this.edges;
@@ -100,20 +177,119 @@ export class DiskVisibility {
 
   /**
    * Adds the edges of a polygon (`closed`, last point back to the first) or a polyline, from
-   * `coords` = `[x0, y0, x1, y1, …]`: the first `count` points.
+   * `coords` = `[x0, y0, x1, y1, …]`: the first `count` points. `convex` says a closed polygon is
+   * convex (and the point outside it), so that it may be taken whole when it lies in front of the
+   * disk; a polyline's segments always may.
    */
-  addOutline(coords: ArrayLike<number>, count: number, closed: boolean): void {
-    for (let i = 0; i + 1 < count; i++) this.addEdge(coords[2 * i], coords[2 * i + 1], coords[2 * i + 2], coords[2 * i + 3]);
-    if (closed && count > 2) this.addEdge(coords[2 * count - 2], coords[2 * count - 1], coords[0], coords[1]);
+  addOutline(coords: ArrayLike<number>, count: number, closed: boolean, convex = false): void {
+    if (this.hidden) return;
+    const shortcut = this.r > 0 && !this.inside;
+    if (closed && convex && shortcut && this.coverConvex(coords, 0, count)) return;
+    for (let i = 0; i + 1 < count; i++) {
+      if (!closed && shortcut && this.coverConvex(coords, i, 2)) continue;
+      this.keepEdge(coords, i, i + 1);
+    }
+    if (closed && count > 2) this.keepEdge(coords, count - 1, 0);
+  }
+
+  /**
+   * The shortcut for the convex piece of points `first .. first + count − 1` of `coords` (see the
+   * class comment), from outside the disk: true when it is settled (its wedge misses the disk's
+   * directions, or it lies in front of the disk and its wedge is now covered), false when its edges
+   * must be added.
+   */
+  private coverConvex(coords: ArrayLike<number>, first: number, count: number): boolean {
+    const px = this.px, py = this.py;
+    // The silhouette: the clockwise-most and counter-clockwise-most points, relative to p.
+    let lowX = coords[2 * first] - px, lowY = coords[2 * first + 1] - py, highX = lowX, highY = lowY;
+    for (let i = first + 1; i < first + count; i++) {
+      const x = coords[2 * i] - px, y = coords[2 * i + 1] - py;
+      if (highX * y - highY * x > 0) {
+        highX = x;
+        highY = y;
+      }
+      if (lowX * y - lowY * x < 0) {
+        lowX = x;
+        lowY = y;
+      }
+    }
+    // p on the piece's outline (or the line of a segment): no wedge to speak of.
+    if (!(lowX * highY - lowY * highX > 0)) return false;
+    // The wedge's directions within the span; an end 90° or more off the centre's direction was
+    // reached by turning past ±90°, and with both ends there the piece is behind p.
+    const ux = (this.cx - px) / this.d, uy = (this.cy - py) / this.d, span = this.span;
+    const lowAhead = ux * lowX + uy * lowY > 0, highAhead = ux * highX + uy * highY > 0;
+    if (!lowAhead && !highAhead) return true;
+    const low = lowAhead ? Math.max(-span, Math.atan2(ux * lowY - uy * lowX, ux * lowX + uy * lowY)) : -span;
+    const high = highAhead ? Math.min(span, Math.atan2(ux * highY - uy * highX, ux * highX + uy * highY)) : span;
+    if (low >= high) return true;
+    if (!this.diskBeyond(lowX, lowY, highX, highY)) return false;
+    this.cover(low, high);
+    return true;
+  }
+
+  /** Whether the disk misses the triangle (p, p + a, p + b): then every disk point in that wedge lies beyond the chord a–b. */
+  private diskBeyond(ax: number, ay: number, bx: number, by: number): boolean {
+    const cx = this.cx - this.px, cy = this.cy - this.py, r2 = this.r * this.r;
+    const ex = bx - ax, ey = by - ay;
+    // The common case first: the centre at least r beyond the chord's line, on the side away from p.
+    const beyond = ex * (cy - ay) - ey * (cx - ax), pSide = ex * -ay - ey * -ax;
+    if (beyond * pSide < 0 && beyond * beyond >= r2 * (ex * ex + ey * ey)) return true;
+    const centreInside = (ax * cy - ay * cx) * (ax * by - ay * bx) > 0 && (bx * cy - by * cx) * (bx * ay - by * ax) > 0 && beyond * pSide > 0;
+    return !centreInside && pointSegmentDistance2(cx, cy, 0, 0, ax, ay) >= r2 && pointSegmentDistance2(cx, cy, 0, 0, bx, by) >= r2
+      && pointSegmentDistance2(cx, cy, ax, ay, bx, by) >= r2;
+  }
+
+  /** Adds [low, high] (within the span) to the covered directions, merging; notes when they cover the span. */
+  private cover(low: number, high: number): void {
+    const covers = this.covers;
+    let count = this.coverCount;
+    // Merge every interval that overlaps or touches [low, high] into it, and keep the rest in order.
+    let write = 0;
+    for (let k = 0; k < count; k++) {
+      const from = covers[2 * k], to = covers[2 * k + 1];
+      if (to >= low && from <= high) {
+        if (from < low) low = from;
+        if (to > high) high = to;
+      } else {
+        covers[2 * write] = from;
+        covers[2 * write + 1] = to;
+        write++;
+      }
+    }
+    count = write;
+    if (2 * count + 2 > covers.length) this.covers = grown(covers, 2 * count + 2);
+    const list = this.covers;
+    let at = count;
+    while (at > 0 && list[2 * at - 2] > low) {
+      list[2 * at] = list[2 * at - 2];
+      list[2 * at + 1] = list[2 * at - 1];
+      at--;
+    }
+    list[2 * at] = low;
+    list[2 * at + 1] = high;
+    this.coverCount = count + 1;
+    if (low <= -this.span && high >= this.span) this.hidden = true;
   }
 
   /** The fraction of the disk, 0..1, whose segment to the point crosses none of the edges added. */
   fraction(): number {
-    const count = this.edgeCount;
-    if (count === 0) return 1;
+    this.computeFraction();
+    return this.output[0];
+  }
+
+  /**
+   * {@link DiskVisibility.fraction} into `output[0]`: hot callers read it from there, since a number
+   * returned from a call that is not inlined is boxed (16 bytes).
+   */
+  computeFraction(): void {
+    const output = this.output;
+    output[0] = 0;
+    if (this.hidden) return;
+    output[0] = 1;
+    const count = this.edgeCount, covers = this.covers, coverCount = this.coverCount;
+    if (count === 0 && coverCount === 0) return;
     const edges = this.edges, r = this.r;
-    // Every kept edge crosses the segment p → c when r is 0: the capsule is that segment.
-    if (r === 0) return 0;
     const cx = this.cx, cy = this.cy, d = this.d, inside = this.inside;
     const span = this.span;
     this.breakCount = 0;
@@ -149,14 +325,24 @@ export class DiskVisibility {
         if (u > 0 && u < 1) this.addDirection(ax + t * dx, ay + t * dy);
       }
     }
+    // The ends of the covered intervals.
+    for (let k = 0; k < 2 * coverCount; k++) {
+      const end = covers[k];
+      if (!(end > -span && end < span)) continue;
+      if (this.breakCount === this.breaks.length) this.breaks = grown(this.breaks, this.breakCount + 1);
+      this.breaks[this.breakCount++] = end;
+    }
     const breaks = this.breaks, breakCount = this.breakCount;
     sortAscending(breaks, breakCount);
 
-    let visible = 0;
+    let visible = 0, cover = 0;
     for (let k = 0; k + 1 < breakCount; k++) {
       const a = breaks[k], b = breaks[k + 1];
       if (!(b - a > 1e-12)) continue;
       const middle = 0.5 * (a + b);
+      // Covered: hidden whole. The pieces and the intervals are both in order.
+      while (cover < coverCount && covers[2 * cover + 1] < middle) cover++;
+      if (cover < coverCount && covers[2 * cover] < middle) continue;
       const w = d * Math.sin(middle), projection = d * Math.cos(middle);
       const root = Math.sqrt(Math.max(0, r2 - w * w));
       const far = projection + root;
@@ -170,7 +356,7 @@ export class DiskVisibility {
       }
     }
     const fraction = visible / (Math.PI * r2);
-    return fraction < 0 ? 0 : fraction > 1 ? 1 : fraction;
+    output[0] = fraction < 0 ? 0 : fraction > 1 ? 1 : fraction;
   }
 
   /** Adds the direction of (x, y) from the point, as δ in (−π, π], when it lies strictly inside the span. */
@@ -256,26 +442,6 @@ function nearTerm(delta: number, d: number, r: number): number {
 /** An antiderivative of ½ s_far² = ½ (d cos δ + √(r² − w²))², from inside the disk (s_near = 0). */
 function farFromInside(delta: number, d: number, r: number): number {
   return squareTerm(delta, d, r) + 0.5 * circleTerm(delta, d, r);
-}
-
-/** Whether the segments p → q and a → b cross or come closer than `distance` (`distance` 0: cross, ends included). */
-function segmentsWithin(distance: number, px: number, py: number, qx: number, qy: number, ax: number, ay: number, bx: number, by: number): boolean {
-  if (segmentsCross(px, py, qx, qy, ax, ay, bx, by)) return true;
-  if (distance === 0) return false;
-  const limit = distance * distance;
-  return pointSegmentDistance2(px, py, ax, ay, bx, by) < limit || pointSegmentDistance2(qx, qy, ax, ay, bx, by) < limit
-    || pointSegmentDistance2(ax, ay, px, py, qx, qy) < limit || pointSegmentDistance2(bx, by, px, py, qx, qy) < limit;
-}
-
-/** Whether the segments p → q and a → b share a point, ends included (parallel ones count as not: zero measure). */
-function segmentsCross(px: number, py: number, qx: number, qy: number, ax: number, ay: number, bx: number, by: number): boolean {
-  const dx = qx - px, dy = qy - py, ex = bx - ax, ey = by - ay;
-  const denominator = dx * ey - dy * ex;
-  if (denominator === 0) return false;
-  const wx = ax - px, wy = ay - py;
-  const t = (wx * ey - wy * ex) / denominator;
-  const u = (wx * dy - wy * dx) / denominator;
-  return t >= 0 && t <= 1 && u >= 0 && u <= 1;
 }
 
 /** Squared distance from (x, y) to the segment a → b. */
