@@ -316,15 +316,19 @@ export class PenumbraRenderer {
    * (the tests hold it within 0.02 at thousands of points); with `lightmapScale` below 1 the
    * lightmap is a coarser, filtered version of the same values.
    *
-   * Cost: for each light that reaches the point, the hulls between the point and its disk (found
-   * through a grid of the hulls' bounds, rebuilt on the first query after a hull changed); every
-   * query reads each hull's version once. A few hundred queries a frame take a fraction of a
-   * millisecond in a scene of tens of lights and hulls (`node bench/illumination.mjs`).
+   * Cost: for each light that reaches the point, the hulls between the point and its disk, found
+   * through a grid of the hulls' bounds (rebuilt by the first query after a hull changed); hulls in
+   * front of the disk are taken whole, so a point deep in shadow costs little, and only a penumbra
+   * needs the exact sweep. Every query also reads each hull's version once (about 13 ns a hull). 300
+   * queries take about 1 ms in a scene of 10 lights and 50 hulls, 6 ms with 32 lights and 200
+   * hulls (`node bench/illumination.mjs`).
    *
    * Allocation: without `out`, the result (an object, its colour array, the `lights` array and one
-   * entry with a colour array per light listed). Pass the previous result as `out` to reuse it:
-   * then nothing is allocated once its `lights` array has grown to the most lights listed (keep the
-   * options object too, rather than a literal per call). With `perLight: false` no entries at all.
+   * entry with a colour array per light listed). Pass a previous result as `out` to reuse it: then
+   * nothing, once the query has seen the most lights listed (entries cut from a `lights` list are
+   * kept for the next list that grows: do not hold on to them). Keep the options object too, rather
+   * than a literal per call. Like any JavaScript call that is not inlined, the call itself boxes a
+   * fractional `x` or `y` (16 bytes each).
    * @param x World x of the point.
    * @param y World y of the point.
    * @param options What to include; see {@link IlluminationOptions}.
@@ -343,7 +347,8 @@ export class PenumbraRenderer {
    * the lights, the ambient colour left out) above `threshold`: the stealth game's "is the player
    * lit?". The same model as {@link PenumbraRenderer.illuminationAt}, and cheaper: a light's
    * strength alone bounds its share, and shadows are worked out only while those bounds leave the
-   * answer open. Allocates nothing.
+   * answer open. Allocates nothing (but the boxes of fractional arguments; see
+   * {@link PenumbraRenderer.illuminationAt}).
    * @param x World x of the point.
    * @param y World y of the point.
    * @param threshold Luminance to exceed. Default `0.1`.

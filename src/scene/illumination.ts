@@ -76,6 +76,10 @@ export interface Illumination {
 
 /** Rec. 709 luminance weights (linear RGB). */
 const LUMA_R = 0.2126, LUMA_G = 0.7152, LUMA_B = 0.0722;
+/** Slots of `IlluminationQuery.values`. */
+const X = 0, Y = 1, STRENGTH = 2, VISIBILITY = 3;
+/** Flags of a prepared hull. */
+const CLOSED = 1, CONVEX = 2;
 /** The grid files every hull: queries may be anywhere in the world, on screen or not. */
 const EVERYWHERE = [-Infinity, -Infinity, Infinity, Infinity] as const;
 
@@ -90,8 +94,11 @@ const EVERYWHERE = [-Infinity, -Infinity, Infinity, Infinity] as const;
  * light's `shadowLayers`, is not one of its `ignoredHulls`, and overlaps the light's bounds.
  *
  * The grid is rebuilt when a hull changed (its `version`) or the list did: every query compares
- * each hull's version, O(hulls) reads. Nothing is allocated per query but the result, and not that
- * when one is passed in to be reused.
+ * each hull's version, O(hulls) reads. Hulls are transformed and their bounds, layers and flags
+ * copied into flat arrays when a search first finds them after a change. Nothing is allocated per
+ * query but the result, and not that when one is passed in to be reused: numbers between the
+ * methods go through typed arrays (`values`, `DiskVisibility.input` and `output`), since V8 boxes
+ * the doubles passed to and returned from a call it does not inline.
  * @internal
  */
 export class IlluminationQuery {
@@ -102,9 +109,18 @@ export class IlluminationQuery {
   private versions = new Float64Array(0);
   private coarse = new Float64Array(0);
   private filed = new Uint8Array(0);
+  /** Per hull, as of its version in `prepared`: world bounds (4 per hull), layers, CLOSED and CONVEX flags. */
+  private prepared = new Float64Array(0);
+  private bounds = new Float64Array(0);
+  private layers = new Uint32Array(0);
+  private flags = new Uint8Array(0);
   private readonly quad = new Float32Array(6);
   private readonly lightBounds = new Float64Array(4);
-  private readonly point = new Float64Array(2);
+  /** The query point (x, y), then the last light's strength and visibility: doubles passed through a typed array, which V8 never boxes. */
+  private readonly values = new Float64Array(4);
+  private readonly box = new Float64Array(4);
+  /** Entries cut from a result's `lights`, reused when a result lists more. */
+  private readonly spareEntries: LightIllumination[] = [];
   /** Per light, for `isLit`: the strength, and bounds of its luminance at the point. */
   private strengths = new Float64Array(0);
   private lows = new Float64Array(0);
@@ -118,16 +134,19 @@ export class IlluminationQuery {
     const perLight = options?.perLight ?? true;
     const includeAmbient = options?.includeAmbient ?? true;
     const cookie = options?.cookie ?? null;
-    const result = out ?? { color: [0, 0, 0], luminance: 0, lights: [] };
+    // NaN, not 0: V8 then lays the number fields out as doubles from the start, and later stores of
+    // doubles into them reuse their boxes instead of allocating new ones.
+    const result = out ?? { color: [NaN, NaN, NaN], luminance: NaN, lights: [] };
     this.sync(hulls);
+    const values = this.values;
+    values[X] = x;
+    values[Y] = y;
     let red = includeAmbient ? ambient[0] : 0, green = includeAmbient ? ambient[1] : 0, blue = includeAmbient ? ambient[2] : 0;
     let listed = 0;
     for (let i = 0; i < lights.length; i++) {
       const light = lights[i];
-      const strength = this.strengthOf(light, x, y, cookie);
-      if (!(strength > 0)) continue;
-      const visibility = this.visibilityOf(light, hulls, x, y);
-      if (visibility < 0) continue;
+      if (!this.strengthOf(light, cookie) || !this.visibilityOf(light, hulls)) continue;
+      const strength = values[STRENGTH], visibility = values[VISIBILITY];
       const color = light.color, shadowColor = light.shadowColor, shadowStrength = light.shadowStrength;
       const scale = light.intensity * strength, hidden = 1 - visibility;
       const r = color[0] * scale * (visibility + hidden * (1 - shadowStrength * (1 - shadowColor[0])));
@@ -137,8 +156,12 @@ export class IlluminationQuery {
       green += g;
       blue += b;
       if (!perLight) continue;
-      let entry = result.lights[listed];
-      if (entry === undefined) result.lights.push((entry = { light, color: [0, 0, 0], luminance: 0, visibility: 0, strength: 0 }));
+      const list = result.lights;
+      let entry = list[listed];
+      if (entry === undefined) {
+        entry = this.spareEntries.pop() ?? { light, color: [NaN, NaN, NaN], luminance: NaN, visibility: NaN, strength: NaN };
+        list.push(entry);
+      }
       entry.light = light;
       entry.color[0] = r;
       entry.color[1] = g;
@@ -148,7 +171,9 @@ export class IlluminationQuery {
       entry.strength = strength;
       listed++;
     }
-    result.lights.length = listed;
+    // Entries cut from the list wait for the next call that lists more: a list that grows and shrinks allocates nothing.
+    const list = result.lights;
+    while (list.length > listed) this.spareEntries.push(list.pop()!);
     result.color[0] = red;
     result.color[1] = green;
     result.color[2] = blue;
@@ -169,14 +194,15 @@ export class IlluminationQuery {
       this.lows = new Float64Array(capacity);
       this.highs = new Float64Array(capacity);
     }
-    const strengths = this.strengths, lows = this.lows, highs = this.highs;
+    const strengths = this.strengths, lows = this.lows, highs = this.highs, values = this.values;
+    values[X] = x;
+    values[Y] = y;
     let low = 0, high = 0;
     for (let i = 0; i < lights.length; i++) {
       const light = lights[i];
-      const strength = this.strengthOf(light, x, y, cookie);
-      strengths[i] = strength;
-      lows[i] = highs[i] = 0;
-      if (!(strength > 0)) continue;
+      lows[i] = highs[i] = strengths[i] = 0;
+      if (!this.strengthOf(light, cookie)) continue;
+      const strength = strengths[i] = values[STRENGTH];
       const color = light.color;
       const full = (LUMA_R * color[0] + LUMA_G * color[1] + LUMA_B * color[2]) * light.intensity * strength;
       highs[i] = full;
@@ -190,10 +216,9 @@ export class IlluminationQuery {
     for (let i = 0; i < lights.length; i++) {
       if (lows[i] === highs[i]) continue;
       const light = lights[i];
-      const visibility = this.visibilityOf(light, hulls, x, y);
       let exact = 0;
-      if (visibility >= 0) {
-        const color = light.color, shadowColor = light.shadowColor, shadowStrength = light.shadowStrength, hidden = 1 - visibility;
+      if (this.visibilityOf(light, hulls)) {
+        const visibility = values[VISIBILITY], color = light.color, shadowColor = light.shadowColor, shadowStrength = light.shadowStrength, hidden = 1 - visibility;
         exact = (LUMA_R * color[0] * (visibility + hidden * (1 - shadowStrength * (1 - shadowColor[0])))
           + LUMA_G * color[1] * (visibility + hidden * (1 - shadowStrength * (1 - shadowColor[1])))
           + LUMA_B * color[2] * (visibility + hidden * (1 - shadowStrength * (1 - shadowColor[2])))) * light.intensity * strengths[i];
@@ -207,70 +232,141 @@ export class IlluminationQuery {
   }
 
   /**
-   * What the light gives (x, y) before shadows, as a multiplier on colour × intensity: the linear
-   * falloff (times the cone of a spotlight, as shaders/light-spot.frag.glsl), or the cookie over a
-   * textured light's quad. 0 for a light the renderer skips.
+   * What the light gives the query point before shadows, as a multiplier on colour × intensity: the
+   * linear falloff (times the cone of a spotlight, as shaders/light-spot.frag.glsl), or the cookie
+   * over a textured light's quad. Written to `values[STRENGTH]`; false when it is 0 (as for a light
+   * the renderer skips).
    */
-  private strengthOf(light: Light, x: number, y: number, cookie: CookieSampler | null): number {
-    if (!light.enabled || light.intensity === 0 || light.range === 0) return 0;
+  private strengthOf(light: Light, cookie: CookieSampler | null): boolean {
+    const values = this.values;
+    values[STRENGTH] = 0;
+    if (!light.enabled || light.intensity === 0 || light.range === 0) return false;
+    const x = values[X], y = values[Y];
     if (light instanceof TexturedLight) {
       // The quad as the renderer draws it (float32): x = corner + u · axisX + v · axisY.
       const q = this.quad;
       light.writeQuad(q);
       const determinant = q[2] * q[5] - q[3] * q[4];
-      if (determinant === 0) return 0;
+      if (determinant === 0) return false;
       const rx = x - q[0], ry = y - q[1];
       const u = (rx * q[5] - ry * q[4]) / determinant, v = (q[2] * ry - q[3] * rx) / determinant;
-      if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1)) return 0;
+      if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1)) return false;
       const value = cookie ? cookie(light, u, v) : 1;
-      return value > 0 ? value : 0;
+      if (!(value > 0)) return false;
+      values[STRENGTH] = value;
+      return true;
     }
     const dx = x - light.position[0], dy = y - light.position[1];
     const distance = Math.sqrt(dx * dx + dy * dy);
     const falloff = 1 - distance / light.range;
-    if (!(falloff > 0)) return 0;
-    if (!(light instanceof Spotlight)) return falloff;
+    if (!(falloff > 0)) return false;
+    if (!(light instanceof Spotlight)) {
+      values[STRENGTH] = falloff;
+      return true;
+    }
     const along = distance > 0 ? (dx * Math.cos(light.rotation) + dy * Math.sin(light.rotation)) / distance : 1;
     const angle = Math.acos(along < -1 ? -1 : along > 1 ? 1 : along);
     const inside = 1 - angle / Math.max(light.coneAngle / 2, 1e-6);
-    if (!(inside > 0)) return 0;
-    return light.coneDecay === 0 ? falloff : falloff * Math.pow(inside, light.coneDecay);
+    if (!(inside > 0)) return false;
+    values[STRENGTH] = light.coneDecay === 0 ? falloff : falloff * Math.pow(inside, light.coneDecay);
+    return true;
   }
 
   /**
-   * The fraction of the light's disk visible from (x, y) past the hulls that shadow it (1 or 0
-   * inside one, by the light's shadow type), or −1 when the light's centre is inside one of them
-   * (the renderer then leaves the light out).
+   * The fraction of the light's disk visible from the query point past the hulls that shadow it (1
+   * or 0 inside one, by the light's shadow type), written to `values[VISIBILITY]`; false when the
+   * light's centre is inside one of them (the renderer then leaves the light out). Three searches of
+   * the grid: the hulls at the light's centre, those at the point, then those between the point and
+   * the disk, until they hide it all.
    */
-  private visibilityOf(light: Light, hulls: readonly Hull[], x: number, y: number): number {
-    if (!light.castsShadows) return 1;
+  private visibilityOf(light: Light, hulls: readonly Hull[]): boolean {
+    const values = this.values;
+    values[VISIBILITY] = 1;
+    if (!light.castsShadows) return true;
+    const x = values[X], y = values[Y];
     const lx = light.position[0], ly = light.position[1];
-    const bounds = this.lightBounds;
     this.writeLightBounds(light);
-    const visibility = this.visibility;
-    visibility.begin(x, y, lx, ly, light.radius);
-    const point = this.point;
-    point[0] = x;
-    point[1] = y;
-    const grid = this.grid;
-    const found = grid.search(visibility.bounds);
-    const layers = light.shadowLayers, ignored = light.ignoredHulls;
-    let holdsPoint = false;
-    for (let i = 0; i < found; i++) {
-      const hull = hulls[grid.found[i]];
-      if ((hull.layers & layers) === 0 || (ignored.size > 0 && ignored.has(hull))) continue;
-      hull.updateWorld();
-      const b = hull.worldBounds;
-      // The renderer gives a light only the hulls that overlap its bounds.
-      if (b[0] > bounds[2] || b[2] < bounds[0] || b[1] > bounds[3] || b[3] < bounds[1]) continue;
-      if (hull.closed) {
-        if (b[0] <= lx && lx <= b[2] && b[1] <= ly && ly <= b[3] && isInsidePolygon(hull.worldPoints, light.position)) return -1;
-        if (!holdsPoint && b[0] <= x && x <= b[2] && b[1] <= y && y <= b[3] && isInsidePolygon(hull.worldPoints, point)) holdsPoint = true;
-      }
-      if (!holdsPoint) visibility.addOutline(hull.worldPoints, hull.pointCount, hull.closed);
+    const grid = this.grid, box = this.box;
+    box[0] = box[2] = lx;
+    box[1] = box[3] = ly;
+    for (let i = 0, found = grid.search(box); i < found; i++) {
+      const index = grid.found[i];
+      if (this.shadows(light, hulls, index) && this.holds(hulls[index], index, light.position)) return false;
     }
-    if (holdsPoint) return light.shadowType === ShadowType.Illuminated ? 1 : 0;
-    return visibility.fraction();
+    box[0] = box[2] = x;
+    box[1] = box[3] = y;
+    for (let i = 0, found = grid.search(box); i < found; i++) {
+      const index = grid.found[i];
+      if (this.shadows(light, hulls, index) && this.holds(hulls[index], index, values)) {
+        values[VISIBILITY] = light.shadowType === ShadowType.Illuminated ? 1 : 0;
+        return true;
+      }
+    }
+    const visibility = this.visibility, input = visibility.input;
+    input[0] = x;
+    input[1] = y;
+    input[2] = lx;
+    input[3] = ly;
+    input[4] = light.radius;
+    visibility.start();
+    const flags = this.flags;
+    for (let i = 0, found = grid.search(visibility.bounds); i < found && !visibility.covered; i++) {
+      const index = grid.found[i];
+      if (!this.shadows(light, hulls, index) || !this.nearSegment(index)) continue;
+      const hull = hulls[index], flag = flags[index];
+      visibility.addOutline(hull.worldPoints, hull.pointCount, (flag & CLOSED) !== 0, (flag & CONVEX) !== 0);
+    }
+    visibility.computeFraction();
+    values[VISIBILITY] = visibility.output[0];
+    return true;
+  }
+
+  /**
+   * Whether the hull at `index` shadows the light: in one of its layers, not ignored, and
+   * overlapping its bounds (the renderer gives a light only those). Brings the hull's flat data up
+   * to date first.
+   */
+  private shadows(light: Light, hulls: readonly Hull[], index: number): boolean {
+    if (this.prepared[index] !== this.versions[index]) this.prepare(hulls[index], index);
+    if ((this.layers[index] & light.shadowLayers) === 0) return false;
+    const b = this.bounds, k = 4 * index, l = this.lightBounds;
+    if (b[k] > l[2] || b[k + 2] < l[0] || b[k + 1] > l[3] || b[k + 3] < l[1]) return false;
+    const ignored = light.ignoredHulls;
+    return ignored.size === 0 || !ignored.has(hulls[index]);
+  }
+
+  /** Whether the closed hull at `index` (prepared) holds `point` (its first two values). */
+  private holds(hull: Hull, index: number, point: ArrayLike<number>): boolean {
+    const b = this.bounds, k = 4 * index, x = point[0], y = point[1];
+    return (this.flags[index] & CLOSED) !== 0 && b[k] <= x && x <= b[k + 2] && b[k + 1] <= y && y <= b[k + 3] && isInsidePolygon(hull.worldPoints, point);
+  }
+
+  /**
+   * Whether the circle around the bounds of the hull at `index` comes within the disk's radius of
+   * the segment from the point to the centre (`visibility.input`): the test before a hull's edges,
+   * since the grid finds hulls by boxes, and the box around a long slanted segment holds much more
+   * than the capsule around it.
+   */
+  private nearSegment(index: number): boolean {
+    const b = this.bounds, k = 4 * index, input = this.visibility.input;
+    const px = input[0], py = input[1], r = input[4];
+    const hx = 0.5 * (b[k] + b[k + 2]), hy = 0.5 * (b[k + 1] + b[k + 3]);
+    const halfX = 0.5 * (b[k + 2] - b[k]), halfY = 0.5 * (b[k + 3] - b[k + 1]);
+    const reach = Math.sqrt(halfX * halfX + halfY * halfY) + r;
+    const ex = input[2] - px, ey = input[3] - py, length2 = ex * ex + ey * ey;
+    let t = length2 > 0 ? ((hx - px) * ex + (hy - py) * ey) / length2 : 0;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    const dx = hx - px - t * ex, dy = hy - py - t * ey;
+    return dx * dx + dy * dy <= reach * reach;
+  }
+
+  /** Transforms the hull's points if it changed, and copies what the searches read into flat arrays. */
+  private prepare(hull: Hull, index: number): void {
+    this.prepared[index] = this.versions[index];
+    hull.updateWorld();
+    this.bounds.set(hull.worldBounds, 4 * index);
+    this.layers[index] = hull.layers;
+    this.flags[index] = (hull.closed ? CLOSED : 0) | (hull.convex ? CONVEX : 0);
   }
 
   /** The light's bounds as the renderer's frame plan has them: its quad and its centre. */
@@ -284,7 +380,10 @@ export class IlluminationQuery {
     b[3] = Math.max(ly, q[1], q[1] + q[3], q[1] + q[5], q[1] + q[3] + q[5]);
   }
 
-  /** Rebuilds the grid when the hull list or a hull changed since it was built. */
+  /**
+   * Rebuilds the grid when the hull list or a hull changed since it was built (from coarse bounds,
+   * which need no transform: a hull is transformed when a search first finds it, see `prepare`).
+   */
   private sync(hulls: readonly Hull[]): void {
     const count = hulls.length, known = this.known, versions = this.versions;
     let same = count === known.length;
@@ -293,12 +392,17 @@ export class IlluminationQuery {
     if (this.filed.length < count) {
       const capacity = Math.ceil(count * 1.5);
       this.versions = new Float64Array(capacity);
+      this.prepared = new Float64Array(capacity).fill(-1);
       this.coarse = new Float64Array(4 * capacity);
+      this.bounds = new Float64Array(4 * capacity);
       this.filed = new Uint8Array(capacity);
+      this.layers = new Uint32Array(capacity);
+      this.flags = new Uint8Array(capacity);
     }
     known.length = count;
     for (let i = 0; i < count; i++) {
       const hull = hulls[i];
+      if (known[i] !== hull) this.prepared[i] = -1;
       known[i] = hull;
       this.versions[i] = hull.version;
       this.filed[i] = hull.enabled && hull.valid ? 1 : 0;
