@@ -1,0 +1,300 @@
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { Hull, PenumbraRenderer, PointLight, ShadowType, Spotlight, TexturedLight, type Light } from '../../src/index';
+import type { Illumination, IlluminationOptions } from '../../src/scene/illumination';
+import { setScene } from '../reference/buildScene';
+import { createRandom, randomScene } from '../reference/randomScenes';
+import { SceneGeometry } from '../reference/sceneGeometry';
+import { box, REFERENCE_SCENES, type Point, type ReferenceScene } from '../reference/scenes';
+import { HARD_EDGE_BAND, OUTLINE_BAND } from '../reference/softShadowReference';
+import { createContext, destroyContext } from './context';
+import { renderLightmap } from './lightmap';
+
+/**
+ * `renderer.illuminationAt` against the lightmap the same renderer renders on headless-gl: at every
+ * pixel centre (the figures count those some light reaches) of the reference scenes, of random scenes (with random
+ * shadow types and shadow colours) and of scenes of the features the reference scenes leave out
+ * (spotlights, layers, ignored hulls, shadow colour, Illuminated hulls, disabled lights and hulls, a
+ * light inside a hull, transformed hulls, a textured light with its cookie sampled on the CPU,
+ * ambient light). Each channel must be within {@link MAX_DIFFERENCE} of the lightmap. The random
+ * scenes are PENUMBRA_SCENES (default 60) from seed 0x111. Left out, as
+ * the reference tests leave them out: pixel centres within 1/16 pixel of a hull outline or of a
+ * hard shadow's edge, where the rasterizer's snapping decides (test/reference/softShadowReference),
+ * and of a textured light's quad edge or a cookie texel's edge.
+ */
+const MAX_DIFFERENCE = 0.02;
+const RANDOM_SCENES = Number(process.env.PENUMBRA_SCENES ?? 60);
+const RANDOM_SEED = 0x111;
+
+interface Figures {
+  group: string;
+  scenes: number;
+  points: number;
+  max: number;
+  worst: string;
+}
+const figures = new Map<string, Figures>();
+
+/** Adds a scene's comparison to its group's figures. */
+function record(group: string, scene: string, points: number, max: number, worst: string): void {
+  const entry = figures.get(group) ?? { group, scenes: 0, points: 0, max: 0, worst: '' };
+  entry.scenes++;
+  entry.points += points;
+  if (max >= entry.max) {
+    entry.max = max;
+    entry.worst = `${scene} ${worst}`;
+  }
+  figures.set(group, entry);
+}
+
+afterAll(() => {
+  const rows = [...figures.values()];
+  const total = rows.reduce((sum, row) => sum + row.points, 0);
+  const max = Math.max(0, ...rows.map((row) => row.max));
+  console.log([
+    `illuminationAt vs the rendered lightmap (headless-gl): max difference ${max.toFixed(4)} over ${total} points (limit ${MAX_DIFFERENCE})`,
+    '| scenes | count | points | max difference | where |',
+    '|---|---|---|---|---|',
+    ...rows.map((row) => `| ${row.group} | ${row.scenes} | ${row.points} | ${row.max.toFixed(4)} | ${row.worst} |`),
+  ].join('\n'));
+});
+
+/** What a comparison leaves out, besides pixels no light reaches. */
+interface Exclusions {
+  /** Hull outlines (world points) and open polylines. */
+  geometry: SceneGeometry;
+  /** Centres of the radius-0 lights (hard shadow edges). */
+  hardCentres: readonly Point[];
+  /** Any other pixel centre to leave out. */
+  other?: (x: number, y: number) => boolean;
+}
+
+/**
+ * Renders the renderer's lightmap and compares `illuminationAt` at every pixel centre that is not
+ * ambiguous; returns the number of those some light reaches and the largest difference in a channel.
+ */
+function compare(
+  gl: WebGL2RenderingContext, renderer: PenumbraRenderer, width: number, height: number,
+  exclusions: Exclusions, options: IlluminationOptions = {},
+): { points: number; max: number; worst: string } {
+  const lightmap = renderLightmap(gl, renderer, width, height);
+  expect(gl.getError()).toBe(0);
+  const out: Illumination = { color: [0, 0, 0], luminance: 0, lights: [] };
+  let points = 0, max = 0, worst = '';
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) {
+      const px = x + 0.5, py = y + 0.5;
+      if (isAmbiguous(exclusions, px, py)) continue;
+      const result = renderer.illuminationAt(px, py, options, out);
+      // Every pixel is compared (a light wrongly left out shows as a difference); those some light reaches are counted.
+      if (result.lights.length > 0) points++;
+      const rendered = lightmap.at(x, y);
+      for (let c = 0; c < 3; c++) {
+        const difference = Math.abs(result.color[c] - rendered[c]);
+        if (difference > max) {
+          max = difference;
+          worst = `at (${px}, ${py}): ${result.color.map((v) => v.toFixed(4))} vs ${rendered.map((v) => v.toFixed(4))}`;
+        }
+      }
+    }
+  }
+  return { points, max, worst };
+}
+
+function isAmbiguous({ geometry, hardCentres, other }: Exclusions, x: number, y: number): boolean {
+  if (geometry.isNearOutline(x, y, OUTLINE_BAND)) return true;
+  for (const [lx, ly] of hardCentres) if (nearHardEdge(geometry, x, y, lx, ly)) return true;
+  return other?.(x, y) ?? false;
+}
+
+/** Whether (x, y) lies within HARD_EDGE_BAND of a ray from (lx, ly) through a hull point between them (as the reference's test). */
+function nearHardEdge(geometry: SceneGeometry, x: number, y: number, lx: number, ly: number): boolean {
+  const v = geometry.vertices;
+  const dx = x - lx, dy = y - ly, length2 = dx * dx + dy * dy;
+  for (let i = 0; i < v.length; i += 2) {
+    const vx = v[i] - lx, vy = v[i + 1] - ly, along = vx * dx + vy * dy;
+    if (along <= 0 || along > length2) continue;
+    if (Math.abs(vx * dy - vy * dx) < HARD_EDGE_BAND * Math.hypot(vx, vy)) return true;
+  }
+  return false;
+}
+
+/** The renderer's hulls in world space (every hull, enabled or not, as the exclusions' outlines). */
+function worldGeometry(renderer: PenumbraRenderer): SceneGeometry {
+  const outlines = (closed: boolean) => renderer.hulls.filter((hull) => hull.valid && hull.closed === closed).map((hull) => {
+    hull.updateWorld();
+    return Array.from({ length: hull.pointCount }, (_, i): Point => [hull.worldPoints[2 * i], hull.worldPoints[2 * i + 1]]);
+  });
+  return new SceneGeometry(outlines(true), outlines(false));
+}
+
+const hardCentres = (lights: readonly Light[]): Point[] => lights.filter((light) => light.radius === 0).map((light) => [light.position[0], light.position[1]]);
+
+describe('illuminationAt matches the rendered lightmap: reference scenes', () => {
+  for (const scene of REFERENCE_SCENES) {
+    it(scene.name, () => {
+      const gl = createContext(scene.width, scene.height);
+      const renderer = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0], width: scene.width, height: scene.height });
+      setScene(renderer, scene);
+      const exclusions = { geometry: new SceneGeometry(scene.hulls, scene.polylines), hardCentres: hardCentres(renderer.lights) };
+      const { points, max, worst } = compare(gl, renderer, scene.width, scene.height, exclusions, { perLight: true });
+      renderer.dispose();
+      destroyContext(gl);
+      record('reference scenes (160 × 120)', scene.name, points, max, worst);
+      expect(points).toBeGreaterThan(1000);
+      expect(max, worst).toBeLessThanOrEqual(MAX_DIFFERENCE);
+    });
+  }
+});
+
+describe('illuminationAt matches the rendered lightmap: random scenes', () => {
+  const WIDTH = 80, HEIGHT = 60;
+  let gl: WebGL2RenderingContext;
+  let renderer: PenumbraRenderer;
+  beforeAll(() => {
+    gl = createContext(WIDTH, HEIGHT);
+    renderer = new PenumbraRenderer(gl, { width: WIDTH, height: HEIGHT });
+  });
+  afterAll(() => {
+    renderer?.dispose();
+    if (gl) destroyContext(gl);
+  });
+
+  for (let i = 0; i < RANDOM_SCENES; i++) {
+    const seed = RANDOM_SEED + i;
+    it(`seed ${seed}`, () => {
+      const scene: ReferenceScene = randomScene(seed, WIDTH, HEIGHT);
+      setScene(renderer, scene);
+      // Beyond the reference scenes: a random ambient colour, shadow type and shadow colour.
+      const random = createRandom(seed ^ 0x5a5a);
+      renderer.ambientColor = random() < 0.5 ? [0, 0, 0] : [0.1 * random(), 0.1 * random(), 0.1 * random()];
+      for (const light of renderer.lights) {
+        light.shadowType = random() < 0.5 ? ShadowType.Solid : ShadowType.Illuminated;
+        if (random() < 0.4) {
+          light.shadowColor = [random(), random(), random()];
+          light.shadowStrength = random();
+        }
+      }
+      const exclusions = { geometry: new SceneGeometry(scene.hulls, scene.polylines), hardCentres: hardCentres(renderer.lights) };
+      const { points, max, worst } = compare(gl, renderer, WIDTH, HEIGHT, exclusions);
+      record(`random scenes (${WIDTH} × ${HEIGHT})`, `seed ${seed}`, points, max, worst);
+      expect(max, `seed ${seed}: ${worst}\nscene: ${JSON.stringify(scene)}`).toBeLessThanOrEqual(MAX_DIFFERENCE);
+    });
+  }
+});
+
+describe('illuminationAt matches the rendered lightmap: features', () => {
+  const WIDTH = 160, HEIGHT = 120;
+  let gl: WebGL2RenderingContext;
+  let renderer: PenumbraRenderer;
+  beforeAll(() => {
+    gl = createContext(WIDTH, HEIGHT);
+    renderer = new PenumbraRenderer(gl, { width: WIDTH, height: HEIGHT, ambientColor: [0.04, 0.06, 0.1] });
+  });
+  afterAll(() => {
+    renderer?.dispose();
+    if (gl) destroyContext(gl);
+  });
+
+  /** Replaces the renderer's lights and hulls. */
+  function reset(lights: Light[], hulls: Hull[]): void {
+    for (const light of [...renderer.lights]) renderer.removeLight(light);
+    for (const hull of [...renderer.hulls]) renderer.removeHull(hull);
+    for (const light of lights) renderer.addLight(light);
+    for (const hull of hulls) renderer.addHull(hull);
+  }
+
+  function check(name: string, options: IlluminationOptions = {}, other?: (x: number, y: number) => boolean): void {
+    const exclusions = { geometry: worldGeometry(renderer), hardCentres: hardCentres(renderer.lights), other };
+    const { points, max, worst } = compare(gl, renderer, WIDTH, HEIGHT, exclusions, options);
+    record(`feature scenes (${WIDTH} × ${HEIGHT})`, name, points, max, worst);
+    expect(points).toBeGreaterThan(1000);
+    expect(max, `${name}: ${worst}`).toBeLessThanOrEqual(MAX_DIFFERENCE);
+  }
+
+  it('spotlights (cone decay 0, 1 and 2.5), shadow colour and strength, ambient light', () => {
+    reset([
+      new Spotlight({ position: [20, 60], rotation: 0.15, coneAngle: Math.PI / 3, coneDecay: 1, range: 150, radius: 6, color: [1, 0.9, 0.7] }),
+      new Spotlight({
+        position: [140, 15], rotation: 2.3, coneAngle: 0.9, coneDecay: 0, range: 140, radius: 4,
+        shadowColor: [0.2, 0.3, 0.6], shadowStrength: 0.7, color: [0.6, 0.8, 1], intensity: 0.9,
+      }),
+      new Spotlight({ position: [80, 112], rotation: -Math.PI / 2, coneAngle: Math.PI, coneDecay: 2.5, range: 110, radius: 0, shadowType: ShadowType.Illuminated }),
+    ], [
+      new Hull(box(60, 50, 14, 20)),
+      new Hull([[0, 0], [20, 0], [20, 6], [6, 6], [6, 20], [0, 20]], { position: [100, 60], rotation: 0.7, scale: [1.2, -0.8], origin: [5, 5] }),
+      new Hull([[0, 0], [12, 3], [4, 12]], { position: [40, 90], rotation: -0.4, scale: 1.5 }),
+    ]);
+    check('spotlights, shadow colour, ambient');
+  });
+
+  it('layers, ignored hulls, castsShadows, disabled lights and hulls, a light inside a hull', () => {
+    const wall = new Hull(box(70, 20, 8, 40), { layers: 0b01 });
+    const crate = new Hull(box(70, 75, 14, 14), { layers: 0b10 });
+    const housing = new Hull(box(26, 52, 10, 10));
+    const disabledHull = new Hull(box(100, 40, 10, 30), { enabled: false });
+    const blockOfTheTrapped = new Hull(box(130, 90, 20, 20));
+    const crateLayerRoom = new Hull(box(115, 5, 30, 25), { layers: 0b10 });
+    reset([
+      new PointLight({ position: [40, 45], range: 120, radius: 5, shadowLayers: 0b10, color: [1, 0.5, 0.3] }),
+      new PointLight({ position: [31, 57], range: 100, radius: 3, ignoredHulls: [housing], color: [0.3, 0.6, 1] }),
+      new PointLight({ position: [100, 100], range: 80, radius: 4, castsShadows: false, intensity: 0.5 }),
+      new PointLight({ position: [60, 100], range: 100, radius: 4, enabled: false }),
+      new PointLight({ position: [140, 100], range: 100, radius: 4 }),
+      new PointLight({ position: [130, 17], range: 60, radius: 4, shadowLayers: 0b01, color: [0.5, 1, 0.5] }),
+    ], [wall, crate, housing, disabledHull, blockOfTheTrapped, crateLayerRoom]);
+    check('layers, ignored hulls, castsShadows, disabled, light inside a hull');
+  });
+
+  it('Illuminated and Solid lights on hulls, open polylines, hard lights, overlapping hulls', () => {
+    reset([
+      new PointLight({ position: [30, 30], range: 140, radius: 7, shadowType: ShadowType.Illuminated }),
+      new PointLight({ position: [130.3, 95.2], range: 120, radius: 0, shadowType: ShadowType.Solid, color: [1, 0.8, 0.5] }),
+      new PointLight({ position: [80, 62], range: 60, radius: 5, color: [0.5, 0.5, 1] }),
+    ], [
+      new Hull(box(55, 25, 20, 12)),
+      new Hull(box(65, 30, 20, 12)),
+      new Hull([[40, 80], [60, 70], [90, 95], [50, 110]]),
+      new Hull([[20, 60], [60, 60], [60, 64]], { closed: false }),
+      new Hull([[95, 20], [120, 50], [95, 50], [120, 20]], { closed: false }),
+      new Hull([[70, 62], [90, 62]], { closed: false }),
+    ]);
+    check('Illuminated and Solid, polylines, hard light, overlapping hulls');
+  });
+
+  it('a textured light, its cookie sampled on the CPU; without a sampler, an upper bound', () => {
+    // A 2×2 cookie with nearest filtering: red 255, 128, 64, 0 from the first texel on.
+    const texels = [255, 128, 64, 0];
+    const texture = gl.createTexture()!;
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 2, 2, 0, gl.RGBA, gl.UNSIGNED_BYTE, Uint8Array.from(texels.flatMap((red) => [red, 255, 255, 255])));
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    const light = new TexturedLight({ texture, position: [70, 55], size: [90, 70], origin: [0.4, 0.6], rotation: 0.5, range: 60, radius: 5, color: [1, 0.7, 0.4] });
+    reset([light], [new Hull(box(85, 50, 8, 16)), new Hull([[40, 30], [50, 36], [44, 44]])]);
+    const sampler = (_: TexturedLight, u: number, v: number) => texels[Math.min(1, Math.floor(v * 2)) * 2 + Math.min(1, Math.floor(u * 2))] / 255;
+    // The quad's outline and the texel edges (u or v = ½) are drawn as rasterized edges / nearest texel picks.
+    const quad = new Float32Array(6);
+    light.writeQuad(quad);
+    const [x0, y0, ax, ay, bx, by] = quad;
+    const width = Math.hypot(ax, ay), height = Math.hypot(bx, by);
+    const nearEdge = (x: number, y: number) => {
+      const u = ((x - x0) * ax + (y - y0) * ay) / (width * width), v = ((x - x0) * bx + (y - y0) * by) / (height * height);
+      return [u, u - 0.5, u - 1].some((t) => Math.abs(t) * width < OUTLINE_BAND) || [v, v - 0.5, v - 1].some((t) => Math.abs(t) * height < OUTLINE_BAND);
+    };
+    check('textured light, cookie sampled', { cookie: sampler }, nearEdge);
+    // Without a sampler the cookie counts as 1: never below the lightmap beyond its precision.
+    const lightmap = renderLightmap(gl, renderer, WIDTH, HEIGHT);
+    let below = 0, above = 0;
+    for (let y = 0; y < HEIGHT; y++) {
+      for (let x = 0; x < WIDTH; x++) {
+        const bound = renderer.illuminationAt(x + 0.5, y + 0.5, { perLight: false }).color[0];
+        if (bound < lightmap.at(x, y)[0] - MAX_DIFFERENCE && !nearEdge(x + 0.5, y + 0.5)) below++;
+        if (bound > lightmap.at(x, y)[0] + 0.1) above++;
+      }
+    }
+    expect(below).toBe(0);
+    expect(above).toBeGreaterThan(1000); // where the cookie is below 1
+    gl.deleteTexture(texture);
+  });
+});
