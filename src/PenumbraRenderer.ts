@@ -224,7 +224,8 @@ export class PenumbraRenderer {
    * Blur of the lightmap, a radius in the renderer's pixels from 0 (off, the default) to 32: a
    * Gaussian of standard deviation radius / 2 cut at the radius, for a softer look. A look, not a
    * physics: it also spreads light past hull edges and into umbrae. The first frame with a blur
-   * makes one more lightmap-sized texture; the blur costs two full-lightmap passes a frame.
+   * compiles its program and makes one more lightmap-sized texture; the blur costs two full-lightmap
+   * passes a frame.
    */
   get lightmapBlur(): number {
     return this._lightmapBlur;

@@ -7,50 +7,49 @@ const SOURCE_UNIT = 0;
 
 /**
  * Lightmap blur: a Gaussian of standard deviation radius / 2, cut at ±radius texels and
- * normalised, run across the lightmap into a scratch target and back down into the lightmap. The
- * scratch target is made the first time a blur runs (one lightmap-sized texture, none while the
- * blur is off) and follows the lightmap's size.
+ * normalised, run across the lightmap into a scratch target and back down into the lightmap. Its
+ * program, vertex array and scratch target are made the first time a blur runs (none while the
+ * blur is off: no compile at start-up), and the scratch target follows the lightmap's size.
  */
 export class BlurPass {
-  private readonly program: Program;
-  private readonly emptyVertexArray: WebGLVertexArrayObject;
+  private program: Program | null = null;
+  private emptyVertexArray: WebGLVertexArrayObject | null = null;
   private scratch: RenderTarget | null = null;
   private readonly weights = new Float32Array(MAX_BLUR_RADIUS + 1);
   private readonly step = new Float32Array(2);
   private weightsRadius = -1;
 
-  constructor(private readonly gl: WebGL2RenderingContext, private readonly format: TargetFormat) {
-    this.program = createProgram(gl, 'lightmap blur', shaderSources.fullscreenVertex, shaderSources.blurFragment);
-    this.emptyVertexArray = gl.createVertexArray()!;
-  }
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly format: TargetFormat) {}
 
   /** Blurs `lightmap` in place by `radius` texels (0 < radius ≤ {@link MAX_BLUR_RADIUS}); leaves blending and scissor off. */
   render(lightmap: RenderTarget, radius: number): void {
     const gl = this.gl;
     const taps = Math.min(MAX_BLUR_RADIUS, Math.ceil(radius));
+    const program = (this.program ??= createProgram(gl, 'lightmap blur', shaderSources.fullscreenVertex, shaderSources.blurFragment));
+    this.emptyVertexArray ??= gl.createVertexArray()!;
     this.scratch ??= new RenderTarget(gl, { format: this.format }, lightmap.width, lightmap.height);
     this.scratch.resize(lightmap.width, lightmap.height);
     this.updateWeights(radius);
-    const uniforms = this.program.uniforms;
+    const uniforms = program.uniforms;
     gl.disable(gl.BLEND);
     gl.disable(gl.SCISSOR_TEST);
-    gl.useProgram(this.program.handle);
+    gl.useProgram(program.handle);
     gl.uniform1i(uniforms.u_source, SOURCE_UNIT);
     gl.uniform1i(uniforms.u_radius, taps);
     gl.uniform1fv(uniforms.u_weights, this.weights);
     gl.bindVertexArray(this.emptyVertexArray);
     gl.activeTexture(gl.TEXTURE0 + SOURCE_UNIT);
-    this.pass(lightmap, this.scratch, 1 / lightmap.width, 0);
-    this.pass(this.scratch, lightmap, 0, 1 / lightmap.height);
+    this.pass(program, lightmap, this.scratch, 1 / lightmap.width, 0);
+    this.pass(program, this.scratch, lightmap, 0, 1 / lightmap.height);
   }
 
-  private pass(from: RenderTarget, to: RenderTarget, stepX: number, stepY: number): void {
+  private pass(program: Program, from: RenderTarget, to: RenderTarget, stepX: number, stepY: number): void {
     const gl = this.gl;
     to.bind();
     gl.bindTexture(gl.TEXTURE_2D, from.texture);
     this.step[0] = stepX;
     this.step[1] = stepY;
-    gl.uniform2fv(this.program.uniforms.u_step, this.step);
+    gl.uniform2fv(program.uniforms.u_step, this.step);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
   }
 
@@ -70,8 +69,8 @@ export class BlurPass {
   }
 
   dispose(): void {
-    this.gl.deleteProgram(this.program.handle);
-    this.gl.deleteVertexArray(this.emptyVertexArray);
+    if (this.program) this.gl.deleteProgram(this.program.handle);
+    if (this.emptyVertexArray) this.gl.deleteVertexArray(this.emptyVertexArray);
     this.scratch?.dispose();
   }
 }
