@@ -14,8 +14,8 @@ import { renderLightmap } from './lightmap';
  * pixel centre (the figures count those some light reaches) of the reference scenes, of random scenes (with random
  * shadow types and shadow colours) and of scenes of the features the reference scenes leave out
  * (spotlights, layers, ignored hulls, shadow colour, Illuminated hulls, disabled lights and hulls, a
- * light inside a hull, transformed hulls, a textured light with its cookie sampled on the CPU,
- * ambient light). Each channel must be within {@link MAX_DIFFERENCE} of the lightmap. The random
+ * light inside a hull, transformed hulls, hulls crossing inside a disk, a textured light with its
+ * cookie sampled on the CPU, ambient light). Each channel must be within {@link MAX_DIFFERENCE} of the lightmap. The random
  * scenes are PENUMBRA_SCENES (default 60) from seed 0x111. Left out, as
  * the reference tests leave them out: pixel centres within 1/16 pixel of a hull outline or of a
  * hard shadow's edge, where the rasterizer's snapping decides (test/reference/softShadowReference),
@@ -261,6 +261,16 @@ describe('illuminationAt matches the rendered lightmap: features', () => {
     check('Illuminated and Solid, polylines, hard light, overlapping hulls');
   });
 
+  it('hulls and polylines crossing one another inside a wide disk', () => {
+    // Where edges cross, the edge a ray meets first changes: the sweep must cut there.
+    reset([new PointLight({ position: [80, 60], range: 90, radius: 18, color: [1, 0.9, 0.8] })], [
+      new Hull(box(-20, -2, 40, 4), { position: [84, 52], rotation: 0.5 }),
+      new Hull(box(-20, -2, 40, 4), { position: [84, 52], rotation: -0.6 }),
+      new Hull([[62, 74], [90, 64], [70, 62], [98, 76]], { closed: false }),
+    ]);
+    check('crossing hulls and polylines inside the disk');
+  });
+
   it('a textured light, its cookie sampled on the CPU; without a sampler, an upper bound', () => {
     // A 2×2 cookie with nearest filtering: red 255, 128, 64, 0 from the first texel on.
     const texels = [255, 128, 64, 0];
@@ -296,5 +306,32 @@ describe('illuminationAt matches the rendered lightmap: features', () => {
     expect(below).toBe(0);
     expect(above).toBeGreaterThan(1000); // where the cookie is below 1
     gl.deleteTexture(texture);
+  });
+});
+
+describe('the renderer\'s illuminationAt and isLit', () => {
+  it('check their numbers, agree with each other, and follow changes made since the last frame', () => {
+    const gl = createContext(64, 64);
+    const renderer = new PenumbraRenderer(gl, { ambientColor: [0.2, 0.2, 0.2] });
+    renderer.addLight(new PointLight({ position: [10, 32], range: 60, radius: 2 }));
+    const wall = renderer.addHull(new Hull(box(20, 20, 4, 24)));
+    renderLightmap(gl, renderer, 64, 64);
+    expect(() => renderer.illuminationAt(Number.NaN, 0)).toThrow(RangeError);
+    expect(() => renderer.illuminationAt(0, Infinity)).toThrow(RangeError);
+    expect(() => renderer.isLit(0, 0, Number.NaN)).toThrow(RangeError);
+    // Behind the wall: only the ambient colour, and not lit; in front: lit.
+    expect(renderer.illuminationAt(40, 32).color).toEqual([0.2, 0.2, 0.2]);
+    expect(renderer.illuminationAt(40, 32).lights[0].visibility).toBe(0);
+    expect(renderer.isLit(40, 32)).toBe(false);
+    expect(renderer.isLit(15, 32)).toBe(true);
+    const before = renderer.illuminationAt(15, 32, { includeAmbient: false }).luminance;
+    expect(renderer.isLit(15, 32, before - 1e-6)).toBe(true);
+    expect(renderer.isLit(15, 32, before + 1e-6)).toBe(false);
+    // No frame drawn since: the query sees the hull where it is now.
+    wall.setPosition(0, 30);
+    expect(renderer.isLit(40, 32)).toBe(true);
+    expect(renderer.illuminationAt(40, 32).lights[0].visibility).toBe(1);
+    renderer.dispose();
+    destroyContext(gl);
   });
 });
