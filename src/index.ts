@@ -1,5 +1,6 @@
 export { PenumbraRenderer, type PenumbraRendererOptions, type FrameStats } from './PenumbraRenderer';
 export { ToneMapping, Dithering } from './passes/compositeLayout';
+export type { Illumination, IlluminationOptions, LightIllumination, CookieSampler } from './scene/illumination';
 export { Hull, type HullOptions } from './scene/Hull';
 export {
   Light, PointLight, Spotlight, TexturedLight, ShadowType,
