@@ -2,6 +2,7 @@ import { Hull, type Light } from 'penumbra-gl';
 import { hullContains } from './hullShape';
 import { LIGHT_HANDLE_RADIUS } from './Overlay';
 import type { Playground, Selectable } from './Playground';
+import type { TilePainter } from './TilePainter';
 
 /** Keyboard panning speed in CSS pixels per second. */
 const PAN_SPEED = 600;
@@ -15,21 +16,28 @@ const PAN_KEYS: Record<string, [number, number]> = {
 /** What a single-pointer drag is doing. */
 type Drag =
   | { kind: 'move'; target: Selectable; offsetX: number; offsetY: number; moved: boolean }
-  | { kind: 'pan' };
+  | { kind: 'pan' }
+  | { kind: 'paint' };
 
 /**
  * Pointer and keyboard editing on the overlay canvas: click to select, drag lights and hulls
  * (mouse, pen or touch), drag empty space or press W/A/S/D or arrows to pan, wheel or pinch to
  * zoom, and in hull mode click points to draw a hull (click its first point, double-click or press
  * Enter to close; Escape cancels). While picking a light's ignored hulls, a click on a hull adds it
- * to them or takes it out (Escape ends). Delete or Backspace removes the selection.
+ * to them or takes it out (Escape ends). In tile mode a drag paints wall tiles, a right-drag or
+ * Shift-drag erases them (Escape ends). Delete or Backspace removes the selection.
  */
 export class Editor extends EventTarget {
   /** World points of the hull being drawn. */
   readonly draft: [number, number][] = [];
   /** Whether the hull being drawn would be valid (the renderer's own check). */
   draftValid = false;
+  /** The world point under the pointer while it is over the view, or null. */
+  hover: [number, number] | null = null;
   private _drawing = false;
+  private _painting = false;
+  /** The renderer's debug wireframe before tile mode turned it on. */
+  private debugBefore = false;
   private _pickingIgnoredOf: Light | null = null;
   private readonly pointers = new Map<number, { x: number; y: number }>();
   private drag: Drag | null = null;
@@ -37,14 +45,17 @@ export class Editor extends EventTarget {
   private readonly keys = new Set<string>();
   private readonly world: [number, number] = [0, 0];
 
-  constructor(private readonly surface: HTMLElement, private readonly playground: Playground) {
+  constructor(private readonly surface: HTMLElement, private readonly playground: Playground, readonly painter: TilePainter) {
     super();
     surface.addEventListener('pointerdown', this.onPointerDown);
     surface.addEventListener('pointermove', this.onPointerMove);
     surface.addEventListener('pointerup', this.onPointerUp);
     surface.addEventListener('pointercancel', this.onPointerUp);
     surface.addEventListener('dblclick', () => this.finishHull());
+    surface.addEventListener('pointerleave', () => { this.hover = null; });
     surface.addEventListener('wheel', this.onWheel, { passive: false });
+    // A right-drag erases tiles: no context menu in tile mode.
+    surface.addEventListener('contextmenu', (event) => { if (this._painting) event.preventDefault(); });
     window.addEventListener('keydown', this.onKeyDown);
     window.addEventListener('keyup', (event) => this.keys.delete(event.code));
     window.addEventListener('blur', () => this.keys.clear());
@@ -59,7 +70,10 @@ export class Editor extends EventTarget {
     return this._drawing;
   }
   set drawing(value: boolean) {
-    if (value) this._pickingIgnoredOf = null;
+    if (value) {
+      this._pickingIgnoredOf = null;
+      this.leavePainting();
+    }
     this._drawing = value;
     this.draft.length = 0;
     this.draftValid = false;
@@ -76,8 +90,37 @@ export class Editor extends EventTarget {
   }
   set pickingIgnoredOf(light: Light | null) {
     if (light && this._drawing) this.drawing = false;
+    if (light) this.leavePainting();
     this._pickingIgnoredOf = light;
     this.dispatchEvent(new Event('mode'));
+  }
+
+  /**
+   * Whether drags paint wall tiles (the painter's tile size) instead of selecting and moving. Turns
+   * the renderer's debug wireframe on while it lasts. Fires `mode` on change.
+   */
+  get painting(): boolean {
+    return this._painting;
+  }
+  set painting(value: boolean) {
+    if (value === this._painting) return;
+    if (value) {
+      if (this._drawing) this.drawing = false;
+      this._pickingIgnoredOf = null;
+      this.playground.selection = null;
+      this.debugBefore = this.playground.renderer.debug;
+      this.playground.renderer.debug = true;
+    } else {
+      this.painter.end();
+      if (this.drag?.kind === 'paint') this.drag = null;
+      this.playground.renderer.debug = this.debugBefore;
+    }
+    this._painting = value;
+    this.dispatchEvent(new Event('mode'));
+  }
+
+  private leavePainting(): void {
+    if (this._painting) this.painting = false;
   }
 
   /** Turns the hull being drawn into a hull (even an invalid one: it is kept and shown as invalid). */
@@ -116,12 +159,19 @@ export class Editor extends EventTarget {
     this.pointers.set(event.pointerId, { x: event.offsetX, y: event.offsetY });
     if (this.pointers.size === 2) {
       this.drag = null;
+      this.painter.end();
       this.pinchDistance = this.pointerSpread().distance;
       return;
     }
     if (this.pointers.size > 2) return;
     if (this._drawing) {
       this.addDraftPoint(event.offsetX, event.offsetY);
+      return;
+    }
+    if (this._painting) {
+      const [wx, wy] = this.playground.camera.screenToWorld(event.offsetX, event.offsetY, this.world);
+      this.painter.begin(wx, wy, !(event.button === 2 || event.shiftKey));
+      this.drag = { kind: 'paint' };
       return;
     }
     const target = this.pick(event.offsetX, event.offsetY);
@@ -139,6 +189,7 @@ export class Editor extends EventTarget {
   };
 
   private readonly onPointerMove = (event: PointerEvent): void => {
+    this.hover = this.playground.camera.screenToWorld(event.offsetX, event.offsetY, this.hover ?? [0, 0]);
     const previous = this.pointers.get(event.pointerId);
     if (!previous) return;
     const dx = event.offsetX - previous.x, dy = event.offsetY - previous.y;
@@ -159,6 +210,10 @@ export class Editor extends EventTarget {
       return;
     }
     const [wx, wy] = camera.screenToWorld(event.offsetX, event.offsetY, this.world);
+    if (drag.kind === 'paint') {
+      this.painter.moveTo(wx, wy);
+      return;
+    }
     drag.target.setPosition(wx + drag.offsetX, wy + drag.offsetY);
     drag.moved = true;
   };
@@ -166,6 +221,7 @@ export class Editor extends EventTarget {
   private readonly onPointerUp = (event: PointerEvent): void => {
     this.pointers.delete(event.pointerId);
     if (this.drag?.kind === 'move' && this.drag.moved) this.playground.changed();
+    if (this.drag?.kind === 'paint') this.painter.end();
     if (this.pointers.size === 0) this.drag = null;
   };
 
@@ -184,6 +240,7 @@ export class Editor extends EventTarget {
       this.finishHull();
     } else if (event.key === 'Escape') {
       if (this._drawing) this.drawing = false;
+      else if (this._painting) this.painting = false;
       else if (this._pickingIgnoredOf) this.pickingIgnoredOf = null;
       else this.playground.selection = null;
     } else if (event.key === 'Delete' || event.key === 'Backspace') {

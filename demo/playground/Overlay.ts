@@ -8,26 +8,43 @@ const IGNORED_HULL_COLOR = '#ff9a3d';
 const MAX_OUTLINED_HULLS = 400;
 /** Radius in CSS pixels of a light's handle (also its pick radius). */
 export const LIGHT_HANDLE_RADIUS = 9;
+/** The tile grid is drawn only while its tiles are at least this many CSS pixels wide. */
+const MIN_GRID_SPACING = 6;
+/** The faint tile grid of tile mode. */
+const GRID_COLOR = 'rgba(255, 255, 255, 0.12)';
+
+/** What tile mode shows: the grid of `tileSize` world units, the tile under the pointer, and whether a stroke erases. */
+export interface PaintGuide {
+  tileSize: number;
+  hover: readonly [number, number] | null;
+  erasing: boolean;
+}
 
 /**
  * The editing gizmos, drawn unlit on a 2D canvas over the WebGL canvas: light handles, hull
  * outlines (invalid hulls dashed red, as the renderer ignores them), the selection, the hulls the
- * selected light ignores (orange), and the hull being drawn.
+ * selected light ignores (orange), the hull being drawn, and in tile mode the faint grid and the
+ * tile under the pointer.
  */
 export class Overlay {
   private readonly g: CanvasRenderingContext2D;
   private readonly point: [number, number] = [0, 0];
+  private readonly view = new Float32Array(4);
 
   constructor(readonly canvas: HTMLCanvasElement, private readonly playground: Playground) {
     this.g = canvas.getContext('2d')!;
   }
 
-  /** Draws the gizmos; `draft` is the hull being drawn, in world points, and whether it is valid. */
-  draw(dpr: number, draft: readonly (readonly [number, number])[], draftValid: boolean): void {
+  /**
+   * Draws the gizmos; `draft` is the hull being drawn, in world points, and whether it is valid;
+   * `paint` is tile mode's guide, null outside it.
+   */
+  draw(dpr: number, draft: readonly (readonly [number, number])[], draftValid: boolean, paint: PaintGuide | null = null): void {
     const { g, canvas, playground } = this;
     g.setTransform(1, 0, 0, 1, 0, 0);
     g.clearRect(0, 0, canvas.width, canvas.height);
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
+    if (paint) this.drawGrid(paint);
     const { hulls, lights } = playground.renderer;
     const selected = playground.selection;
     g.lineWidth = 1.5;
@@ -40,6 +57,37 @@ export class Overlay {
     if (lights.length <= MAX_OUTLINED_HULLS) for (const light of lights) this.drawLight(light, light === selected);
     else if (selected && !(selected instanceof Hull)) this.drawLight(selected, true);
     if (draft.length > 0) this.drawDraft(draft, draftValid);
+  }
+
+  /** The world-aligned grid lines across the view, and the tile under the pointer. */
+  private drawGrid({ tileSize, hover, erasing }: PaintGuide): void {
+    const { g, point } = this;
+    const camera = this.playground.camera;
+    const [x0, y0, x1, y1] = camera.visibleWorld(this.view);
+    if (tileSize * camera.zoom >= MIN_GRID_SPACING) {
+      g.strokeStyle = GRID_COLOR;
+      g.lineWidth = 1;
+      g.beginPath();
+      for (let x = Math.ceil(x0 / tileSize) * tileSize; x <= x1; x += tileSize) {
+        // Half-pixel offsets keep the 1-pixel lines crisp.
+        const sx = Math.round(camera.worldToScreen(x, 0, point)[0]) + 0.5;
+        g.moveTo(sx, 0);
+        g.lineTo(sx, camera.height);
+      }
+      for (let y = Math.ceil(y0 / tileSize) * tileSize; y <= y1; y += tileSize) {
+        const sy = Math.round(camera.worldToScreen(0, y, point)[1]) + 0.5;
+        g.moveTo(0, sy);
+        g.lineTo(camera.width, sy);
+      }
+      g.stroke();
+    }
+    if (hover) {
+      const tx = Math.floor(hover[0] / tileSize) * tileSize, ty = Math.floor(hover[1] / tileSize) * tileSize;
+      const [sx, sy] = camera.worldToScreen(tx, ty, point);
+      g.strokeStyle = erasing ? '#ff4d4d' : '#6dff8a';
+      g.lineWidth = 1.5;
+      g.strokeRect(sx, sy, tileSize * camera.zoom, tileSize * camera.zoom);
+    }
   }
 
   private outlineHull(hull: Hull, color: string): void {

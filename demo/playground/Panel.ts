@@ -3,6 +3,7 @@ import { Hull, ShadowType, Spotlight, TexturedLight, type Light } from 'penumbra
 import type { Editor } from './Editor';
 import type { Playground } from './Playground';
 import { PRESETS } from './presets';
+import { TILE_SIZES } from './TilePainter';
 
 /** What the panel's buttons do outside the model: files and messages. */
 export interface PanelActions {
@@ -13,8 +14,12 @@ export interface PanelActions {
 }
 
 const DEGREES = 180 / Math.PI;
+/** The tile-mode button's label outside and in tile mode. */
+const PAINT_LABELS = { start: 'paint tiles (drag; right-drag or Shift erases)', stop: 'stop painting (Esc)' };
 /** Below this page width (CSS pixels) the panel opens collapsed: it would cover most of the scene. */
 const NARROW_SCREEN = 720;
+/** Below this page height (CSS pixels) the content folder opens collapsed: the panel would run off the page. */
+const SHORT_SCREEN = 640;
 
 /** `[r, g, b]` in 0..1 ↔ `#rrggbb` for lil-gui's colour picker (channels above 1 show as 1). */
 function toHex(color: readonly number[]): string {
@@ -38,8 +43,9 @@ function bind<T>(model: Record<string, unknown>, key: string, get: () => T, set:
 }
 
 /**
- * The properties panel (lil-gui): scene settings, presets and files, adding and deleting, and
- * every property of the selected light or hull, rebuilt when the selection changes.
+ * The properties panel (lil-gui): scene settings, presets and files, adding and deleting, hulls
+ * from content (painted tiles), and every property of the selected light or hull,
+ * rebuilt when the selection changes.
  */
 export class Panel {
   readonly gui = new GUI({ title: 'penumbra-gl playground' });
@@ -57,7 +63,8 @@ export class Panel {
       playground.changed();
     });
     scene.addColor(sceneModel, 'ambient').listen();
-    scene.add(playground.renderer, 'debug').name('debug wireframe');
+    // Tile mode turns the wireframe on: the box follows.
+    scene.add(playground.renderer, 'debug').name('debug wireframe').listen();
     scene.add(playground, 'animate').name('animate');
     scene.add(actions, 'save').name('save scene (download)');
     scene.add(actions, 'load').name('load scene… (or drop a file)');
@@ -74,11 +81,14 @@ export class Panel {
     edit.add(buttons, 'spot').name('add spotlight');
     edit.add(buttons, 'textured').name('add textured light');
     const drawHull = edit.add(buttons, 'hull').name('draw hull (click points)');
+    edit.add(buttons, 'remove').name('delete selected (Del)');
+
+    const paintTiles = this.contentControls();
     editor.addEventListener('mode', () => {
       drawHull.name(editor.drawing ? 'cancel hull (Enter closes)' : 'draw hull (click points)');
+      paintTiles.name(editor.painting ? PAINT_LABELS.stop : PAINT_LABELS.start);
       this.labelPickButton();
     });
-    edit.add(buttons, 'remove').name('delete selected (Del)');
 
     playground.addEventListener('selection', () => this.showSelection());
     this.showSelection();
@@ -86,6 +96,17 @@ export class Panel {
     this.gui.onOpenClose(() => this.measureCovered());
     window.addEventListener('resize', () => this.measureCovered());
     this.measureCovered();
+  }
+
+  /** Hulls from content: tile mode with its tile size. Returns the tile-mode button. */
+  private contentControls(): Controller {
+    const { editor } = this;
+    const folder = this.gui.addFolder('Hulls from content');
+    const buttons = { paint: () => { editor.painting = !editor.painting; } };
+    const paintTiles = folder.add(buttons, 'paint').name(PAINT_LABELS.start);
+    folder.add(editor.painter, 'tileSize', [...TILE_SIZES]).name('tile size');
+    if (window.innerHeight < SHORT_SCREEN) folder.close();
+    return paintTiles;
   }
 
   /**

@@ -133,6 +133,21 @@ export class Playground extends EventTarget {
     return hull;
   }
 
+  /**
+   * Takes hulls out of the scene and puts others in, without touching the selection unless it is
+   * among those removed: the painter's edits. Removed hulls are forgotten by lights that ignored them.
+   */
+  replaceHulls(removed: readonly Hull[], added: readonly Hull[]): void {
+    const renderer = this.renderer;
+    for (const hull of removed) {
+      renderer.removeHull(hull);
+      for (const light of renderer.lights) light.ignoredHulls.delete(hull);
+    }
+    for (const hull of added) renderer.addHull(hull);
+    if (this._selection instanceof Hull && removed.includes(this._selection)) this.selection = null;
+    this.changed();
+  }
+
   /** Removes the selected light or hull (and forgets it in lights' ignored hulls). */
   deleteSelection(): void {
     const selected = this._selection;

@@ -7,6 +7,7 @@ import { Playground } from './Playground';
 import { PRESETS } from './presets';
 import { StatsOverlay } from './StatsOverlay';
 import { installTestHook } from './testHook';
+import { TilePainter } from './TilePainter';
 
 /** Edits are kept for the next visit at most this often (the stress scene is a large file). */
 const STORE_INTERVAL_MS = 1000;
@@ -18,7 +19,7 @@ const gl = view.getContext('webgl2', { antialias: false, alpha: false });
 if (!gl) throw new Error('playground: this browser has no WebGL2');
 
 const playground = new Playground(gl);
-const editor = new Editor(gizmos, playground);
+const editor = new Editor(gizmos, playground, new TilePainter(playground));
 const overlay = new Overlay(gizmos, playground);
 const stats = new StatsOverlay(document.getElementById('stats') as HTMLElement);
 
@@ -96,7 +97,10 @@ function frame(now: number): void {
   const dpr = fitCanvases();
   editor.update(dt);
   playground.frame(dt);
-  overlay.draw(dpr, editor.draft, editor.draftValid);
+  const painting = editor.painting
+    ? { tileSize: editor.painter.tileSize, hover: editor.hover, erasing: editor.painter.erasing }
+    : null;
+  overlay.draw(dpr, editor.draft, editor.draftValid, painting);
   stats.frame(now, playground.renderer.stats);
 }
 
@@ -106,4 +110,4 @@ function loop(now: number): void {
 }
 requestAnimationFrame(loop);
 
-installTestHook({ playground, stats, loadText, selectPreset, frame: () => frame(performance.now()), message });
+installTestHook({ playground, editor, gizmos, stats, loadText, selectPreset, frame: () => frame(performance.now()), message });

@@ -1,4 +1,6 @@
-import { writeScene, type FrameStats } from 'penumbra-gl';
+import { writeScene, type FrameStats, type Hull } from 'penumbra-gl';
+import type { Editor } from './Editor';
+import { hullWorldPoint } from './hullShape';
 import type { Playground } from './Playground';
 import { PRESETS } from './presets';
 import type { OverlayFigures, StatsOverlay } from './StatsOverlay';
@@ -27,11 +29,23 @@ export interface PlaygroundTestHook {
   rendererStats(): FrameStats;
   /** The overlay's figures (fps, mean CPU time per frame, counts). */
   overlayFigures(): OverlayFigures;
+  /** Each hull's points in world units, in the renderer's order. */
+  hullOutlines(): [number, number][][];
+  /** A number per hull object, in the renderer's order: the same hull keeps its number, a new one gets a new number. */
+  hullIds(): number[];
+  /** Whether the renderer's debug wireframe is on. */
+  debugWireframe(): boolean;
+  /** Tile mode: whether it is on, and the tile size strokes paint. */
+  tileMode(): { painting: boolean; tileSize: number };
+  /** Draws a frame now and returns the gizmo overlay's alpha (0..255) at a CSS pixel point. */
+  overlayAlpha(x: number, y: number): number;
 }
 
 /** Dependencies of the test hook. */
 export interface TestHookParts {
   playground: Playground;
+  editor: Editor;
+  gizmos: HTMLCanvasElement;
   stats: StatsOverlay;
   message: HTMLElement;
   loadText(text: string, source: string): boolean;
@@ -47,9 +61,11 @@ declare global {
 
 /** Installs `window.playground`. */
 export function installTestHook(parts: TestHookParts): void {
-  const { playground, stats, message } = parts;
+  const { playground, editor, stats, message } = parts;
   const gl = playground.gl;
   const pixel = new Uint8Array(4);
+  const ids = new WeakMap<Hull, number>();
+  let nextId = 0;
   window.playground = {
     presets: Object.keys(PRESETS),
     selectPreset: parts.selectPreset,
@@ -73,5 +89,17 @@ export function installTestHook(parts: TestHookParts): void {
       return { ...playground.renderer.stats };
     },
     overlayFigures: () => ({ ...stats.figures }),
+    hullOutlines: () => playground.renderer.hulls.map((hull) => hull.points.map((_, i) => hullWorldPoint(hull, i, [0, 0]))),
+    hullIds: () => playground.renderer.hulls.map((hull) => {
+      if (!ids.has(hull)) ids.set(hull, nextId++);
+      return ids.get(hull)!;
+    }),
+    debugWireframe: () => playground.renderer.debug,
+    tileMode: () => ({ painting: editor.painting, tileSize: editor.painter.tileSize }),
+    overlayAlpha(x, y) {
+      parts.frame();
+      const scale = parts.gizmos.width / playground.camera.width;
+      return parts.gizmos.getContext('2d')!.getImageData(Math.floor(x * scale), Math.floor(y * scale), 1, 1).data[3];
+    },
   };
 }

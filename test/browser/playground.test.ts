@@ -28,7 +28,27 @@ function testScene(light: [number, number], range = 300): SceneDocument {
   };
 }
 
+/** The test scene without its box: painted hulls are then the only ones. */
+function emptyScene(light: [number, number], range = 300): SceneDocument {
+  return { ...testScene(light, range), hulls: [] };
+}
+
 const brightness = ([r, g, b]: [number, number, number]) => r + g + b;
+
+/** Area (shoelace, either winding) and bounds `[minX, minY, maxX, maxY]` of a polygon. */
+function shape(points: [number, number][]): { area: number; bounds: [number, number, number, number] } {
+  let twice = 0;
+  const bounds: [number, number, number, number] = [Infinity, Infinity, -Infinity, -Infinity];
+  points.forEach(([x, y], i) => {
+    const [nx, ny] = points[(i + 1) % points.length];
+    twice += x * ny - nx * y;
+    bounds[0] = Math.min(bounds[0], x);
+    bounds[1] = Math.min(bounds[1], y);
+    bounds[2] = Math.max(bounds[2], x);
+    bounds[3] = Math.max(bounds[3], y);
+  });
+  return { area: Math.abs(twice) / 2, bounds };
+}
 
 describe('playground page in Chromium', () => {
   let server: StaticServer;
@@ -50,7 +70,22 @@ describe('playground page in Chromium', () => {
   }, name);
   const load = (scene: SceneDocument | string) =>
     page.evaluate((text) => window.playground.loadScene(text), typeof scene === 'string' ? scene : JSON.stringify(scene));
-
+  /** Each hull's area and world bounds, in the renderer's order. */
+  const hullShapes = async () => (await page.evaluate(() => window.playground.hullOutlines())).map(shape);
+  /** Picks option `value` of the panel's menu named `name`, as a user would. */
+  const choose = (name: string, value: string) => page.evaluate((label, option) => {
+    const row = [...document.querySelectorAll('.lil-gui .lil-controller')].find((c) => c.querySelector('.lil-name')?.textContent === label)!;
+    const select = row.querySelector('select')!;
+    select.selectedIndex = [...select.options].findIndex((o) => o.textContent === option);
+    select.dispatchEvent(new Event('change'));
+  }, name, value);
+  /** A mouse stroke through world points, with the left button or (`right`) the right one. */
+  const stroke = async (points: [number, number][], button: 'left' | 'right' = 'left') => {
+    await page.mouse.move(...await toScreen(...points[0]));
+    await page.mouse.down({ button });
+    for (const point of points.slice(1)) await page.mouse.move(...await toScreen(...point), { steps: 4 });
+    await page.mouse.up({ button });
+  };
   beforeAll(async () => {
     server = await serveDirectory('demo-dist');
     browser = await launchChromium();
@@ -201,6 +236,75 @@ describe('playground page in Chromium', () => {
     expect((await toScreen(300, 200))[0]).toBeCloseTo(WIDTH / 2, 5);
     await page.click('.lil-gui .lil-title');
     expect((await toScreen(300, 200))[0]).toBeCloseTo(panel.left / 2, -1);
+  });
+
+  it('paints a line of wall tiles into one hull covering exactly those tiles, over a faint grid, and it casts a shadow', async () => {
+    expect(await load(emptyScene([100, 200]))).toBe(true);
+    expect(brightness(await readPixel(300, 200))).toBeGreaterThan(150);
+    await clickButton('paint tiles');
+    expect(await page.evaluate(() => window.playground.tileMode())).toEqual({ painting: true, tileSize: 32 });
+    expect(await page.evaluate(() => window.playground.debugWireframe())).toBe(true);
+    // Grid lines at every multiple of 32 world units: one at x = 256, none halfway to the next.
+    const [lineX, lineY] = (await toScreen(256, 40)).map(Math.round);
+    expect(await page.evaluate((x, y) => window.playground.overlayAlpha(x, y), lineX, lineY)).toBeGreaterThan(10);
+    expect(await page.evaluate((x, y) => window.playground.overlayAlpha(x, y), lineX + 16, lineY)).toBe(0);
+
+    // Down the column of tiles x = 6 (192–224), from row 3 (96–128) to row 9 (288–320).
+    await stroke([[208, 112], [208, 200], [208, 304]]);
+    const shapes = await hullShapes();
+    expect(shapes).toHaveLength(1);
+    expect(shapes[0].bounds).toEqual([192, 96, 224, 320]);
+    expect(shapes[0].area).toBe(32 * 32 * 7);
+    // Saved like any other hull.
+    expect((await sceneDocument()).hulls).toHaveLength(1);
+
+    await page.keyboard.press('Escape');
+    expect(await page.evaluate(() => window.playground.tileMode().painting)).toBe(false);
+    expect(await page.evaluate(() => window.playground.debugWireframe())).toBe(false);
+    expect(await page.evaluate((x, y) => window.playground.overlayAlpha(x, y), lineX, lineY)).toBe(0);
+    expect(brightness(await readPixel(160, 200))).toBeGreaterThan(150);
+    expect(brightness(await readPixel(300, 200))).toBeLessThan(30);
+  });
+
+  it('erases tiles with a right-drag or Shift, changing only the hulls they touch, and adopts them at another tile size', async () => {
+    expect(await load(emptyScene([100, 200]))).toBe(true);
+    await clickButton('paint tiles');
+    await stroke([[208, 112], [208, 304]]);
+    await stroke([[400, 112], [400, 176]]);  // a second wall: tiles (12, 3–5)
+    const [wall, other] = await page.evaluate(() => window.playground.hullIds());
+
+    await stroke([[208, 208], [210, 210]], 'right');  // tile (6, 6): the wall splits in two
+    let shapes = await hullShapes();
+    expect(shapes).toHaveLength(3);
+    const ids = await page.evaluate(() => window.playground.hullIds());
+    expect(ids).toContain(other);
+    expect(ids).not.toContain(wall);
+    const pieces = shapes.filter((_, i) => ids[i] !== other).map((s) => s.bounds).sort((a, b) => a[1] - b[1]);
+    expect(pieces).toEqual([[192, 96, 224, 192], [192, 224, 224, 320]]);
+    expect(shapes[ids.indexOf(other)].bounds).toEqual([384, 96, 416, 192]);
+
+    await page.keyboard.down('Shift');
+    await stroke([[208, 112], [209, 113]]);  // tile (6, 3), erased with Shift
+    await page.keyboard.up('Shift');
+    shapes = await hullShapes();
+    expect(shapes.map((s) => s.bounds).sort((a, b) => a[0] - b[0] || a[1] - b[1]))
+      .toEqual([[192, 128, 224, 192], [192, 224, 224, 320], [384, 96, 416, 192]]);
+    expect(shapes.reduce((sum, s) => sum + s.area, 0)).toBe(32 * 32 * 8);
+
+    await page.keyboard.press('Escape');
+    expect(brightness(await readPixel(300, 208))).toBeGreaterThan(150);  // through the gap
+    expect(brightness(await readPixel(300, 150))).toBeLessThan(30);
+
+    // At 16 units the 32-unit walls are adopted: a 16-unit tile under the upper piece joins it.
+    await clickButton('paint tiles');
+    await choose('tile size', '16');
+    await stroke([[200, 200], [201, 201]]);  // tile (12, 12) at 16: 192–208 × 192–208
+    shapes = await hullShapes();
+    expect(shapes).toHaveLength(3);
+    const upper = shapes.find((s) => s.bounds[1] === 128)!;
+    expect(upper.bounds).toEqual([192, 128, 224, 208]);
+    expect(upper.area).toBe(32 * 64 + 16 * 16);
+    await page.keyboard.press('Escape');
   });
 
   it('switches presets and keeps the scene across a reload', async () => {
