@@ -215,6 +215,8 @@ export class Editor extends EventTarget {
       return;
     }
     drag.target.setPosition(wx + drag.offsetX, wy + drag.offsetY);
+    // Hulls traced from one image move together.
+    if (drag.target instanceof Hull) for (const other of this.playground.companionsOf(drag.target)) other.setPosition(wx + drag.offsetX, wy + drag.offsetY);
     drag.moved = true;
   };
 

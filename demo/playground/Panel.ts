@@ -1,6 +1,7 @@
 import GUI, { type Controller } from 'lil-gui';
 import { Hull, ShadowType, Spotlight, TexturedLight, type Light } from 'penumbra-gl';
 import type { Editor } from './Editor';
+import type { ImageTracer } from './ImageTracer';
 import type { Playground } from './Playground';
 import { PRESETS } from './presets';
 import { TILE_SIZES } from './TilePainter';
@@ -10,6 +11,8 @@ export interface PanelActions {
   selectPreset(name: string): void;
   save(): void;
   load(): void;
+  /** Opens the file picker for an image to trace into hulls. */
+  pickImage(): void;
   showError(message: string): void;
 }
 
@@ -44,7 +47,7 @@ function bind<T>(model: Record<string, unknown>, key: string, get: () => T, set:
 
 /**
  * The properties panel (lil-gui): scene settings, presets and files, adding and deleting, hulls
- * from content (painted tiles), and every property of the selected light or hull,
+ * from content (painted tiles, traced images), and every property of the selected light or hull,
  * rebuilt when the selection changes.
  */
 export class Panel {
@@ -54,7 +57,10 @@ export class Panel {
   private pickButton: Controller | null = null;
   private readonly settings = { preset: Object.keys(PRESETS)[0] };
 
-  constructor(private readonly playground: Playground, private readonly editor: Editor, private readonly actions: PanelActions) {
+  constructor(
+    private readonly playground: Playground, private readonly editor: Editor, private readonly tracer: ImageTracer,
+    private readonly actions: PanelActions,
+  ) {
     const scene = this.gui.addFolder('Scene');
     scene.add(this.settings, 'preset', Object.keys(PRESETS)).name('preset').onChange((name: string) => actions.selectPreset(name));
     const sceneModel: Record<string, unknown> = {};
@@ -63,7 +69,7 @@ export class Panel {
       playground.changed();
     });
     scene.addColor(sceneModel, 'ambient').listen();
-    // Tile mode turns the wireframe on: the box follows.
+    // Tile mode and tracing turn the wireframe on: the box follows.
     scene.add(playground.renderer, 'debug').name('debug wireframe').listen();
     scene.add(playground, 'animate').name('animate');
     scene.add(actions, 'save').name('save scene (download)');
@@ -98,13 +104,29 @@ export class Panel {
     this.measureCovered();
   }
 
-  /** Hulls from content: tile mode with its tile size. Returns the tile-mode button. */
+  /**
+   * Hulls from content: tile mode with its tile size, and tracing an image (picked, or dropped on
+   * the view) with its tolerance and what the last trace did. Returns the tile-mode button.
+   */
   private contentControls(): Controller {
-    const { editor } = this;
+    const { editor, tracer } = this;
     const folder = this.gui.addFolder('Hulls from content');
-    const buttons = { paint: () => { editor.painting = !editor.painting; } };
+    const buttons = { paint: () => { editor.painting = !editor.painting; }, trace: () => this.actions.pickImage() };
     const paintTiles = folder.add(buttons, 'paint').name(PAINT_LABELS.start);
     folder.add(editor.painter, 'tileSize', [...TILE_SIZES]).name('tile size');
+    folder.add(buttons, 'trace').name('trace image… (or drop a PNG)');
+    const m: Record<string, unknown> = {};
+    // Not a scene edit: a refused value is shown, an accepted one applies to the next trace.
+    bind(m, 'tolerance', () => tracer.tolerance, (v: number) => {
+      try {
+        tracer.tolerance = v;
+      } catch (error) {
+        this.actions.showError((error as Error).message);
+      }
+    });
+    bind(m, 'traced', () => tracer.status, () => undefined);
+    number(folder, m, 'tolerance', 2);
+    folder.add(m, 'traced').name('last image').disable().listen();
     if (window.innerHeight < SHORT_SCREEN) folder.close();
     return paintTiles;
   }

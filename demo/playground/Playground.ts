@@ -4,7 +4,8 @@ import {
 } from 'penumbra-gl';
 import { Camera } from './Camera';
 import { Cookies } from './Cookies';
-import { SceneArt, type Sprite } from './SceneArt';
+import { SceneArt, type ImageSprite, type Sprite } from './SceneArt';
+import { createTexture } from './textures';
 
 /** What can be selected and edited. */
 export type Selectable = Light | Hull;
@@ -38,6 +39,10 @@ export class Playground extends EventTarget {
     { texture: 'walker', x: 0, y: 0, size: 56, rotation: 0 },
     { texture: 'walker', x: 0, y: 0, size: 56, rotation: 0 },
   ];
+  /** Images traced into hulls, drawn as sprites that follow their hulls; forgotten once their hulls are gone. */
+  private images: ImageSprite[] = [];
+  /** The hulls traced from the same image: they move together. */
+  private readonly companions = new WeakMap<Hull, readonly Hull[]>();
   private readonly view = new Float32Array(4);
   private time = 0;
 
@@ -148,6 +153,25 @@ export class Playground extends EventTarget {
     this.changed();
   }
 
+  /**
+   * Adds the hulls traced from an image, with the image (a canvas of `width` × `height` pixels, the
+   * hulls' local space) drawn under them as a sprite that follows them. The hulls move together.
+   */
+  addTracedImage(hulls: readonly Hull[], image: TexImageSource, width: number, height: number): void {
+    for (const hull of hulls) {
+      this.renderer.addHull(hull);
+      this.companions.set(hull, hulls);
+    }
+    this.images.push({ texture: createTexture(this.gl, image, false), hulls, width, height });
+    this.selection = null;
+    this.changed();
+  }
+
+  /** The other hulls traced from the same image as `hull` (empty for any other hull). */
+  companionsOf(hull: Hull): readonly Hull[] {
+    return (this.companions.get(hull) ?? []).filter((other) => other !== hull);
+  }
+
   /** Removes the selected light or hull (and forgets it in lights' ignored hulls). */
   deleteSelection(): void {
     const selected = this._selection;
@@ -173,8 +197,19 @@ export class Playground extends EventTarget {
     const viewProjection = camera.viewProjection();
     renderer.viewProjection = viewProjection;
     renderer.beginDraw();
-    this.art.draw(viewProjection, camera.visibleWorld(this.view), renderer.hulls, this.sprites);
+    if (this.images.length > 0) this.forgetRemovedImages();
+    this.art.draw(viewProjection, camera.visibleWorld(this.view), renderer.hulls, this.sprites, this.images);
     renderer.draw();
+  }
+
+  /** Drops (and frees) the images none of whose hulls is in the scene any more. */
+  private forgetRemovedImages(): void {
+    const hulls = this.renderer.hulls;
+    this.images = this.images.filter((image) => {
+      if (image.hulls.some((hull) => hulls.includes(hull))) return true;
+      this.gl.deleteTexture(image.texture);
+      return false;
+    });
   }
 
   /** Sweeps spotlights back and forth and walks the walkers round their loops. */

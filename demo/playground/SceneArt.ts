@@ -1,6 +1,6 @@
 import type { mat4 } from 'gl-matrix';
 import type { Hull } from 'penumbra-gl';
-import { hullWorldPoint } from './hullShape';
+import { hullLocalToWorld, hullWorldPoint } from './hullShape';
 import { createTexture, drawBarrel, drawFloorTiles, drawStone, drawWalker } from './textures';
 
 const VERTEX_SHADER = `#version 300 es
@@ -40,9 +40,20 @@ export interface Sprite {
 }
 
 /**
+ * An image traced into hulls, drawn as a quad over the hulls' local space (`width` × `height`
+ * pixels from local (0, 0)) placed like the first of its hulls still in the scene.
+ */
+export interface ImageSprite {
+  texture: WebGLTexture;
+  hulls: readonly Hull[];
+  width: number;
+  height: number;
+}
+
+/**
  * The game-like scene under the lights, drawn with plain WebGL2 in world space: a tiled floor,
  * the hulls' tops in stone (any simple or even invalid polygon, via a stencil even-odd fill, so no
- * triangulation is needed), then sprites. The renderer lights whatever this draws.
+ * triangulation is needed), then sprites and traced images. The renderer lights whatever this draws.
  */
 export class SceneArt {
   private readonly program: WebGLProgram;
@@ -82,7 +93,7 @@ export class SceneArt {
    * Draws the scene into the bound framebuffer, which must have a stencil buffer (the renderer's
    * scene target has one and clears it in `beginDraw`). `view` is the visible world rectangle.
    */
-  draw(viewProjection: mat4, view: Float32Array, hulls: readonly Hull[], sprites: readonly Sprite[]): void {
+  draw(viewProjection: mat4, view: Float32Array, hulls: readonly Hull[], sprites: readonly Sprite[], images: readonly ImageSprite[] = []): void {
     const gl = this.gl;
     gl.useProgram(this.program);
     gl.uniformMatrix4fv(this.viewProjectionLocation, false, viewProjection);
@@ -114,6 +125,12 @@ export class SceneArt {
       for (const sprite of sprites) if (sprite.texture === kind) this.pushSprite(sprite);
       this.flush(this.textures[kind]);
     }
+    for (const image of images) {
+      const hull = image.hulls.find((candidate) => hulls.includes(candidate));
+      if (!hull) continue;
+      this.pushImage(hull, image.width, image.height);
+      this.flush(image.texture);
+    }
     gl.disable(gl.BLEND);
     gl.bindVertexArray(null);
   }
@@ -135,6 +152,14 @@ export class SceneArt {
     const cos = Math.cos(sprite.rotation) * sprite.size, sin = Math.sin(sprite.rotation) * sprite.size;
     const x = sprite.x - (cos - sin) / 2, y = sprite.y - (sin + cos) / 2;
     this.pushQuad(x, y, cos, sin, -sin, cos, 0, 0, 1, 1);
+  }
+
+  /** The rectangle [0, width] × [0, height] of a hull's local space, placed as the hull is. */
+  private pushImage(hull: Hull, width: number, height: number): void {
+    const [x, y] = hullLocalToWorld(hull, 0, 0, this.first);
+    const [rx, ry] = hullLocalToWorld(hull, width, 0, this.previous);
+    const [bx, by] = hullLocalToWorld(hull, 0, height, this.point);
+    this.pushQuad(x, y, rx - x, ry - y, bx - x, by - y, 0, 0, 1, 1);
   }
 
   /** A parallelogram from corner (x, y) along axes a and b, with uv from (u, v) spanning (du, dv). */

@@ -1,4 +1,7 @@
-/** Saving and loading scene files: download, file picker, drag-and-drop, and the copy kept across reloads. */
+/**
+ * Saving and loading scene files: download, file picker, drag-and-drop, and the copy kept across
+ * reloads; and image files, picked or dropped, for tracing into hulls.
+ */
 
 const STORAGE_KEY = 'penumbra-gl/playground/scene';
 
@@ -25,8 +28,19 @@ export function pickTextFile(onText: (text: string, name: string) => void): void
   input.click();
 }
 
-/** Calls `onText` with the text of a file dropped anywhere on `target`. */
-export function acceptDroppedFiles(target: HTMLElement, onText: (text: string, name: string) => void): void {
+/** What to do with a dropped file: a scene file's text, or an image file and the page point (CSS pixels) it was dropped at. */
+export interface DropHandlers {
+  text(text: string, name: string): void;
+  image(file: File, clientX: number, clientY: number): void;
+}
+
+/** Whether a file is an image by its type or, failing that, its name (some systems give no type). */
+export function isImageFile(file: File): boolean {
+  return file.type.startsWith('image/') || (file.type === '' && /\.(png|jpe?g|gif|webp|avif|bmp)$/i.test(file.name));
+}
+
+/** Hands a file dropped anywhere on `target` to `handlers`: images as files, anything else as scene text. */
+export function acceptDroppedFiles(target: HTMLElement, handlers: DropHandlers): void {
   target.addEventListener('dragover', (event) => {
     event.preventDefault();
     if (event.dataTransfer) event.dataTransfer.dropEffect = 'copy';
@@ -34,8 +48,22 @@ export function acceptDroppedFiles(target: HTMLElement, onText: (text: string, n
   target.addEventListener('drop', (event) => {
     event.preventDefault();
     const file = event.dataTransfer?.files[0];
-    if (file) void file.text().then((text) => onText(text, file.name));
+    if (!file) return;
+    if (isImageFile(file)) handlers.image(file, event.clientX, event.clientY);
+    else void file.text().then((text) => handlers.text(text, file.name));
   });
+}
+
+/** Opens the file picker for an image; calls `onFile` with the chosen file. */
+export function pickImageFile(onFile: (file: File) => void): void {
+  const input = document.createElement('input');
+  input.type = 'file';
+  input.accept = 'image/*';
+  input.addEventListener('change', () => {
+    const file = input.files?.[0];
+    if (file) onFile(file);
+  });
+  input.click();
 }
 
 /** The scene kept by the last visit, or null. */

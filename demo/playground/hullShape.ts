@@ -6,6 +6,11 @@ import type { Hull } from 'penumbra-gl';
  */
 export function hullWorldPoint(hull: Hull, index: number, out: [number, number]): [number, number] {
   const [lx, ly] = hull.points[index];
+  return hullLocalToWorld(hull, lx, ly, out);
+}
+
+/** Any local-space point (lx, ly) placed as the hull's points are: a sprite's corner that follows the hull. */
+export function hullLocalToWorld(hull: Hull, lx: number, ly: number, out: [number, number]): [number, number] {
   const x = (lx - hull.origin[0]) * hull.scale[0];
   const y = (ly - hull.origin[1]) * hull.scale[1];
   const cos = Math.cos(hull.rotation), sin = Math.sin(hull.rotation);

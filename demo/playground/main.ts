@@ -1,6 +1,7 @@
 import { writeScene } from 'penumbra-gl';
 import { Editor } from './Editor';
-import { acceptDroppedFiles, downloadText, pickTextFile, storedScene, storeScene } from './files';
+import { acceptDroppedFiles, downloadText, pickImageFile, pickTextFile, storedScene, storeScene } from './files';
+import { ImageTracer } from './ImageTracer';
 import { Overlay } from './Overlay';
 import { Panel } from './Panel';
 import { Playground } from './Playground';
@@ -28,6 +29,17 @@ function showError(text: string): void {
   message.hidden = false;
 }
 message.addEventListener('click', () => { message.hidden = true; });
+const tracer = new ImageTracer(playground, showError);
+
+/** Traces an image file into hulls centred on a canvas point (CSS pixels); resolves when done. */
+function traceImage(file: File, x: number, y: number): Promise<void> {
+  const [wx, wy] = playground.camera.screenToWorld(x, y, [0, 0]);
+  return tracer.trace(file, wx, wy);
+}
+/** The canvas point at the centre of the view's free part (left of the panel). */
+function viewCentre(): [number, number] {
+  return playground.camera.worldToScreen(playground.camera.center[0], playground.camera.center[1], [0, 0]);
+}
 
 /**
  * Loads a scene file's text; on a bad file shows the error (naming the bad field) and keeps the
@@ -52,13 +64,20 @@ function selectPreset(name: string): void {
   panel.showPreset(name);
 }
 
-const panel = new Panel(playground, editor, {
+const panel = new Panel(playground, editor, tracer, {
   selectPreset,
   save: () => downloadText(writeScene(playground.document()), 'scene.penumbra.json'),
   load: () => pickTextFile((text, name) => loadText(text, name, `file: ${name}`)),
+  pickImage: () => pickImageFile((file) => void traceImage(file, ...viewCentre())),
   showError,
 });
-acceptDroppedFiles(document.body, (text, name) => loadText(text, name, `file: ${name}`));
+acceptDroppedFiles(document.body, {
+  text: (text, name) => loadText(text, name, `file: ${name}`),
+  image: (file, clientX, clientY) => {
+    const bounds = gizmos.getBoundingClientRect();
+    void traceImage(file, clientX - bounds.left, clientY - bounds.top);
+  },
+});
 
 // Keep the scene across reloads: edits mark it dirty, a timer writes it, leaving the page flushes it.
 let unsaved = false;
@@ -110,4 +129,4 @@ function loop(now: number): void {
 }
 requestAnimationFrame(loop);
 
-installTestHook({ playground, editor, gizmos, stats, loadText, selectPreset, frame: () => frame(performance.now()), message });
+installTestHook({ playground, editor, tracer, gizmos, stats, loadText, selectPreset, frame: () => frame(performance.now()), message });

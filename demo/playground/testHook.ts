@@ -1,6 +1,7 @@
 import { writeScene, type FrameStats, type Hull } from 'penumbra-gl';
 import type { Editor } from './Editor';
 import { hullWorldPoint } from './hullShape';
+import type { ImageTracer } from './ImageTracer';
 import type { Playground } from './Playground';
 import { PRESETS } from './presets';
 import type { OverlayFigures, StatsOverlay } from './StatsOverlay';
@@ -37,6 +38,8 @@ export interface PlaygroundTestHook {
   debugWireframe(): boolean;
   /** Tile mode: whether it is on, and the tile size strokes paint. */
   tileMode(): { painting: boolean; tileSize: number };
+  /** What the last image trace did, as the panel shows it. */
+  traceStatus(): string;
   /** Draws a frame now and returns the gizmo overlay's alpha (0..255) at a CSS pixel point. */
   overlayAlpha(x: number, y: number): number;
 }
@@ -45,6 +48,7 @@ export interface PlaygroundTestHook {
 export interface TestHookParts {
   playground: Playground;
   editor: Editor;
+  tracer: ImageTracer;
   gizmos: HTMLCanvasElement;
   stats: StatsOverlay;
   message: HTMLElement;
@@ -61,7 +65,7 @@ declare global {
 
 /** Installs `window.playground`. */
 export function installTestHook(parts: TestHookParts): void {
-  const { playground, editor, stats, message } = parts;
+  const { playground, editor, tracer, stats, message } = parts;
   const gl = playground.gl;
   const pixel = new Uint8Array(4);
   const ids = new WeakMap<Hull, number>();
@@ -96,6 +100,7 @@ export function installTestHook(parts: TestHookParts): void {
     }),
     debugWireframe: () => playground.renderer.debug,
     tileMode: () => ({ painting: editor.painting, tileSize: editor.painter.tileSize }),
+    traceStatus: () => tracer.status,
     overlayAlpha(x, y) {
       parts.frame();
       const scale = parts.gizmos.width / playground.camera.width;

@@ -1,6 +1,7 @@
 import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { PNG } from 'pngjs';
 import type { Browser, Page } from 'puppeteer';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { SceneDocument } from '../../src/index';
@@ -28,7 +29,7 @@ function testScene(light: [number, number], range = 300): SceneDocument {
   };
 }
 
-/** The test scene without its box: painted hulls are then the only ones. */
+/** The test scene without its box: painted and traced hulls are then the only ones. */
 function emptyScene(light: [number, number], range = 300): SceneDocument {
   return { ...testScene(light, range), hulls: [] };
 }
@@ -48,6 +49,11 @@ function shape(points: [number, number][]): { area: number; bounds: [number, num
     bounds[3] = Math.max(bounds[3], y);
   });
   return { area: Math.abs(twice) / 2, bounds };
+}
+
+/** The union of bounds. */
+function unionBounds(all: [number, number, number, number][]): [number, number, number, number] {
+  return all.reduce((a, b) => [Math.min(a[0], b[0]), Math.min(a[1], b[1]), Math.max(a[2], b[2]), Math.max(a[3], b[3])]);
 }
 
 describe('playground page in Chromium', () => {
@@ -86,6 +92,33 @@ describe('playground page in Chromium', () => {
     for (const point of points.slice(1)) await page.mouse.move(...await toScreen(...point), { steps: 4 });
     await page.mouse.up({ button });
   };
+  /**
+   * Drops a generated PNG on the view at a world point, as a file dragged from the desktop would
+   * land: a disc of radius `outer` with a hole of radius `inner` (0: none) in a `size` square,
+   * `color` filled; and waits until the page has traced it (or given up on it).
+   */
+  const dropDisc = async (name: string, size: number, outer: number, inner: number, color: string) => {
+    const [x, y] = await toScreen(300, 200);
+    await page.evaluate(async (fileName, side, r0, r1, fill, cx, cy) => {
+      const canvas = new OffscreenCanvas(side, side);
+      const g = canvas.getContext('2d')!;
+      g.fillStyle = fill;
+      g.beginPath();
+      if (r0 > 0) g.arc(side / 2, side / 2, r0, 0, Math.PI * 2);
+      if (r1 > 0) g.arc(side / 2, side / 2, r1, 0, Math.PI * 2);
+      g.fill('evenodd');
+      const file = new File([await canvas.convertToBlob({ type: 'image/png' })], fileName, { type: 'image/png' });
+      dropFile(file, cx, cy);
+
+      function dropFile(dropped: File, clientX: number, clientY: number) {
+        const data = new DataTransfer();
+        data.items.add(dropped);
+        document.getElementById('gizmos')!.dispatchEvent(new DragEvent('drop', { dataTransfer: data, clientX, clientY, bubbles: true, cancelable: true }));
+      }
+    }, name, size, outer, inner, color, x, y);
+    await page.waitForFunction((fileName) => window.playground.traceStatus().startsWith(`${fileName}:`), { timeout: 20_000 }, name);
+  };
+
   beforeAll(async () => {
     server = await serveDirectory('demo-dist');
     browser = await launchChromium();
@@ -305,6 +338,67 @@ describe('playground page in Chromium', () => {
     expect(upper.bounds).toEqual([192, 128, 224, 208]);
     expect(upper.area).toBe(32 * 64 + 16 * 16);
     await page.keyboard.press('Escape');
+  });
+
+  it('traces a dropped PNG into hulls at the drop point with the disc\'s area, drawn under them', async () => {
+    expect(await load(emptyScene([100, 200], 500))).toBe(true);
+    const floor = await readPixel(300 + 35, 200);
+    // A red disc of radius 50 with a hole of radius 20, 128 pixels square: traced at its own size.
+    await dropDisc('ring.png', 128, 50, 20, '#ff0000');
+    expect(await page.evaluate(() => window.playground.errorMessage())).toBeNull();
+    expect(await page.evaluate(() => window.playground.traceStatus())).toMatch(/^ring\.png: \d+ hulls/);
+    const shapes = await hullShapes();
+    // A ring is no simple polygon: it is cut into pieces that meet exactly.
+    expect(shapes.length).toBeGreaterThanOrEqual(2);
+    const area = shapes.reduce((sum, s) => sum + s.area, 0);
+    const ring = Math.PI * (50 ** 2 - 20 ** 2);
+    // Within the tolerance (1 pixel) of the outline, on both rims.
+    expect(Math.abs(area - ring)).toBeLessThan(0.5 * 2 * Math.PI * (50 + 20));
+    expect(Math.abs(area - ring) / ring).toBeLessThan(0.03);
+    const [x0, y0, x1, y1] = unionBounds(shapes.map((s) => s.bounds));
+    expect((x0 + x1) / 2).toBeCloseTo(300, 0);
+    expect((y0 + y1) / 2).toBeCloseTo(200, 0);
+    expect(x1 - x0).toBeGreaterThan(98);
+    expect(x1 - x0).toBeLessThan(102);
+    expect(await page.evaluate(() => window.playground.debugWireframe())).toBe(true);
+    // The image under the hulls: red where the floor was grey (the wireframe off, so no line crosses it).
+    await page.evaluate(() => [...document.querySelectorAll('.lil-gui .lil-controller')]
+      .find((c) => c.querySelector('.lil-name')?.textContent === 'debug wireframe')!.querySelector('input')!.click());
+    const [r, g] = await readPixel(300 + 35, 200);
+    expect(r).toBeGreaterThan(2 * g + 20);
+    expect(Math.abs(floor[0] - floor[1])).toBeLessThan(30);
+    expect(errors).toEqual([]);
+  });
+
+  it('traces an image from the file picker, and reports an unreadable or empty image without throwing', async () => {
+    expect(await load(emptyScene([100, 200]))).toBe(true);
+    const png = new PNG({ width: 80, height: 40 });
+    png.data.fill(255);  // opaque white
+    const file = join(mkdtempSync(join(tmpdir(), 'penumbra-playground-')), 'block.png');
+    writeFileSync(file, PNG.sync.write(png));
+    const [chooser] = await Promise.all([page.waitForFileChooser(), clickButton('trace image')]);
+    await chooser.accept([file]);
+    await page.waitForFunction(() => window.playground.traceStatus().startsWith('block.png:'), { timeout: 20_000 });
+    let shapes = await hullShapes();
+    expect(shapes).toHaveLength(1);
+    // Centred in the view at one world unit per pixel: the outline runs along the pixel edges,
+    // corners cut by half a pixel and then simplified within the tolerance (1 pixel).
+    shapes[0].bounds.forEach((value, i) => expect(Math.abs(value - [260, 180, 340, 220][i])).toBeLessThanOrEqual(1));
+    expect(Math.abs(shapes[0].area - 80 * 40)).toBeLessThan(80 + 40);
+
+    await page.evaluate(() => {
+      const data = new DataTransfer();
+      data.items.add(new File(['not a picture'], 'notes.png', { type: 'image/png' }));
+      document.getElementById('gizmos')!.dispatchEvent(new DragEvent('drop', { dataTransfer: data, clientX: 200, clientY: 200, bubbles: true, cancelable: true }));
+    });
+    await page.waitForFunction(() => window.playground.traceStatus().startsWith('notes.png:'), { timeout: 20_000 });
+    expect(await page.evaluate(() => window.playground.errorMessage())).toMatch(/Could not trace notes\.png: it is not an image/);
+    await dropDisc('empty.png', 64, 0, 0, '#ff0000');
+    expect(await page.evaluate(() => window.playground.errorMessage())).toMatch(/Could not trace empty\.png: it has no opaque pixels/);
+    expect(await page.evaluate(() => window.playground.traceStatus())).toBe('empty.png: not traced');
+    shapes = await hullShapes();
+    expect(shapes).toHaveLength(1);
+    expect(errors).toEqual([]);
   });
 
   it('switches presets and keeps the scene across a reload', async () => {
