@@ -85,6 +85,10 @@ describe('playground page in Chromium', () => {
     select.selectedIndex = [...select.options].findIndex((o) => o.textContent === option);
     select.dispatchEvent(new Event('change'));
   }, name, value);
+  /** Turns tile mode on or off through its panel button (whatever an earlier test left it in). */
+  const tileMode = async (on: boolean) => {
+    if (await page.evaluate(() => window.playground.tileMode().painting) !== on) await clickButton(on ? 'paint tiles' : 'stop painting');
+  };
   /** A mouse stroke through world points, with the left button or (`right`) the right one. */
   const stroke = async (points: [number, number][], button: 'left' | 'right' = 'left') => {
     await page.mouse.move(...await toScreen(...points[0]));
@@ -97,8 +101,8 @@ describe('playground page in Chromium', () => {
    * land: a disc of radius `outer` with a hole of radius `inner` (0: none) in a `size` square,
    * `color` filled; and waits until the page has traced it (or given up on it).
    */
-  const dropDisc = async (name: string, size: number, outer: number, inner: number, color: string) => {
-    const [x, y] = await toScreen(300, 200);
+  const dropDisc = async (name: string, at: [number, number], size: number, outer: number, inner: number, color: string) => {
+    const [x, y] = await toScreen(...at);
     await page.evaluate(async (fileName, side, r0, r1, fill, cx, cy) => {
       const canvas = new OffscreenCanvas(side, side);
       const g = canvas.getContext('2d')!;
@@ -273,7 +277,9 @@ describe('playground page in Chromium', () => {
 
   it('paints a line of wall tiles into one hull covering exactly those tiles, over a faint grid, and it casts a shadow', async () => {
     expect(await load(emptyScene([100, 200]))).toBe(true);
+    await tileMode(false);
     expect(brightness(await readPixel(300, 200))).toBeGreaterThan(150);
+    await choose('tile size', '32');
     await clickButton('paint tiles');
     expect(await page.evaluate(() => window.playground.tileMode())).toEqual({ painting: true, tileSize: 32 });
     expect(await page.evaluate(() => window.playground.debugWireframe())).toBe(true);
@@ -301,7 +307,8 @@ describe('playground page in Chromium', () => {
 
   it('erases tiles with a right-drag or Shift, changing only the hulls they touch, and adopts them at another tile size', async () => {
     expect(await load(emptyScene([100, 200]))).toBe(true);
-    await clickButton('paint tiles');
+    await choose('tile size', '32');
+    await tileMode(true);
     await stroke([[208, 112], [208, 304]]);
     await stroke([[400, 112], [400, 176]]);  // a second wall: tiles (12, 3–5)
     const [wall, other] = await page.evaluate(() => window.playground.hullIds());
@@ -329,7 +336,7 @@ describe('playground page in Chromium', () => {
     expect(brightness(await readPixel(300, 150))).toBeLessThan(30);
 
     // At 16 units the 32-unit walls are adopted: a 16-unit tile under the upper piece joins it.
-    await clickButton('paint tiles');
+    await tileMode(true);
     await choose('tile size', '16');
     await stroke([[200, 200], [201, 201]]);  // tile (12, 12) at 16: 192–208 × 192–208
     shapes = await hullShapes();
@@ -342,9 +349,12 @@ describe('playground page in Chromium', () => {
 
   it('traces a dropped PNG into hulls at the drop point with the disc\'s area, drawn under them', async () => {
     expect(await load(emptyScene([100, 200], 500))).toBe(true);
-    const floor = await readPixel(300 + 35, 200);
+    await tileMode(false);
+    // Off the view's centre, so that the hulls show where it was dropped.
+    const [cx, cy] = [250, 180];
+    const floor = await readPixel(cx + 35, cy);
     // A red disc of radius 50 with a hole of radius 20, 128 pixels square: traced at its own size.
-    await dropDisc('ring.png', 128, 50, 20, '#ff0000');
+    await dropDisc('ring.png', [cx, cy], 128, 50, 20, '#ff0000');
     expect(await page.evaluate(() => window.playground.errorMessage())).toBeNull();
     expect(await page.evaluate(() => window.playground.traceStatus())).toMatch(/^ring\.png: \d+ hulls/);
     const shapes = await hullShapes();
@@ -356,15 +366,15 @@ describe('playground page in Chromium', () => {
     expect(Math.abs(area - ring)).toBeLessThan(0.5 * 2 * Math.PI * (50 + 20));
     expect(Math.abs(area - ring) / ring).toBeLessThan(0.03);
     const [x0, y0, x1, y1] = unionBounds(shapes.map((s) => s.bounds));
-    expect((x0 + x1) / 2).toBeCloseTo(300, 0);
-    expect((y0 + y1) / 2).toBeCloseTo(200, 0);
+    expect((x0 + x1) / 2).toBeCloseTo(cx, 0);
+    expect((y0 + y1) / 2).toBeCloseTo(cy, 0);
     expect(x1 - x0).toBeGreaterThan(98);
     expect(x1 - x0).toBeLessThan(102);
     expect(await page.evaluate(() => window.playground.debugWireframe())).toBe(true);
     // The image under the hulls: red where the floor was grey (the wireframe off, so no line crosses it).
     await page.evaluate(() => [...document.querySelectorAll('.lil-gui .lil-controller')]
       .find((c) => c.querySelector('.lil-name')?.textContent === 'debug wireframe')!.querySelector('input')!.click());
-    const [r, g] = await readPixel(300 + 35, 200);
+    const [r, g] = await readPixel(cx + 35, cy);
     expect(r).toBeGreaterThan(2 * g + 20);
     expect(Math.abs(floor[0] - floor[1])).toBeLessThan(30);
     expect(errors).toEqual([]);
@@ -393,7 +403,7 @@ describe('playground page in Chromium', () => {
     });
     await page.waitForFunction(() => window.playground.traceStatus().startsWith('notes.png:'), { timeout: 20_000 });
     expect(await page.evaluate(() => window.playground.errorMessage())).toMatch(/Could not trace notes\.png: it is not an image/);
-    await dropDisc('empty.png', 64, 0, 0, '#ff0000');
+    await dropDisc('empty.png', [300, 200], 64, 0, 0, '#ff0000');
     expect(await page.evaluate(() => window.playground.errorMessage())).toMatch(/Could not trace empty\.png: it has no opaque pixels/);
     expect(await page.evaluate(() => window.playground.traceStatus())).toBe('empty.png: not traced');
     shapes = await hullShapes();
