@@ -45,9 +45,10 @@ export class Hull {
   /** The points as given, `[x0, y0, …]`; their frozen pairs are made when first asked for. */
   private givenCoords!: Float64Array;
   private _points: ReadonlyArray<readonly [number, number]> | null = null;
-  private _position: readonly [number, number] = Object.freeze([0, 0] as const);
-  private _origin: readonly [number, number] = Object.freeze([0, 0] as const);
-  private _scale: readonly [number, number] = Object.freeze([1, 1] as const);
+  // Frozen, so every hull can start with the same default pairs.
+  private _position: readonly [number, number] = ZERO;
+  private _origin: readonly [number, number] = ZERO;
+  private _scale: readonly [number, number] = ONE;
   private _rotation = 0;
   private _enabled = true;
   private _layers = 1;
@@ -57,7 +58,8 @@ export class Hull {
   /** Cleaned local points: counter-clockwise for a polygon, in the given order for a polyline. */
   private localPoints!: Float64Array;
   private localTriangles: readonly number[] = [];
-  private mirroredTriangles: readonly number[] = [];
+  /** `localTriangles` for mirrored world points (see {@link Hull.updateWorld}), made when first needed. */
+  private mirroredTriangles: readonly number[] | null = null;
   private worldVersion = -1;
   private worldIsMirrored = false;
   private coarseVersion = -1;
@@ -98,7 +100,21 @@ export class Hull {
   }
   set points(points: ReadonlyArray<Vec2Like>) {
     if (!Array.isArray(points)) throw new TypeError(`Hull.points must be an array of [x, y] pairs, got ${describeValue(points)}`);
-    const coords = vec2ListCoords('Hull.points', points);
+    this.setCoords(vec2ListCoords('Hull.points', points));
+  }
+
+  /**
+   * A hull from flat, finite coordinates `[x0, y0, x1, y1, …]`, which it keeps (no copy): for the
+   * library's own builders (tile maps make thousands of hulls), without a pair per point.
+   * @internal
+   */
+  static fromCoords(coords: Float64Array, options?: HullOptions): Hull {
+    const hull = new Hull(NO_POINTS, options);
+    hull.setCoords(coords);
+    return hull;
+  }
+
+  private setCoords(coords: Float64Array): void {
     this.givenCoords = coords;
     this._points = null;
     const closed = this._closed;
@@ -108,8 +124,7 @@ export class Hull {
     this.localPoints = Float64Array.from(cleaned);
     this.localTriangles = closed && this._shapeValid ? triangulate(cleaned) : [];
     this._convex = closed && this._shapeValid && isConvexPolygon(cleaned);
-    const last = (cleaned.length >> 1) - 1;
-    this.mirroredTriangles = this.localTriangles.map((index) => last - index);
+    this.mirroredTriangles = null;
     this.worldPoints = new Float32Array(cleaned.length);
     this.pivotRadius = NaN;
     this.touch();
@@ -219,7 +234,9 @@ export class Hull {
    * @internal
    */
   get worldTriangles(): readonly number[] {
-    return this.worldIsMirrored ? this.mirroredTriangles : this.localTriangles;
+    if (!this.worldIsMirrored) return this.localTriangles;
+    const last = this.pointCount - 1;
+    return (this.mirroredTriangles ??= this.localTriangles.map((index) => last - index));
   }
 
   /**
@@ -292,6 +309,10 @@ export class Hull {
     this.version++;
   }
 }
+
+const ZERO = Object.freeze([0, 0] as const);
+const ONE = Object.freeze([1, 1] as const);
+const NO_POINTS: ReadonlyArray<Vec2Like> = Object.freeze([]);
 
 function reversePoints(coords: number[]): void {
   const n = coords.length >> 1;

@@ -102,12 +102,13 @@ export function hullsFromAlpha(image: AlphaImage, options: HullsFromAlphaOptions
   assertBoolean(`${NAME} options.flipY`, flipY);
 
   const outlines = alphaOutlines(data, width, height, threshold, { tolerance, maxPoints, minArea });
-  return outlines.map((coords) => {
-    const points: [number, number][] = [];
-    for (let i = 0; i < coords.length; i += 2) {
-      points.push([flipX ? width - coords[i] : coords[i], flipY ? height - coords[i + 1] : coords[i + 1]]);
+  return outlines.map((outline) => {
+    const coords = new Float64Array(outline.length);
+    for (let i = 0; i < outline.length; i += 2) {
+      coords[i] = flipX ? width - outline[i] : outline[i];
+      coords[i + 1] = flipY ? height - outline[i + 1] : outline[i + 1];
     }
-    return new Hull(points, placement);
+    return Hull.fromCoords(coords, placement);
   });
 }
 

@@ -203,11 +203,12 @@ export class TileHulls<T = unknown> {
     const outlines = traceOutlines(labels, bw, bh, count);
     const slotOf = new Int32Array(count), added: Hull[] = [];
     for (let r = 0; r < count; r++) {
-      const outline = outlines[r], points: Array<[number, number]> = [];
+      const outline = outlines[r], coords = new Float64Array(outline.length);
       for (let k = 0; k < outline.length; k += 2) {
-        points.push([this.originX + (outline[k] + x0) * this.tileWidth, this.originY + (outline[k + 1] + y0) * this.tileHeight]);
+        coords[k] = this.originX + (outline[k] + x0) * this.tileWidth;
+        coords[k + 1] = this.originY + (outline[k + 1] + y0) * this.tileHeight;
       }
-      const hull = new Hull(points);
+      const hull = Hull.fromCoords(coords);
       const slot = this.freeSlots.pop() ?? this.slots.length;
       this.slots[slot] = hull;
       slotOf[r] = slot;
