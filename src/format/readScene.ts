@@ -57,16 +57,17 @@ export function readScene(input: string | unknown): SceneDocument {
 }
 
 function readDocument(input: unknown): SceneDocument {
-  const root = readObject(input, '', DOCUMENT_FIELDS);
-  if (root.value.format !== SCENE_FORMAT) {
-    throw new SceneFormatError('format', `expected "${SCENE_FORMAT}", got ${describeValue(root.value.format)}`);
+  // The version decides which fields are allowed, so it is read before the field check.
+  const unchecked = readObject(input, '');
+  if (unchecked.value.format !== SCENE_FORMAT) {
+    throw new SceneFormatError('format', `expected "${SCENE_FORMAT}", got ${describeValue(unchecked.value.format)}`);
   }
-  const version = numberField(root, 'version');
+  const version = numberField(unchecked, 'version');
   if (!Object.hasOwn(VERSION_FIELDS, version)) {
     throw new SceneFormatError('version', `unsupported version ${version} (this reader knows versions 1 and ${SCENE_FORMAT_VERSION})`);
   }
   const fields = VERSION_FIELDS[version];
-  readObject(input, '', fields.document);
+  const root = readObject(input, '', fields.document);
   const hulls = readList(root.value.hulls, 'hulls', (value, path) => readHull(value, path, fields.hull));
   const lights = readList(root.value.lights, 'lights', (value, path) => readLight(value, path, fields.light, hulls.length));
   return {
