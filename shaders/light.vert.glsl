@@ -11,7 +11,7 @@ uniform vec2 u_quad[3]; // the light's quad: a corner and the two edge vectors (
 uniform vec3 u_light; // position xy, range
 uniform vec3 u_lightColor; // colour × intensity
 uniform vec4 u_shadow; // position xy, disk radius, row of the light's shadow bins
-uniform float u_illuminated; // 1: the light lights the hulls themselves, 0: they stay dark
+uniform float u_shadowType; // how the light treats the inside of hulls: SHADOW_SOLID, … (src/geometry/shadowLayout.ts)
 uniform vec3 u_shadowKept; // the fraction of each channel a pixel in full shadow keeps (Light.writeShadowKept)
 
 out vec2 v_fromLight;
@@ -19,7 +19,7 @@ out vec2 v_uv;
 out vec2 v_world;
 flat out vec3 v_color;
 flat out vec4 v_shadow;
-flat out float v_illuminated;
+flat out float v_shadowType;
 flat out vec3 v_shadowKept;
 
 void main() {
@@ -29,7 +29,7 @@ void main() {
   v_world = world;
   v_color = u_lightColor;
   v_shadow = u_shadow;
-  v_illuminated = u_illuminated;
+  v_shadowType = u_shadowType;
   v_shadowKept = u_shadowKept;
   gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
   // Depth ½ whatever the view: the quadrature pass tests it against the main pass's marks (LightPass).

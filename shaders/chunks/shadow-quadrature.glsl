@@ -94,7 +94,7 @@ float nextBreak(float after, float limit) {
     ivec2 records = recordsOfEntry(i);
     if (records.x < 0) break;
     for (int record = records.x; record <= records.y; record++) {
-      loadRecord(record);
+      if (!loadRecord(record)) continue;
       next = nextRecordBreak(after, next);
     }
   }
@@ -133,7 +133,7 @@ float hiddenAlong(float angle) {
     ivec2 records = recordsOfEntry(i);
     if (records.x < 0) break;
     for (int record = records.x; record <= records.y; record++) {
-      loadRecord(record);
+      if (!loadRecord(record)) continue;
       nearest = min(nearest, entryDistance(direction));
     }
   }

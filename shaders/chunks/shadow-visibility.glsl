@@ -23,15 +23,20 @@
 // darker, never lighter), and for the closed form; the quadrature is exact between breaks up to its
 // order (worst error of the random-scene test, 1,020 scenes: 0.084 at one pixel, 0.003 at p99).
 //
+// A pixel inside a hull is dark for a Solid light and lit for an Illuminated one. For an Occluded
+// light it takes a second pass, lit as from inside that hull (the holder): of the holder's records,
+// only their outline edges facing the pixel hide anything (see seenFromHolder).
+//
 // Needs: v_world (the pixel's world position), v_shadow (light centre xy, disk radius, bin row) and
-// v_illuminated (1: hulls themselves are lit, 0: dark).
+// v_shadowType (SHADOW_SOLID, SHADOW_ILLUMINATED or SHADOW_OCCLUDED).
 uniform highp sampler2D u_records;
+uniform highp sampler2D u_recordTags;
 uniform highp sampler2D u_entries;
 uniform highp sampler2D u_bins;
 
 in vec2 v_world;
 flat in vec4 v_shadow;
-flat in float v_illuminated;
+flat in float v_shadowType;
 
 const float PI = 3.14159265;
 const int MAX_MIDDLES = 4;
@@ -71,13 +76,70 @@ vec4 ys;
 vec4 nextXs;
 vec4 nextYs;
 
-void loadRecord(int record) {
+void loadRecordPoints(int record) {
   vec4 first = texelAt(u_records, record * 2) - vec4(pixel, pixel);
   vec4 second = texelAt(u_records, record * 2 + 1) - vec4(pixel, pixel);
   xs = vec4(first.x, first.z, second.x, second.z);
   ys = vec4(first.y, first.w, second.y, second.w);
   nextXs = xs.yzwx;
   nextYs = ys.yzwx;
+}
+
+// The record's tag (src/geometry/shadowLayout.ts, recordTag): its hull's first record and its
+// outline edges.
+int tagOf(int record) {
+  return int(texelFetch(u_recordTags, ivec2(record % RECORDS_PER_ROW, record / RECORDS_PER_ROW), 0).x);
+}
+
+int hullOf(int record) {
+  return tagOf(record) >> TAG_EDGE_BITS;
+}
+
+// A box around the segment a–b (offsets from the pixel) is what the segment hides: at least 2^-10
+// world units wide (as ShadowGeometry's boxes of open hulls) and 2^-19 of the coordinates'
+// magnitude, so that rounding cannot close it (a record must have an inside).
+void loadSegmentBox(vec2 a, vec2 b) {
+  vec2 along = b - a;
+  vec2 magnitude = abs(pixel) + max(abs(a), abs(b));
+  float halfWidth = max(0.0009765625, max(magnitude.x, magnitude.y) * 1.9073486e-6);
+  vec2 normal = vec2(-along.y, along.x) * (halfWidth * inversesqrt(max(dot(along, along), 1e-30)));
+  xs = vec4(a.x - normal.x, b.x - normal.x, b.x + normal.x, a.x + normal.x);
+  ys = vec4(a.y - normal.y, b.y - normal.y, b.y + normal.y, a.y + normal.y);
+  nextXs = xs.yzwx;
+  nextYs = ys.yzwx;
+}
+
+// For an Occluded light's pixel inside a hull: the first record of that hull (the holder), while
+// the pixel is lit as from inside it; -1 otherwise.
+int holderFirst = -1;
+
+// What a loaded record of the holder hides from a pixel inside it: what its outline edges facing
+// the pixel hide. A segment from the pixel leaves the holder once; crossing such an edge it enters
+// the holder again, and what lies beyond is hidden. Its other edges are the way out or the hull's
+// inner diagonals, and hide nothing. So the record stays when every edge it faces is on the outline
+// (a record hides what the edges it faces hide), becomes a box around the one that is when it faces
+// two (the holder is concave, as a convex one faces the pixel with no outline edge, and its
+// records are triangles, which face at most two), and hides nothing (false) when it faces none.
+// Records of other hulls stay.
+bool seenFromHolder(int record) {
+  int tag = tagOf(record);
+  if ((tag >> TAG_EDGE_BITS) != holderFirst) return true;
+  ivec4 edgeBits = ivec4(1, 2, 4, 8);
+  bvec4 outline = notEqual(ivec4(tag) & edgeBits, ivec4(0));
+  bvec4 facing = lessThan(xs * nextYs - ys * nextXs, vec4(0.0));
+  bvec4 hiding = bvec4(vec4(facing) * vec4(outline));
+  if (!any(hiding)) return false;
+  if (hiding == facing) return true;
+  int k = hiding.x ? 0 : (hiding.y ? 1 : (hiding.z ? 2 : 3));
+  loadSegmentBox(vec2(xs[k], ys[k]), vec2(nextXs[k], nextYs[k]));
+  return true;
+}
+
+// Loads record `record` as it hides the disk from the pixel (the points as offsets from the
+// pixel); false when it hides nothing (see seenFromHolder).
+bool loadRecord(int record) {
+  loadRecordPoints(record);
+  return holderFirst < 0 || seenFromHolder(record);
 }
 
 // Whether the pixel lies inside the loaded record or on its outline: left of or on every edge
@@ -290,7 +352,17 @@ void addPastRecord(int record, ivec2 entryRecords) {
   pastRecord = record;
 }
 
-// Sets the pixel, the light and the empty union, and finds the pixel's bin.
+// Empties the union and the directions seen past.
+void clearUnion() {
+  lowCover = -1.0;
+  highCover = 1.0;
+  middleCount = 0;
+  pastFrom = PI;
+  pastTo = -PI;
+  pastCount = 0;
+}
+
+// Sets the pixel and the light, and finds the pixel's bin.
 void beginShadow() {
   pixel = v_world;
   centre = v_shadow.xy;
@@ -300,11 +372,6 @@ void beginShadow() {
   toLight = c / radius;
   distanceInRadii = distanceToLight / radius;
   insideDisk = distanceInRadii <= 1.0;
-  lowCover = -1.0;
-  highCover = 1.0;
-  middleCount = 0;
-  pastFrom = PI;
-  pastTo = -PI;
   int bin = min(int(pseudoAngle(-c) * (float(BIN_COUNT) / 4.0)), BIN_COUNT - 1);
   vec4 binEntries = texelFetch(u_bins, ivec2(bin, int(v_shadow.w)), 0);
   binFirst = int(binEntries.x);
@@ -312,14 +379,15 @@ void beginShadow() {
   bucketWidth = binEntries.z;
 }
 
-// The fraction of the disk visible from the pixel. One pass over the pixel's bin merges the records
-// in front into the union, stopping at the first hull farther from the light than the pixel; where
-// records are seen past, the quadrature adds what they hide.
-float shadowVisibility() {
-  beginShadow();
-  bool illuminated = v_illuminated > 0.5;
-  pastCount = 0;
+// The fraction of the disk visible from the pixel, in one pass over the pixel's bin (see
+// shadowVisibility); `heldBy` is the first record of the hull found holding the pixel, or -1.
+float visibleFraction(int shadowType, out int heldBy) {
+  heldBy = -1;
+  clearUnion();
   seekingHolders = false;
+  // Once the union is whole, a hull holding the pixel is left to find only in an Illuminated or
+  // Occluded light's first pass.
+  bool seeksHolder = shadowType != SHADOW_SOLID && holderFirst < 0;
   for (int i = 0; i < binCount; i++) {
     ivec2 records = recordsOfEntry(i);
     if (records.x < 0) break;
@@ -327,15 +395,19 @@ float shadowVisibility() {
 #ifdef SHADOW_STATISTICS
       visitedRecords++;
 #endif
-      loadRecord(record);
+      if (!loadRecord(record)) continue;
       float low, high;
       int kind = classifyRecord(low, high);
-      if (kind == HOLDS_PIXEL) return illuminated ? 1.0 : 0.0;
+      if (kind == HOLDS_PIXEL) {
+        // Lit as from inside the holder, the pixel passes through the other hulls' records holding it.
+        if (holderFirst >= 0) continue;
+        heldBy = hullOf(record);
+        return shadowType == SHADOW_SOLID ? 0.0 : 1.0;
+      }
       if (kind == IN_FRONT) insertInterval(low, high);
       if (kind == SEEN_PAST) addPastRecord(record, records);
     }
-    // Whole: only an Illuminated light's hull pixels are left to find.
-    if (coverIsWhole() && !illuminated) return 0.0;
+    if (coverIsWhole() && !seeksHolder) return 0.0;
     seekingHolders = coverIsWhole();
   }
   if (coverIsWhole()) return 0.0;
@@ -348,4 +420,22 @@ float shadowVisibility() {
   sweptPixel = pastCount > 0 && !closedForm;
 #endif
   return clamp(1.0 - hidden, 0.0, 1.0);
+}
+
+// The fraction of the disk visible from the pixel. One pass over the pixel's bin merges the records
+// in front into the union, stopping at the first hull farther from the light than the pixel; where
+// records are seen past, the quadrature adds what they hide. An Occluded light's pixel found inside
+// a hull takes a second pass as from inside it (one call site in a loop: the pass is inlined once).
+float shadowVisibility() {
+  beginShadow();
+  int shadowType = int(v_shadowType + 0.5);
+  holderFirst = -1;
+  float visible = 1.0;
+  for (int pass = 0; pass < 2; pass++) {
+    int heldBy;
+    visible = visibleFraction(shadowType, heldBy);
+    if (heldBy < 0 || shadowType != SHADOW_OCCLUDED) break;
+    holderFirst = heldBy;
+  }
+  return visible;
 }

@@ -105,8 +105,8 @@ export interface SceneLightBase {
   rotation: number;
   /** Optional, default `[0.5, 0.5]`. */
   origin: [number, number];
-  /** `"solid"` or `"illuminated"`. Optional, default `"illuminated"`. */
-  shadowType: 'solid' | 'illuminated';
+  /** `"solid"`, `"illuminated"` or (version 2) `"occluded"`. Optional, default `"illuminated"`. */
+  shadowType: 'solid' | 'illuminated' | 'occluded';
   /** Optional, default `true`. */
   enabled: boolean;
   /** Optional, default `true`. */

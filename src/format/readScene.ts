@@ -18,18 +18,21 @@ const LIGHT_FIELDS_V1 = [
   'kind', 'position', 'range', 'radius', 'color', 'intensity', 'rotation', 'origin', 'shadowType', 'enabled',
   'castsShadows', 'ignoredHulls',
 ];
-/** The fields hulls and lights (besides their kind's) may have, per version this reader knows. */
+const SHADOW_TYPES_V1 = ['solid', 'illuminated'] as const;
+/** The fields hulls and lights (besides their kind's) may have, and the shadow types, per version this reader knows. */
 interface VersionFields {
   readonly document: readonly string[];
   readonly hull: readonly string[];
   readonly light: readonly string[];
+  readonly shadowTypes: readonly SceneLightBase['shadowType'][];
 }
 const VERSION_FIELDS: Readonly<Record<number, VersionFields>> = {
-  1: { document: DOCUMENT_FIELDS.filter((field) => field !== 'look'), hull: HULL_FIELDS_V1, light: LIGHT_FIELDS_V1 },
+  1: { document: DOCUMENT_FIELDS.filter((field) => field !== 'look'), hull: HULL_FIELDS_V1, light: LIGHT_FIELDS_V1, shadowTypes: SHADOW_TYPES_V1 },
   [SCENE_FORMAT_VERSION]: {
     document: DOCUMENT_FIELDS,
     hull: [...HULL_FIELDS_V1, 'closed', 'layers'],
     light: [...LIGHT_FIELDS_V1, 'shadowLayers', 'shadowColor', 'shadowStrength'],
+    shadowTypes: [...SHADOW_TYPES_V1, 'occluded'],
   },
 };
 const KIND_FIELDS = { point: [], spot: ['coneAngle', 'coneDecay'], textured: ['cookie', 'size'] } as const;
@@ -69,7 +72,7 @@ function readDocument(input: unknown): SceneDocument {
   const fields = VERSION_FIELDS[version];
   const root = readObject(input, '', fields.document);
   const hulls = readList(root.value.hulls, 'hulls', (value, path) => readHull(value, path, fields.hull));
-  const lights = readList(root.value.lights, 'lights', (value, path) => readLight(value, path, fields.light, hulls.length));
+  const lights = readList(root.value.lights, 'lights', (value, path) => readLight(value, path, fields, hulls.length));
   return {
     format: SCENE_FORMAT,
     version: SCENE_FORMAT_VERSION,
@@ -129,12 +132,12 @@ function readHull(value: unknown, path: string, fields: readonly string[]): Scen
   };
 }
 
-function readLight(value: unknown, path: string, fields: readonly string[], hullCount: number): SceneLight {
+function readLight(value: unknown, path: string, fields: VersionFields, hullCount: number): SceneLight {
   // The kind decides which extra fields are allowed, so it is read before the field check.
   const kindFields = readObject(value, path);
   const kind = choiceField(kindFields, 'kind', LIGHT_KINDS);
-  const light = readObject(value, path, [...fields, ...KIND_FIELDS[kind]]);
-  const base = readLightBase(light, hullCount);
+  const light = readObject(value, path, [...fields.light, ...KIND_FIELDS[kind]]);
+  const base = readLightBase(light, fields.shadowTypes, hullCount);
   switch (kind) {
     case 'point':
       return { kind, ...base };
@@ -153,7 +156,7 @@ function readLight(value: unknown, path: string, fields: readonly string[], hull
   }
 }
 
-function readLightBase(light: Fields, hullCount: number): SceneLightBase {
+function readLightBase(light: Fields, shadowTypes: VersionFields['shadowTypes'], hullCount: number): SceneLightBase {
   return {
     position: vec2Field(light, 'position'),
     range: numberField(light, 'range', 100, 0),
@@ -162,7 +165,7 @@ function readLightBase(light: Fields, hullCount: number): SceneLightBase {
     intensity: numberField(light, 'intensity', 1, 0),
     rotation: numberField(light, 'rotation', 0),
     origin: vec2Field(light, 'origin', [0.5, 0.5]),
-    shadowType: choiceField(light, 'shadowType', ['solid', 'illuminated'] as const, 'illuminated'),
+    shadowType: choiceField(light, 'shadowType', shadowTypes, 'illuminated'),
     enabled: booleanField(light, 'enabled', true),
     castsShadows: booleanField(light, 'castsShadows', true),
     ignoredHulls: readIgnoredHulls(light, hullCount),

@@ -1,5 +1,5 @@
 import type { Hull } from '../scene/Hull';
-import { RECORD_FLOATS, RECORD_POINTS, RECORDS_PER_ROW } from './shadowLayout';
+import { RECORD_FLOATS, RECORD_POINTS, RECORDS_PER_ROW, recordTag } from './shadowLayout';
 
 /**
  * The world-space data of every hull, packed for the GPU and independent of any light: each hull's
@@ -15,6 +15,8 @@ import { RECORD_FLOATS, RECORD_POINTS, RECORDS_PER_ROW } from './shadowLayout';
 export class ShadowGeometry {
   /** {@link RECORD_FLOATS} floats per record, whole rows of {@link RECORDS_PER_ROW} records. */
   records = new Float32Array(0);
+  /** Per record, its tag (`recordTag`): its hull and its outline edges; rows as in `records`. */
+  recordTags = new Float32Array(0);
   /** Per record: its number of points (3..{@link RECORD_POINTS}). */
   recordPointCounts = new Uint8Array(0);
   recordCount = 0;
@@ -125,6 +127,7 @@ export class ShadowGeometry {
       const wanted = Math.max(records, Math.ceil(this.recordPointCounts.length * 1.5));
       const rows = Math.ceil(wanted / RECORDS_PER_ROW);
       this.records = new Float32Array(rows * RECORDS_PER_ROW * RECORD_FLOATS);
+      this.recordTags = new Float32Array(rows * RECORDS_PER_ROW);
       this.recordPointCounts = new Uint8Array(rows * RECORDS_PER_ROW);
       this.dirtyRows = new Uint8Array(rows);
     }
@@ -152,14 +155,18 @@ export class ShadowGeometry {
     this.validEdgeCount = 0;
   }
 
-  /** Writes the hull's records (see {@link recordCountOf}) and copies its world bounds. */
+  /** Writes the hull's records (see {@link recordCountOf}) and tags, and copies its world bounds. */
   private writeHull(hull: Hull, index: number): void {
     const world = hull.worldPoints, count = hull.pointCount;
-    let record = this.firstRecords[index];
+    const first = this.firstRecords[index];
+    let record = first;
     if (!hull.closed) {
-      for (let i = 0; i + 1 < count; i++, record++) this.writeSegmentBox(record, world, i);
+      for (let i = 0; i + 1 < count; i++, record++) {
+        this.writeSegmentBox(record, world, i);
+        this.recordTags[record] = recordTag(first, 0);
+      }
     } else if (hull.convex) {
-      // A fan: the first record takes points 0..7, each next one point 0, the previous record's last
+      // A fan: the first record takes points 0..3, each next one point 0, the previous record's last
       // point and up to RECORD_POINTS - 2 new ones.
       this.startRecord(record);
       for (let i = 0; i < Math.min(count, RECORD_POINTS); i++) this.addPoint(record, world, i);
@@ -168,15 +175,20 @@ export class ShadowGeometry {
         this.addPoint(record, world, 0);
         for (let i = last; i < Math.min(count, last + RECORD_POINTS - 1); i++) this.addPoint(record, world, i);
       }
+      for (let k = first; k <= record; k++) this.recordTags[k] = recordTag(first, this.fanOutlineEdges(k, k === first, k === record));
     } else {
       const triangles = hull.worldTriangles;
       for (let k = 0; k < triangles.length; k += 3, record++) {
-        this.startRecord(record);
-        this.addPoint(record, world, triangles[k]);
         // Records have positive area: the triangulation keeps the hull's winding, but say so here.
         const flip = signedAreaOfTriangle(world, triangles[k], triangles[k + 1], triangles[k + 2]) < 0;
-        this.addPoint(record, world, triangles[k + (flip ? 2 : 1)]);
-        this.addPoint(record, world, triangles[k + (flip ? 1 : 2)]);
+        const a = triangles[k], b = triangles[k + (flip ? 2 : 1)], c = triangles[k + (flip ? 1 : 2)];
+        this.startRecord(record);
+        this.addPoint(record, world, a);
+        this.addPoint(record, world, b);
+        this.addPoint(record, world, c);
+        // Edges a–b, b–c, then c–c (no length) and c–a.
+        const outline = (isOutlineEdge(a, b, count) ? 1 : 0) | (isOutlineEdge(b, c, count) ? 2 : 0) | (isOutlineEdge(c, a, count) ? 8 : 0);
+        this.recordTags[record] = recordTag(first, outline);
       }
     }
     const from = hull.worldBounds, to = this.worldBounds;
@@ -217,6 +229,20 @@ export class ShadowGeometry {
     this.recordPointCounts[record] = RECORD_POINTS;
   }
 
+  /**
+   * The outline edges of a convex hull's fan record: all of its edges of some length but the
+   * diagonals to the apex (point 0), which close every record but the last and open every one but
+   * the first.
+   */
+  private fanOutlineEdges(record: number, isFirst: boolean, isLast: boolean): number {
+    const points = this.recordPointCounts[record];
+    let mask = 0;
+    for (let k = 0; k < points - 1; k++) mask |= 1 << k;
+    if (!isFirst) mask &= ~1;
+    if (isLast) mask |= 1 << (RECORD_POINTS - 1);
+    return mask;
+  }
+
   private startRecord(record: number): void {
     this.recordPointCounts[record] = 0;
   }
@@ -251,6 +277,12 @@ export function recordCountOf(hull: Hull): number {
   if (!hull.closed) return hull.edgeCount;
   if (hull.convex) return 1 + Math.max(0, Math.ceil((hull.edgeCount - RECORD_POINTS) / (RECORD_POINTS - 2)));
   return hull.worldTriangles.length / 3;
+}
+
+/** Whether points `a` and `b` of a closed outline of `count` points are neighbours on it. */
+function isOutlineEdge(a: number, b: number, count: number): boolean {
+  const step = Math.abs(a - b);
+  return step === 1 || step === count - 1;
 }
 
 function signedAreaOfTriangle(world: Float32Array, a: number, b: number, c: number): number {

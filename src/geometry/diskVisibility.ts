@@ -193,6 +193,26 @@ export class DiskVisibility {
   }
 
   /**
+   * Adds the edges of the closed polygon `coords` (the first `count` points, either winding) that
+   * face the point — those with the point strictly on their outer side — for a point inside the
+   * polygon that is lit as from inside it (`ShadowType.Occluded`): a segment from the point leaves
+   * the polygon once, and only crossing a facing edge does it enter again.
+   */
+  addFacingEdges(coords: ArrayLike<number>, count: number): void {
+    if (this.hidden) return;
+    let twiceArea = 0;
+    for (let i = 0, j = count - 1; i < count; j = i++) twiceArea += coords[2 * j] * coords[2 * i + 1] - coords[2 * i] * coords[2 * j + 1];
+    const px = this.px, py = this.py;
+    for (let i = 0; i < count; i++) {
+      const j = i + 1 === count ? 0 : i + 1;
+      const ax = coords[2 * i], ay = coords[2 * i + 1];
+      // Positive: the point left of a → b, inside for a counter-clockwise outline.
+      const side = (coords[2 * j] - ax) * (py - ay) - (coords[2 * j + 1] - ay) * (px - ax);
+      if (side * twiceArea < 0) this.keepEdge(coords, i, j);
+    }
+  }
+
+  /**
    * The shortcut for the convex piece of points `first .. first + count − 1` of `coords` (see the
    * class comment), from outside the disk: true when it is settled (its wedge misses the disk's
    * directions, or it lies in front of the disk and its wedge is now covered), false when its edges

@@ -1,3 +1,5 @@
+import type { ShadowType } from '../scene/lights';
+
 /**
  * The GPU layouts of the shadow data, written by `ShadowGeometry` and `ShadowBins` and read by
  * shaders/chunks/shadow-visibility.glsl, which receives these constants as defines
@@ -17,6 +19,10 @@
  * - **Bins** (per frame): one row per shadowed light, {@link BIN_COUNT} texels; bin `k` holds the
  *   directions from the light's centre whose pseudo-angle (see `pseudoAngle`) lies in
  *   `[4k / N, 4(k + 1) / N)`: `(first entry, entry count, distance bucket width, 0)`.
+ *
+ * - **Record tags** (one R32F texel per record, {@link RECORDS_PER_ROW} per row like the records,
+ *   changed with them): which hull a record belongs to and which of its edges lie on that hull's
+ *   outline ({@link recordTag}); what an Occluded light needs for a pixel inside a hull.
  *
  * Records are found by number: floats hold integers exactly below 2^24, so a scene may have up to
  * 2^24 / (2 × ENTRY_MAX_RECORDS) records.
@@ -45,6 +51,23 @@ export function entryCode(first: number, count: number, fan: boolean): number {
   return (first * ENTRY_MAX_RECORDS + count - 1) * 2 + (fan ? 1 : 0);
 }
 
+/** Bits of a record tag that flag its outline edges: one per edge, edge k from point k to k + 1. */
+export const TAG_EDGE_BITS = RECORD_POINTS;
+/**
+ * A record's tag: the first record of its hull (all a hull's records share it) and a mask of its
+ * edges that lie on the hull's outline (a fan's or a triangulation's inner diagonals do not, nor do
+ * an open hull's box sides, nor an edge of no length), as `hullFirst × 2^TAG_EDGE_BITS + mask`.
+ */
+export function recordTag(hullFirst: number, outlineEdges: number): number {
+  return hullFirst * 2 ** TAG_EDGE_BITS + outlineEdges;
+}
+
+/**
+ * How a light treats the inside of hulls, as the shader's codes (see `ShadowType`): 0 dark, 1 lit,
+ * 2 lit where the light reaches it.
+ */
+export const SHADOW_TYPE_CODES = { solid: 0, illuminated: 1, occluded: 2 } as const satisfies Record<ShadowType, number>;
+
 /** Angular bins per light: the width of the bins texture. */
 export const BIN_COUNT = 32;
 /** Floats per bin. */
@@ -61,4 +84,7 @@ export function pseudoAngle(x: number, y: number): number {
 }
 
 /** The layout constants the shader reads, as `#define`s. */
-export const SHADOW_DEFINES: Readonly<Record<string, number>> = { RECORD_TEXELS, TEXTURE_WIDTH, BIN_COUNT, ENTRY_MAX_RECORDS };
+export const SHADOW_DEFINES: Readonly<Record<string, number>> = {
+  RECORD_TEXELS, TEXTURE_WIDTH, RECORDS_PER_ROW, BIN_COUNT, ENTRY_MAX_RECORDS, TAG_EDGE_BITS,
+  SHADOW_SOLID: SHADOW_TYPE_CODES.solid, SHADOW_ILLUMINATED: SHADOW_TYPE_CODES.illuminated, SHADOW_OCCLUDED: SHADOW_TYPE_CODES.occluded,
+};

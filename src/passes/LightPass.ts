@@ -3,7 +3,8 @@ import type { LightDraw } from '../geometry/FramePlan';
 import { createPrograms, deletePrograms, type Program, type ProgramSources } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import type { LightShapes } from '../gl/LightShapes';
-import { ShadowType, Spotlight, TexturedLight, type LightKind } from '../scene/lights';
+import { SHADOW_TYPE_CODES } from '../geometry/shadowLayout';
+import { Spotlight, TexturedLight, type LightKind } from '../scene/lights';
 import { shaderSources, type LightStages } from './shaders';
 import { ShadowUnits } from './ShadowTextures';
 
@@ -53,6 +54,7 @@ export class LightPass {
       gl.useProgram(program.handle);
       const uniforms = program.uniforms;
       if (uniforms.u_records) gl.uniform1i(uniforms.u_records, ShadowUnits.records);
+      if (uniforms.u_recordTags) gl.uniform1i(uniforms.u_recordTags, ShadowUnits.recordTags);
       if (uniforms.u_bins) gl.uniform1i(uniforms.u_bins, ShadowUnits.bins);
       if (uniforms.u_entries) gl.uniform1i(uniforms.u_entries, ShadowUnits.entries);
       if (uniforms.u_cookie) gl.uniform1i(uniforms.u_cookie, COOKIE_UNIT);
@@ -113,7 +115,7 @@ export class LightPass {
     gl.uniform3fv(uniforms.u_light, this.lightPositionAndRange);
     if (uniforms.u_shadow) {
       gl.uniform4fv(uniforms.u_shadow, this.shadow);
-      gl.uniform1f(uniforms.u_illuminated, light.shadowType === ShadowType.Illuminated ? 1 : 0);
+      gl.uniform1f(uniforms.u_shadowType, SHADOW_TYPE_CODES[light.shadowType]);
       gl.uniform3fv(uniforms.u_shadowKept, this.shadowKept);
     }
     if (light instanceof Spotlight) {

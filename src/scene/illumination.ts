@@ -48,8 +48,8 @@ export interface LightIllumination {
   /**
    * Fraction of the light's disk visible from the point past the hulls that shadow it, 0..1 (the
    * exact soft shadow; 0 or 1 for a light of radius 0). Inside a hull it is 0 for a
-   * {@link ShadowType.Solid} light and 1 for an {@link ShadowType.Illuminated} one; 1 for a light
-   * with `castsShadows` off.
+   * {@link ShadowType.Solid} light, 1 for an {@link ShadowType.Illuminated} one and the part of the
+   * disk that reaches it for an {@link ShadowType.Occluded} one; 1 for a light with `castsShadows` off.
    */
   visibility: number;
   /**
@@ -295,12 +295,15 @@ export class IlluminationQuery {
     }
     box[0] = box[2] = x;
     box[1] = box[3] = y;
-    for (let i = 0, found = grid.search(box); i < found; i++) {
+    const occluded = light.shadowType === ShadowType.Occluded;
+    let holder = -1;
+    for (let i = 0, found = grid.search(box); i < found && holder < 0; i++) {
       const index = grid.found[i];
-      if (this.shadows(light, hulls, index) && this.holds(hulls[index], index, values)) {
-        values[VISIBILITY] = light.shadowType === ShadowType.Illuminated ? 1 : 0;
-        return true;
-      }
+      if (this.shadows(light, hulls, index) && this.holds(hulls[index], index, values)) holder = index;
+    }
+    if (holder >= 0 && !occluded) {
+      values[VISIBILITY] = light.shadowType === ShadowType.Illuminated ? 1 : 0;
+      return true;
     }
     const visibility = this.visibility, input = visibility.input;
     input[0] = x;
@@ -314,7 +317,9 @@ export class IlluminationQuery {
       const index = grid.found[i];
       if (!this.shadows(light, hulls, index) || !this.nearSegment(index)) continue;
       const hull = hulls[index], flag = flags[index];
-      visibility.addOutline(hull.worldPoints, hull.pointCount, (flag & CLOSED) !== 0, (flag & CONVEX) !== 0);
+      // Lit as from inside the holder (Occluded), the point passes through the other hulls holding it.
+      if (index === holder) visibility.addFacingEdges(hull.worldPoints, hull.pointCount);
+      else if (holder < 0 || !this.holds(hull, index, values)) visibility.addOutline(hull.worldPoints, hull.pointCount, (flag & CLOSED) !== 0, (flag & CONVEX) !== 0);
     }
     visibility.computeFraction();
     values[VISIBILITY] = visibility.output[0];

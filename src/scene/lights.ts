@@ -10,6 +10,16 @@ export const ShadowType = {
   Solid: 'solid',
   /** The light lights the hulls themselves (their outline is lit, only what lies behind them is shadowed). */
   Illuminated: 'illuminated',
+  /**
+   * The light lights the hulls only where it reaches them: a hull pixel sees the part of the disk
+   * that neither another hull nor its own hull hides, with the same soft edge as shadows on the
+   * floor. A segment from a pixel inside a hull leaves that hull once; the hull hides what lies
+   * beyond a place where the segment enters it again, so a convex hull never shades itself and a
+   * concave one shades its own parts behind its nearer walls (the thesis' occluded hulls, §4.2).
+   * Where two hulls overlap, a pixel inside both is lit as through the first one found and the part
+   * of the other that holds it.
+   */
+  Occluded: 'occluded',
 } as const;
 /** One of the {@link ShadowType} values. */
 export type ShadowType = (typeof ShadowType)[keyof typeof ShadowType];
@@ -30,7 +40,7 @@ export interface LightOptions {
   rotation?: number;
   /** Normalised pivot (0..1) of the light's quad that sits at `position`. Default `[0.5, 0.5]`. */
   origin?: Vec2Like;
-  /** {@link ShadowType.Solid} or {@link ShadowType.Illuminated}. Default `Illuminated`. */
+  /** {@link ShadowType.Solid}, {@link ShadowType.Illuminated} or {@link ShadowType.Occluded}. Default `Illuminated`. */
   shadowType?: ShadowType;
   /** A disabled light is not drawn. Default `true`. */
   enabled?: boolean;

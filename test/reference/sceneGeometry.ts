@@ -32,16 +32,20 @@ export class SceneGeometry {
 
   /** Whether (x, y) lies inside some hull (even-odd rule per hull; on an outline counts either way). */
   isInsideHull(x: number, y: number): boolean {
-    for (const points of this.hulls) {
+    return this.hullHolding(x, y) >= 0;
+  }
+
+  /** The index of the first hull (in the order given) that (x, y) lies inside, or −1. */
+  hullHolding(x: number, y: number): number {
+    return this.hulls.findIndex((points) => {
       let inside = false;
       const count = points.length / 2;
       for (let i = 0, j = count - 1; i < count; j = i++) {
         const ax = points[2 * i], ay = points[2 * i + 1], bx = points[2 * j], by = points[2 * j + 1];
         if ((ay > y) !== (by > y) && x < ax + ((y - ay) * (bx - ax)) / (by - ay)) inside = !inside;
       }
-      if (inside) return true;
-    }
-    return false;
+      return inside;
+    });
   }
 
   /** Whether (x, y) lies closer than `distance` to a hull edge. */

@@ -133,7 +133,7 @@ function nearHardEdge(geometry: SceneGeometry, px: number, py: number, lx: numbe
 export const DISK_SAMPLES = 4096;
 const GOLDEN_ANGLE = Math.PI * (3 - Math.sqrt(5));
 
-function diskSamples(cx: number, cy: number, radius: number, count: number): Float64Array {
+export function diskSamples(cx: number, cy: number, radius: number, count: number): Float64Array {
   if (radius === 0) return Float64Array.of(cx, cy);
   const samples = new Float64Array(count * 2);
   for (let i = 0; i < count; i++) {
@@ -154,7 +154,6 @@ function sampledFraction(geometry: SceneGeometry, count: number): FractionOf {
     let samples = samplesOf.get(light);
     if (!samples) samplesOf.set(light, (samples = diskSamples(light.position[0], light.position[1], light.radius, count)));
     const [lx, ly] = light.position;
-    const sampleCount = samples.length / 2;
     // Only edges overlapping the box around the pixel and the disk can block a segment.
     const minX = Math.min(px, lx - light.radius), maxX = Math.max(px, lx + light.radius);
     const minY = Math.min(py, ly - light.radius), maxY = Math.max(py, ly + light.radius);
@@ -165,18 +164,24 @@ function sampledFraction(geometry: SceneGeometry, count: number): FractionOf {
       candidates.set(edges.subarray(e, e + 4), candidateCount);
       candidateCount += 4;
     }
-    if (candidateCount === 0) return 1;
-    const crosses = segmentsCross; // a local: vitest's module transform makes every imported call a property read
-    let visible = sampleCount;
-    for (let s = 0; s < sampleCount; s++) {
-      const sx = samples[2 * s], sy = samples[2 * s + 1];
-      for (let e = 0; e < candidateCount; e += 4) {
-        if (crosses(px, py, sx, sy, candidates[e], candidates[e + 1], candidates[e + 2], candidates[e + 3])) {
-          visible--;
-          break;
-        }
+    return shareOfSamplesSeen(px, py, samples, candidates, candidateCount);
+  };
+}
+
+/** The share of `samples` (`[x, y, …]`) whose segment to (px, py) crosses none of the edges in the first `edgeFloats` of `edges`. */
+export function shareOfSamplesSeen(px: number, py: number, samples: Float64Array, edges: Float64Array, edgeFloats: number): number {
+  if (edgeFloats === 0) return 1;
+  const crosses = segmentsCross; // a local: vitest's module transform makes every imported call a property read
+  const sampleCount = samples.length / 2;
+  let visible = sampleCount;
+  for (let s = 0; s < sampleCount; s++) {
+    const sx = samples[2 * s], sy = samples[2 * s + 1];
+    for (let e = 0; e < edgeFloats; e += 4) {
+      if (crosses(px, py, sx, sy, edges[e], edges[e + 1], edges[e + 2], edges[e + 3])) {
+        visible--;
+        break;
       }
     }
-    return visible / sampleCount;
-  };
+  }
+  return visible / sampleCount;
 }

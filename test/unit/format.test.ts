@@ -52,6 +52,9 @@ describe('scene format', () => {
     expect(errorOf({ ...v1, hulls: [{ points: [[0, 0], [1, 0]], closed: false }] }).message)
       .toBe('hulls[0].closed: unknown field (allowed: points, position, origin, rotation, scale, enabled)');
     expect(errorOf({ ...v1, look: { exposure: 2 } }).message).toBe('look: unknown field (allowed: format, version, ambient, camera, hulls, lights)');
+    expect(errorOf({ ...v1, lights: [{ kind: 'point', position: [0, 0], shadowType: 'occluded' }] }).message)
+      .toBe('lights[0].shadowType: expected one of "solid", "illuminated", got "occluded"');
+    expect(readScene({ ...v1, version: 2, lights: [{ kind: 'point', position: [0, 0], shadowType: 'occluded' }] }).lights[0].shadowType).toBe('occluded');
     expect(scene.look).toEqual({ exposure: 1, toneMapping: 'none', dithering: 'none', lightmapBlur: 0 });
   });
 
@@ -100,7 +103,7 @@ describe('scene format', () => {
     ['light intensity negative', ['lights', 2, 'intensity'], -0.5, 'lights[2].intensity: expected a number ≥ 0, got -0.5'],
     ['light rotation', ['lights', 2, 'rotation'], null, 'lights[2].rotation: expected a finite number, got null'],
     ['light origin', ['lights', 2, 'origin'], [0.5], 'lights[2].origin: expected two finite numbers, got [0.5]'],
-    ['light shadowType', ['lights', 0, 'shadowType'], 'occluded', 'lights[0].shadowType: expected one of "solid", "illuminated", got "occluded"'],
+    ['light shadowType', ['lights', 0, 'shadowType'], 'dark', 'lights[0].shadowType: expected one of "solid", "illuminated", "occluded", got "dark"'],
     ['light enabled', ['lights', 0, 'enabled'], 'yes', 'lights[0].enabled: expected true or false, got "yes"'],
     ['light castsShadows', ['lights', 0, 'castsShadows'], 0, 'lights[0].castsShadows: expected true or false, got 0'],
     ['look toneMapping', ['look', 'toneMapping'], 'filmic', 'look.toneMapping: expected one of "none", "reinhard", "aces", got "filmic"'],

@@ -71,7 +71,7 @@ function testLibrary(name: string, load: () => Library): void {
         expect(messageOf(() => make(lib, { enabled: 'yes' }), TypeError)).toBe(`${className}.enabled must be true or false, got "yes"`);
         expect(messageOf(() => make(lib, { castsShadows: 0 }), TypeError)).toBe(`${className}.castsShadows must be true or false, got 0`);
         expect(messageOf(() => make(lib, { shadowType: 'dark' }), RangeError))
-          .toBe(`${className}.shadowType must be one of "solid", "illuminated", got "dark"`);
+          .toBe(`${className}.shadowType must be one of "solid", "illuminated", "occluded", got "dark"`);
         expect(messageOf(() => make(lib, { ignoredHulls: 5 }), TypeError)).toBe(`${className}.ignoredHulls must be an iterable of Hulls, got 5`);
         const hull = new lib.Hull([[0, 0], [1, 0], [0, 1]]);
         expect(messageOf(() => make(lib, { ignoredHulls: [hull, 'wall'] }), TypeError)).toBe(`${className}.ignoredHulls[1] must be a Hull, got "wall"`);

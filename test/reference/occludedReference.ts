@@ -1,0 +1,77 @@
+import { SceneGeometry } from './sceneGeometry';
+import type { Point, ReferenceScene } from './scenes';
+import { computeReference, diskSamples, DISK_SAMPLES, LIT, PENUMBRA, shareOfSamplesSeen, UMBRA, type ReferenceImage } from './softShadowReference';
+
+/**
+ * The ground truth for Occluded lights (`ShadowType.Occluded`), by disk sampling, with none of the
+ * renderer's math. Pixel centres outside hulls are as in {@link computeReference}. A pixel centre
+ * inside a hull H sees a disk point when their segment crosses no edge of another hull and no edge
+ * of H that faces the pixel (the pixel strictly on the edge's outer side): the segment leaves H
+ * once, and a facing edge is where it would enter H again. The scenes' hulls must not overlap.
+ *
+ * Accuracy: the sampling's, about 2e-3 of full light for 4,096 samples (see DISK_SAMPLES).
+ */
+export function computeOccludedReference(scene: ReferenceScene, samples = DISK_SAMPLES): ReferenceImage {
+  const reference = computeReference(scene);
+  const { width, height } = scene;
+  const lightSamples = scene.lights.map((light) => diskSamples(light.position[0], light.position[1], light.radius, samples));
+  const outlines = scene.hulls.map((hull) => Float64Array.from(hull.flat()));
+  const geometry = new SceneGeometry(scene.hulls);
+  const edges = new Float64Array(4 * scene.hulls.reduce((sum, hull) => sum + hull.length, 0));
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) {
+      const px = x + 0.5, py = y + 0.5, pixel = y * width + x;
+      const holder = geometry.hullHolding(px, py);
+      if (holder < 0) continue;
+      const edgeFloats = writeEdgesSeenFromInside(outlines, holder, px, py, edges);
+      let all = true, none = true;
+      for (let c = 0; c < 3; c++) reference.light[pixel * 3 + c] = 0;
+      scene.lights.forEach((light, l) => {
+        const falloff = Math.max(0, 1 - Math.hypot(px - light.position[0], py - light.position[1]) / light.range);
+        if (falloff === 0) return;
+        const fraction = shareOfSamplesSeen(px, py, lightSamples[l], edges, edgeFloats);
+        reference.visibility[l][pixel] = fraction;
+        if (fraction !== 1) all = false;
+        if (fraction !== 0) none = false;
+        const color = light.color ?? [1, 1, 1], intensity = light.intensity ?? 1;
+        for (let c = 0; c < 3; c++) reference.light[pixel * 3 + c] += falloff * fraction * color[c] * intensity;
+      });
+      reference.shade[pixel] = all ? LIT : none ? UMBRA : PENUMBRA;
+    }
+  }
+  return reference;
+}
+
+/** Writes every edge of the other hulls and the edges of `outlines[holder]` facing (px, py) into `edges`; returns the floats written. */
+function writeEdgesSeenFromInside(outlines: readonly Float64Array[], holder: number, px: number, py: number, edges: Float64Array): number {
+  let floats = 0;
+  outlines.forEach((outline, h) => {
+    const count = outline.length / 2;
+    const winding = Math.sign(signedArea(outline));
+    for (let i = 0; i < count; i++) {
+      const j = (i + 1) % count;
+      const ax = outline[2 * i], ay = outline[2 * i + 1], bx = outline[2 * j], by = outline[2 * j + 1];
+      // The cross product's sign times the winding's is negative on the outer side.
+      const outer = ((bx - ax) * (py - ay) - (by - ay) * (px - ax)) * winding < 0;
+      if (h === holder && !outer) continue;
+      edges.set([ax, ay, bx, by], floats);
+      floats += 4;
+    }
+  });
+  return floats;
+}
+
+function signedArea(outline: Float64Array): number {
+  let twice = 0;
+  const count = outline.length / 2;
+  for (let i = 0, j = count - 1; i < count; j = i++) twice += outline[2 * j] * outline[2 * i + 1] - outline[2 * i] * outline[2 * j + 1];
+  return twice / 2;
+}
+
+/** A U-shaped outline opening towards −y (in the scenes' y-down rows: upwards): arms `arm` wide, `depth` deep from the top. */
+export function uShape(x: number, y: number, width: number, height: number, arm: number, depth: number): Point[] {
+  return [
+    [x, y], [x + arm, y], [x + arm, y + depth], [x + width - arm, y + depth], [x + width - arm, y],
+    [x + width, y], [x + width, y + height], [x, y + height],
+  ];
+}
