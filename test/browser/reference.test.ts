@@ -1,63 +1,34 @@
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join, resolve } from 'node:path';
-import type { Browser, Page } from 'puppeteer';
-import { build } from 'vite';
+import type { Page } from 'puppeteer';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { lightmapToWorldRows } from '../reference/buildScene';
 import { compareToReference, formatErrorTable, type SceneErrors } from '../reference/compareToReference';
 import { MAX_LIMIT, MEAN_LIMIT, P99_LIMIT, UMBRA_LIMIT } from '../reference/limits';
-import { REFERENCE_SCENES, type ReferenceScene } from '../reference/scenes';
+import { REFERENCE_SCENES } from '../reference/scenes';
 import { computeReference } from '../reference/softShadowReference';
-import type { HostStateReport } from '../gl/hostParameters';
-import { collectPageErrors, launchChromium } from './chromium';
-import { serveDirectory, type StaticServer } from './staticServer';
+import { openReferencePage, type ReferencePage, type ReferencePageApi } from './referencePage';
 
 // The same limits as on headless-gl (test/gl/reference.test.ts, test/reference/limits.ts), in
 // units of full light, against the same exact CPU reference.
 
-let outDir: string;
-let server: StaticServer;
-let browser: Browser;
+let referencePage: ReferencePage;
 let page: Page;
 let pageErrors: string[];
 const figures: { scene: string; errors: SceneErrors }[] = [];
 
-/** What test/browser/reference-page/main.ts puts on `window`. */
-interface ReferencePage {
-  renderScene(scene: ReferenceScene): number[];
-  renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before: number[]; after: number[]; lostFrameError: string | null; windowErrors: string[] }>;
-  checkHostState(): HostStateReport;
-}
-
 beforeAll(async () => {
-  outDir = mkdtempSync(join(tmpdir(), 'penumbra-reference-page-'));
-  await build({
-    configFile: false,
-    root: resolve(import.meta.dirname, 'reference-page'),
-    base: './',
-    logLevel: 'warn',
-    build: { outDir, emptyOutDir: true },
-  });
-  server = await serveDirectory(outDir);
-  browser = await launchChromium();
-  page = await browser.newPage();
-  pageErrors = collectPageErrors(page);
-  await page.goto(server.url, { waitUntil: 'load' });
-  await page.waitForFunction(() => 'renderScene' in window);
+  referencePage = await openReferencePage();
+  ({ page, pageErrors } = referencePage);
 });
 
 afterAll(async () => {
   console.log(formatErrorTable('Chromium (SwiftShader) lightmap vs exact CPU reference (error in units of full light)', figures));
-  await browser?.close();
-  await server?.close();
-  if (outDir) rmSync(outDir, { recursive: true, force: true });
+  await referencePage?.close();
 });
 
 describe('reference scenes in Chromium', () => {
   for (const scene of REFERENCE_SCENES) {
     it(`matches the exact reference: ${scene.name}`, async () => {
-      const texels = await page.evaluate((s) => (window as unknown as ReferencePage).renderScene(s), scene);
+      const texels = await page.evaluate((s) => (window as unknown as ReferencePageApi).renderScene(s), scene);
       const errors = compareToReference(scene, lightmapToWorldRows(texels, scene.width, scene.height), computeReference(scene));
       figures.push({ scene: scene.name, errors });
       expect(pageErrors).toEqual([]);
@@ -75,7 +46,7 @@ describe('reference scenes in Chromium', () => {
   it('draws the same light again after the context is lost and restored, keeping lights and hulls', async () => {
     const scene = REFERENCE_SCENES.find((s) => s.name.startsWith('two hulls'))!;
     const { before, after, lostFrameError, windowErrors } = await page.evaluate(
-      (s) => (window as unknown as ReferencePage).renderAcrossContextLoss(s), scene);
+      (s) => (window as unknown as ReferencePageApi).renderAcrossContextLoss(s), scene);
     expect(lostFrameError).toBeNull();
     // Calls before the lost event arrives, and after a second loss inside a restored handler, are skipped.
     expect(windowErrors).toEqual([]);
@@ -95,7 +66,7 @@ describe('reference scenes in Chromium', () => {
 
 describe('host state in Chromium', () => {
   it('every host parameter is as the host set it after each public call (as on headless-gl: test/gl/hostParameters.test.ts)', async () => {
-    const report = await page.evaluate(() => (window as unknown as ReferencePage).checkHostState());
+    const report = await page.evaluate(() => (window as unknown as ReferencePageApi).checkHostState());
     console.log(`Chromium: ${report.compared} parameters compared after each of ${report.calls.length} public calls; rejected setup steps: ${report.unsupported.join(', ') || 'none'}`);
     expect(report.failures).toEqual([]);
     expect(report.unsupported).toEqual([]);

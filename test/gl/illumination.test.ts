@@ -1,11 +1,12 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { Hull, PenumbraRenderer, PointLight, ShadowType, Spotlight, TexturedLight, type Light } from '../../src/index';
-import type { Illumination, IlluminationOptions } from '../../src/scene/illumination';
-import { setScene } from '../reference/buildScene';
+import type { IlluminationOptions } from '../../src/scene/illumination';
+import { createSceneRenderer, setScene } from '../reference/buildScene';
+import { compareReferenceScene, compareWithLightmap, hardCentres, MAX_DIFFERENCE, sceneExclusions, type Exclusions } from '../reference/illuminationComparison';
 import { createRandom, randomScene } from '../reference/randomScenes';
 import { SceneGeometry } from '../reference/sceneGeometry';
 import { box, REFERENCE_SCENES, type Point, type ReferenceScene } from '../reference/scenes';
-import { HARD_EDGE_BAND, OUTLINE_BAND } from '../reference/softShadowReference';
+import { OUTLINE_BAND } from '../reference/softShadowReference';
 import { createContext, destroyContext } from './context';
 import { renderLightmap } from './lightmap';
 
@@ -21,7 +22,6 @@ import { renderLightmap } from './lightmap';
  * hard shadow's edge, where the rasterizer's snapping decides (test/reference/softShadowReference),
  * and of a textured light's quad edge or a cookie texel's edge.
  */
-const MAX_DIFFERENCE = 0.02;
 const RANDOM_SCENES = Number(process.env.PENUMBRA_SCENES ?? 60);
 const RANDOM_SEED = 0x111;
 
@@ -58,19 +58,9 @@ afterAll(() => {
   ].join('\n'));
 });
 
-/** What a comparison leaves out, besides pixels no light reaches. */
-interface Exclusions {
-  /** Hull outlines (world points) and open polylines. */
-  geometry: SceneGeometry;
-  /** Centres of the radius-0 lights (hard shadow edges). */
-  hardCentres: readonly Point[];
-  /** Any other pixel centre to leave out. */
-  other?: (x: number, y: number) => boolean;
-}
-
 /**
  * Renders the renderer's lightmap and compares `illuminationAt` at every pixel centre that is not
- * ambiguous; returns the number of those some light reaches and the largest difference in a channel.
+ * ambiguous (test/reference/illuminationComparison.ts, shared with the Chromium test).
  */
 function compare(
   gl: WebGL2RenderingContext, renderer: PenumbraRenderer, width: number, height: number,
@@ -78,44 +68,7 @@ function compare(
 ): { points: number; max: number; worst: string } {
   const lightmap = renderLightmap(gl, renderer, width, height);
   expect(gl.getError()).toBe(0);
-  const out: Illumination = { color: [0, 0, 0], luminance: 0, lights: [] };
-  let points = 0, max = 0, worst = '';
-  for (let y = 0; y < height; y++) {
-    for (let x = 0; x < width; x++) {
-      const px = x + 0.5, py = y + 0.5;
-      if (isAmbiguous(exclusions, px, py)) continue;
-      const result = renderer.illuminationAt(px, py, options, out);
-      // Every pixel is compared (a light wrongly left out shows as a difference); those some light reaches are counted.
-      if (result.lights.length > 0) points++;
-      const rendered = lightmap.at(x, y);
-      for (let c = 0; c < 3; c++) {
-        const difference = Math.abs(result.color[c] - rendered[c]);
-        if (difference > max) {
-          max = difference;
-          worst = `at (${px}, ${py}): ${result.color.map((v) => v.toFixed(4))} vs ${rendered.map((v) => v.toFixed(4))}`;
-        }
-      }
-    }
-  }
-  return { points, max, worst };
-}
-
-function isAmbiguous({ geometry, hardCentres, other }: Exclusions, x: number, y: number): boolean {
-  if (geometry.isNearOutline(x, y, OUTLINE_BAND)) return true;
-  for (const [lx, ly] of hardCentres) if (nearHardEdge(geometry, x, y, lx, ly)) return true;
-  return other?.(x, y) ?? false;
-}
-
-/** Whether (x, y) lies within HARD_EDGE_BAND of a ray from (lx, ly) through a hull point between them (as the reference's test). */
-function nearHardEdge(geometry: SceneGeometry, x: number, y: number, lx: number, ly: number): boolean {
-  const v = geometry.vertices;
-  const dx = x - lx, dy = y - ly, length2 = dx * dx + dy * dy;
-  for (let i = 0; i < v.length; i += 2) {
-    const vx = v[i] - lx, vy = v[i + 1] - ly, along = vx * dx + vy * dy;
-    if (along <= 0 || along > length2) continue;
-    if (Math.abs(vx * dy - vy * dx) < HARD_EDGE_BAND * Math.hypot(vx, vy)) return true;
-  }
-  return false;
+  return compareWithLightmap(renderer, lightmap, exclusions, options);
 }
 
 /** The renderer's hulls in world space (every hull, enabled or not, as the exclusions' outlines). */
@@ -127,18 +80,15 @@ function worldGeometry(renderer: PenumbraRenderer): SceneGeometry {
   return new SceneGeometry(outlines(true), outlines(false));
 }
 
-const hardCentres = (lights: readonly Light[]): Point[] => lights.filter((light) => light.radius === 0).map((light) => [light.position[0], light.position[1]]);
-
 describe('illuminationAt matches the rendered lightmap: reference scenes', () => {
   for (const scene of REFERENCE_SCENES) {
     it(scene.name, () => {
       const gl = createContext(scene.width, scene.height);
-      const renderer = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0], width: scene.width, height: scene.height });
-      setScene(renderer, scene);
-      const exclusions = { geometry: new SceneGeometry(scene.hulls, scene.polylines), hardCentres: hardCentres(renderer.lights) };
-      const { points, max, worst } = compare(gl, renderer, scene.width, scene.height, exclusions, { perLight: true });
+      const renderer = createSceneRenderer(gl, scene);
+      const { points, max, worst, glError } = compareReferenceScene(gl, renderer, scene);
       renderer.dispose();
       destroyContext(gl);
+      expect(glError).toBe(0);
       record('reference scenes (160 × 120)', scene.name, points, max, worst);
       expect(points).toBeGreaterThan(1000);
       expect(max, worst).toBeLessThanOrEqual(MAX_DIFFERENCE);
@@ -174,8 +124,7 @@ describe('illuminationAt matches the rendered lightmap: random scenes', () => {
           light.shadowStrength = random();
         }
       }
-      const exclusions = { geometry: new SceneGeometry(scene.hulls, scene.polylines), hardCentres: hardCentres(renderer.lights) };
-      const { points, max, worst } = compare(gl, renderer, WIDTH, HEIGHT, exclusions);
+      const { points, max, worst } = compare(gl, renderer, WIDTH, HEIGHT, sceneExclusions(scene, renderer.lights));
       record(`random scenes (${WIDTH} × ${HEIGHT})`, `seed ${seed}`, points, max, worst);
       expect(max, `seed ${seed}: ${worst}\nscene: ${JSON.stringify(scene)}`).toBeLessThanOrEqual(MAX_DIFFERENCE);
     });

@@ -1,11 +1,15 @@
 // Renders the reference scenes in the browser for test/browser/reference.test.ts, which compares
-// the lightmaps with the exact CPU reference on the Node side. Each scene is built with all of its
-// lights and hulls by test/reference/buildScene.ts, as on headless-gl. Exposes its entry points on `window`.
-import { createSceneRenderer } from '../../reference/buildScene';
+// the lightmaps with the exact CPU reference on the Node side, and for
+// test/browser/illumination.test.ts, which compares them here with `illuminationAt` run on
+// Chromium's JS. Each scene is built with all of its lights and hulls by
+// test/reference/buildScene.ts, as on headless-gl. Exposes its entry points on `window`
+// (typed in test/browser/referencePage.ts).
+import { createSceneRenderer, setScene } from '../../reference/buildScene';
 import type { ReferenceScene } from '../../reference/scenes';
 import { readTexture } from '../../gl/readTexture';
 import { callsThrowing } from '../../gl/fixtures';
 import { checkHostStateAcrossPublicCalls, type HostStateReport } from '../../gl/hostParameters';
+import { compareReferenceScene, type IlluminationComparison } from '../../reference/illuminationComparison';
 import type { PenumbraRenderer } from '../../../src/index';
 
 const canvas = document.getElementById('canvas') as HTMLCanvasElement;
@@ -107,4 +111,24 @@ function checkHostState(): HostStateReport {
   return checkHostStateAcrossPublicCalls(gl, 64, 48);
 }
 
-Object.assign(window, { renderScene, renderAcrossContextLoss, checkHostState });
+/** The renderer `compareIllumination` reuses from scene to scene (SwiftShader takes seconds to link a new one's programs). */
+let illuminationRenderer: PenumbraRenderer | null = null;
+
+/**
+ * Renders `scene`'s lightmap and compares `illuminationAt`, computed here, with it at every
+ * unambiguous pixel centre, as test/gl/illumination.test.ts does on headless-gl: both sides run in
+ * the browser, so only the figures cross to Node. `floatLightmap`: whether the lightmap is
+ * RGBA16F (the read-back as floats needs it).
+ */
+function compareIllumination(scene: ReferenceScene): IlluminationComparison & { glError: number; floatLightmap: boolean } {
+  const gl = context(scene.width, scene.height);
+  if (illuminationRenderer) {
+    illuminationRenderer.resize(scene.width, scene.height);
+    setScene(illuminationRenderer, scene);
+  } else {
+    illuminationRenderer = createSceneRenderer(gl, scene);
+  }
+  return { ...compareReferenceScene(gl, illuminationRenderer, scene), floatLightmap: illuminationRenderer.hasFloatLightmap };
+}
+
+Object.assign(window, { renderScene, renderAcrossContextLoss, checkHostState, compareIllumination });
