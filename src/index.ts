@@ -3,8 +3,8 @@ export { ToneMapping, Dithering } from './passes/compositeLayout';
 export type { Illumination, IlluminationOptions, LightIllumination, CookieSampler } from './scene/illumination';
 export { Hull, type HullOptions } from './scene/Hull';
 export {
-  Light, PointLight, Spotlight, TexturedLight, ShadowType,
-  type LightOptions, type SpotlightOptions, type TexturedLightOptions, type LightKind,
+  Light, PointLight, Spotlight, TexturedLight, DirectionalLight, ShadowType,
+  type LightOptions, type SpotlightOptions, type TexturedLightOptions, type DirectionalLightOptions, type LightKind,
 } from './scene/lights';
 export type { Vec2Like, ColorLike } from './scene/validate';
 export { isSimplePolygon, signedArea2 } from './geometry/polygon';

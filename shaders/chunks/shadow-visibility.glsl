@@ -37,12 +37,21 @@ uniform highp sampler2D u_bins;
 in vec2 v_world;
 flat in vec4 v_shadow;
 flat in float v_shadowType;
+#ifdef DIRECTIONAL
+// A directional light: v_shadow holds the unit direction it travels, sin α (α its angular radius)
+// and its row; v_strips its strips (DirectionalStrips in src/geometry/ShadowBins.ts): the least
+// coordinate across the travel, a strip's width, and where the first distance bucket starts along it.
+flat in vec3 v_strips;
+vec2 travel;
+#endif
 
 const float PI = 3.14159265;
 const int MAX_MIDDLES = 4;
 // A radius of 0 (hard shadows) is taken as this, a thousandth of a world unit: chord heights stay
 // finite and the visible fraction is 0 or 1 but within that distance of a hull's edge.
 const float MIN_RADIUS = 1e-3;
+// A directional light's sin α of 0 (hard shadows) is taken as this: a millionth of a radian.
+const float MIN_SINE = 1e-6;
 
 float cross2(vec2 a, vec2 b) {
   return a.x * b.y - a.y * b.x;
@@ -165,6 +174,17 @@ ivec2 recordsOfEntry(int i) {
   vec4 entry = texelAt(u_entries, binFirst + i);
   vec2 hull = entry.yz - pixel, toCentre = centre - pixel;
   float hullRadius = entry.w;
+#ifdef DIRECTIONAL
+  // The strip's list is ordered by buckets of where each hull starts along the travel: one bucket
+  // beyond the pixel, this hull and all after it lie wholly downstream of it.
+  float hullStart = dot(entry.yz, travel) - hullRadius - v_strips.z, pixelAlong = dot(pixel, travel) - v_strips.z;
+  if (pixelAlong < (floor(hullStart / bucketWidth) - 1.0) * bucketWidth) return ivec2(-1);
+  // The hull must meet the wedge of directions within α of the light's, upstream of the pixel:
+  // within its radius of the axis widened by tan α per unit upstream (ρ / cos α ≤ ρ (1 + tan α)).
+  float upstream = -dot(hull, travel), tangent = radius * inversesqrt(max(1.0 - radius * radius, 1e-12));
+  bool between = upstream > -hullRadius
+    && abs(cross2(travel, hull)) <= hullRadius * (1.0 + tangent) + max(upstream + hullRadius, 0.0) * tangent + 1e-3;
+#else
   float nearest = length(entry.yz - centre) - hullRadius;
   // A segment between two points within ρ ≥ r of the centre stays within ρ: a hull farther than
   // the pixel and the disk cannot reach a segment between them. The list is ordered by distance
@@ -176,6 +196,7 @@ ivec2 recordsOfEntry(int i) {
   bool between = length(hull - along * toCentre) < hullRadius + radius
     && length(hull) - hullRadius < distanceToLight + radius
     && (nearest <= radius || distanceToLight >= nearest);
+#endif
   if (seekingHolders) between = length(hull) <= hullRadius;
   int code = int(entry.x);
   entryIsFan = code % 2 == 1;
@@ -269,6 +290,10 @@ int classifyRecord(out float low, out float high) {
   if (lowAhead) low = max(cross2(toLight, lowEnd) * inversesqrt(dot(lowEnd, lowEnd)), -1.0);
   if (highAhead) high = min(cross2(toLight, highEnd) * inversesqrt(dot(highEnd, highEnd)), 1.0);
   if (low >= high) return HIDES_NOTHING;
+#ifdef DIRECTIONAL
+  // The disk is at infinity: beyond every record.
+  return IN_FRONT;
+#endif
   if (diskBeyond(lowEnd, highEnd)) return IN_FRONT;
   addPastSpan(lowEnd, highEnd);
   return SEEN_PAST;
@@ -365,6 +390,19 @@ void clearUnion() {
 // Sets the pixel and the light, and finds the pixel's bin.
 void beginShadow() {
   pixel = v_world;
+#ifdef DIRECTIONAL
+  // A disk at infinity of angular radius α is, for chord heights, the disk of radius sin α at unit
+  // distance towards the light: a direction θ off the light's has height sin θ / sin α either way.
+  travel = v_shadow.xy;
+  radius = max(v_shadow.z, MIN_SINE);
+  centre = pixel - travel;
+  distanceToLight = 1.0;
+  toLight = -travel / radius;
+  distanceInRadii = 1.0 / radius;
+  insideDisk = false;
+  float strip = floor((cross2(travel, pixel) - v_strips.x) / v_strips.y);
+  int bin = int(clamp(strip, 0.0, float(BIN_COUNT - 1)));
+#else
   centre = v_shadow.xy;
   radius = max(v_shadow.z, MIN_RADIUS);
   vec2 c = centre - pixel;
@@ -373,6 +411,7 @@ void beginShadow() {
   distanceInRadii = distanceToLight / radius;
   insideDisk = distanceInRadii <= 1.0;
   int bin = min(int(pseudoAngle(-c) * (float(BIN_COUNT) / 4.0)), BIN_COUNT - 1);
+#endif
   vec4 binEntries = texelFetch(u_bins, ivec2(bin, int(v_shadow.w)), 0);
   binFirst = int(binEntries.x);
   binCount = int(binEntries.y);

@@ -82,6 +82,13 @@ export class HullGrid {
    * Puts into `found` the numbers of the filed boxes that overlap the box
    * `[minX, minY, maxX, maxY]`, each once; returns how many.
    */
+  /** The least value of x·dx + y·dy over the boxes filed by the last `build` (their bounds' corners); +∞ when none was. */
+  leastAlong(dx: number, dy: number): number {
+    if (this.columns === 0) return Infinity;
+    const size = this.cellSize;
+    return (dx < 0 ? this.originX + this.columns * size : this.originX) * dx + (dy < 0 ? this.originY + this.rows * size : this.originY) * dy;
+  }
+
   search(box: ArrayLike<number>): number {
     this.foundCount = 0;
     if (this.columns === 0) return 0;

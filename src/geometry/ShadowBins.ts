@@ -2,7 +2,7 @@ import type { ShadowGeometry } from './ShadowGeometry';
 import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, entryCode, pseudoAngle, TEXTURE_WIDTH } from './shadowLayout';
 
 /** Distance buckets of the counting sort that orders each bin's list, nearest first. */
-const DISTANCE_BUCKETS = 32;
+export const DISTANCE_BUCKETS = 32;
 /** Pseudo-angle margin on each side of a hull's bins, far above the shader's float32 rounding (~1e-6). */
 const ANGLE_MARGIN = 1e-3;
 /** asin(x) ≤ x + ASIN_CUBIC · x³ on [0, 1] (the series' coefficients are positive and sum to π/2 at 1). */
@@ -45,6 +45,7 @@ export class ShadowBins {
   private candidateCount = 0;
   private readonly bucketCursors = new Int32Array(DISTANCE_BUCKETS);
   private readonly binCursors = new Int32Array(BIN_COUNT);
+  private strips: DirectionalStrips | null = null;
   private lightX = 0;
   private lightY = 0;
   private lightRadius = 0;
@@ -145,6 +146,46 @@ export class ShadowBins {
     return row;
   }
 
+  /**
+   * Starts the row of a directional light (see `DirectionalLight`) travelling along the unit
+   * (travelX, travelY), of angular radius α, over the view `strips` describes: its bins are strips
+   * of the view parallel to the travel, {@link DirectionalStrips.width} wide from
+   * {@link DirectionalStrips.perpBase} across it (a pixel's strip is its coordinate along
+   * (−travelY, travelX), less the base, over the width), each strip's list ordered upstream first.
+   */
+  beginDirectional(strips: DirectionalStrips): void {
+    this.strips = strips;
+    this.bucketWidth = strips.bucketWidth;
+    this.candidateCount = 0;
+  }
+
+  /**
+   * Adds the hull at `index` (prepared) as a candidate of the current directional light when its
+   * shadow can reach the view; false when it cannot. A hull in a circle of radius ρ around a point
+   * at `a` along the travel and `q` across it hides from a pixel downstream only directions within α
+   * of the light's, so it shades only pixels within ρ + (distance downstream) × tan α of q across
+   * (plus ρ / cos α − ρ, which the margin covers for α ≤ 45°), and none upstream of a − ρ: its
+   * strips are those that span reaches up to the view's far end, and a − ρ orders the lists.
+   */
+  addDirectionalHull(geometry: ShadowGeometry, index: number): boolean {
+    const strips = this.strips!, circles = geometry.circles;
+    const x = circles[3 * index], y = circles[3 * index + 1], hullRadius = circles[3 * index + 2];
+    const upstreamEnd = x * strips.travelX + y * strips.travelY - hullRadius;
+    if (upstreamEnd >= strips.alongEnd) return false;
+    const across = y * strips.travelX - x * strips.travelY;
+    const reach = hullRadius * (1 + STRIP_MARGIN) + (strips.alongEnd - upstreamEnd) * strips.tangent + strips.width * STRIP_MARGIN;
+    const from = Math.floor((across - reach - strips.perpBase) / strips.width), to = Math.floor((across + reach - strips.perpBase) / strips.width);
+    if (to < 0 || from >= BIN_COUNT) return false;
+    const first = Math.max(0, from), last = Math.min(BIN_COUNT - 1, to);
+    const i = this.candidateCount++;
+    if (i === this.candidateHulls.length) this.growCandidates();
+    this.candidateHulls[i] = index;
+    this.candidateBuckets[i] = Math.max(0, Math.min(DISTANCE_BUCKETS - 1, Math.floor((upstreamEnd - strips.alongBase) / strips.bucketWidth)));
+    this.candidateFirstBins[i] = first;
+    this.candidateBinCounts[i] = last - first + 1;
+    return true;
+  }
+
   /** Fills `order` with the candidates by distance bucket (a counting sort: stable, linear). */
   private sortByBucket(): void {
     const cursors = this.bucketCursors.fill(0), buckets = this.candidateBuckets, count = this.candidateCount;
@@ -166,6 +207,32 @@ export class ShadowBins {
     this.order = new Int32Array(this.candidateHulls.length);
   }
 }
+
+/**
+ * The strips of a directional light over the view, set by the frame plan (see
+ * {@link ShadowBins.beginDirectional}); `alongBase`, `perpBase`, `width` and `bucketWidth` reach the
+ * shader as a uniform.
+ */
+export class DirectionalStrips {
+  /** The unit direction the light travels. */
+  travelX = 1;
+  travelY = 0;
+  /** tan α, α the light's angular radius. */
+  tangent = 0;
+  /** The view's least coordinate across the travel (along (−travelY, travelX)), where strip 0 starts. */
+  perpBase = 0;
+  /** Width of a strip: the view's extent across the travel over {@link BIN_COUNT}. */
+  width = 1;
+  /** The least coordinate along the travel of any hull searched: where the first distance bucket starts. */
+  alongBase = 0;
+  /** The view's greatest coordinate along the travel: hulls wholly beyond it shade nothing in view. */
+  alongEnd = 0;
+  /** Width of a distance bucket: (alongEnd − alongBase) / {@link DISTANCE_BUCKETS}. */
+  bucketWidth = 1;
+}
+
+/** A strip's share of margin on each side of a hull's strips, and of its radius (see `addDirectionalHull`). */
+const STRIP_MARGIN = 1e-3;
 
 /** An upper bound of asin(min(x, 1)) for x ≥ 0, within 0.6% below x = 0.3: no trigonometry per hull. */
 function asinBound(x: number): number {

@@ -4,7 +4,7 @@ import { createPrograms, deletePrograms, type Program, type ProgramSources } fro
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import type { LightShapes } from '../gl/LightShapes';
 import { SHADOW_TYPE_CODES } from '../geometry/shadowLayout';
-import { Spotlight, TexturedLight, type LightKind } from '../scene/lights';
+import { DirectionalLight, Spotlight, TexturedLight, type LightKind } from '../scene/lights';
 import { shaderSources, type LightStages } from './shaders';
 import { ShadowUnits } from './ShadowTextures';
 
@@ -29,6 +29,7 @@ export class LightPass {
   private readonly lightPositionAndRange = new Float32Array(3);
   private readonly shadow = new Float32Array(4);
   private readonly shadowKept = new Float32Array(3);
+  private readonly strips = new Float32Array(3);
   private readonly direction = new Float32Array(2);
   private readonly coneHalfAngle = new Float32Array(1);
   private readonly coneDecay = new Float32Array(1);
@@ -42,9 +43,10 @@ export class LightPass {
         ...sourcesOf('point', 'point light', shaderSources.lightPointFragment),
         ...sourcesOf('spot', 'spotlight', shaderSources.lightSpotFragment),
         ...sourcesOf('textured', 'textured light', shaderSources.lightTexturedFragment),
+        ...sourcesOf('directional', 'directional light', shaderSources.lightDirectionalFragment),
       });
       const programsOf = (kind: LightKind) => ({ unshadowed: made[`${kind} unshadowed`], shadowed: made[`${kind} shadowed`] });
-      this.programs = { point: programsOf('point'), spot: programsOf('spot'), textured: programsOf('textured') };
+      this.programs = { point: programsOf('point'), spot: programsOf('spot'), textured: programsOf('textured'), directional: programsOf('directional') };
     } catch (error) {
       this.lightmap.dispose();
       throw error;
@@ -118,6 +120,7 @@ export class LightPass {
       gl.uniform1f(uniforms.u_shadowType, SHADOW_TYPE_CODES[light.shadowType]);
       gl.uniform3fv(uniforms.u_shadowKept, this.shadowKept);
     }
+    if (uniforms.u_strips) gl.uniform3fv(uniforms.u_strips, this.strips);
     if (light instanceof Spotlight) {
       gl.uniform2fv(uniforms.u_direction, this.direction);
       gl.uniform1fv(uniforms.u_coneHalfAngle, this.coneHalfAngle);
@@ -142,12 +145,29 @@ export class LightPass {
     this.shadow[2] = light.radius;
     this.shadow[3] = draw.binRow;
     light.writeShadowKept(this.shadowKept);
+    if (light instanceof DirectionalLight) this.writeDirectionalUniforms(draw, light);
     if (light instanceof Spotlight) {
       this.direction[0] = Math.cos(light.rotation);
       this.direction[1] = Math.sin(light.rotation);
       this.coneHalfAngle[0] = light.coneAngle / 2;
       this.coneDecay[0] = light.coneDecay;
     }
+  }
+
+  /**
+   * A directional light's values in place of a position and range: the direction it travels and
+   * sin α for the disk (see the chunk shadow-visibility), its strips, and a unit range (it has no
+   * falloff; the pass ignores the distance).
+   */
+  private writeDirectionalUniforms(draw: LightDraw, light: DirectionalLight): void {
+    const strips = draw.strips;
+    this.lightPositionAndRange[2] = 1;
+    this.shadow[0] = strips.travelX;
+    this.shadow[1] = strips.travelY;
+    this.shadow[2] = Math.sin(light.angularSize / 2);
+    this.strips[0] = strips.perpBase;
+    this.strips[1] = strips.width;
+    this.strips[2] = strips.alongBase;
   }
 
   dispose(): void {

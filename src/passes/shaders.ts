@@ -4,6 +4,7 @@ import debugFragment from '../../shaders/debug.frag.glsl?raw';
 import debugRecordsVertex from '../../shaders/debug-records.vert.glsl?raw';
 import fullscreenVertex from '../../shaders/fullscreen.vert.glsl?raw';
 import lightCommon from '../../shaders/chunks/light-common.glsl?raw';
+import lightDirectionalFragment from '../../shaders/light-directional.frag.glsl?raw';
 import lightPointFragment from '../../shaders/light-point.frag.glsl?raw';
 import lightSpotFragment from '../../shaders/light-spot.frag.glsl?raw';
 import lightTexturedFragment from '../../shaders/light-textured.frag.glsl?raw';
@@ -55,4 +56,5 @@ export const shaderSources = {
   lightPointFragment: /* @__PURE__ */ lightStage(lightPointFragment),
   lightSpotFragment: /* @__PURE__ */ lightStage(lightSpotFragment),
   lightTexturedFragment: /* @__PURE__ */ lightStage(lightTexturedFragment),
+  lightDirectionalFragment: /* @__PURE__ */ lightStage(lightDirectionalFragment),
 };

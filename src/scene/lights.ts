@@ -16,8 +16,8 @@ export const ShadowType = {
    * floor. A segment from a pixel inside a hull leaves that hull once; the hull hides what lies
    * beyond a place where the segment enters it again, so a convex hull never shades itself and a
    * concave one shades its own parts behind its nearer walls (the thesis' occluded hulls, §4.2).
-   * Where two hulls overlap, a pixel inside both is lit as through the first one found and the part
-   * of the other that holds it.
+   * Where hulls overlap, a pixel inside several is lit as from inside the first one found, and
+   * passes through the parts of the others that hold it.
    */
   Occluded: 'occluded',
 } as const;
@@ -67,10 +67,10 @@ export interface LightOptions {
 }
 
 /** The kind of a light, used by the renderer to pick its light pass. */
-export type LightKind = 'point' | 'spot' | 'textured';
+export type LightKind = 'point' | 'spot' | 'textured' | 'directional';
 
 /** The public class of each kind, for messages: a minifier renames the classes themselves. */
-const CLASS_NAMES: Readonly<Record<LightKind, string>> = { point: 'PointLight', spot: 'Spotlight', textured: 'TexturedLight' };
+const CLASS_NAMES: Readonly<Record<LightKind, string>> = { point: 'PointLight', spot: 'Spotlight', textured: 'TexturedLight', directional: 'DirectionalLight' };
 
 /**
  * Common state of every light. Lights are plain data: add them to a renderer with
@@ -454,3 +454,58 @@ function checkTexture(value: WebGLTexture): WebGLTexture {
   if (typeof value !== 'object' || value === null) throw new TypeError(`TexturedLight.texture must be a WebGLTexture, got ${describeValue(value)}`);
   return value;
 }
+
+/** Options of a {@link DirectionalLight}: those of every light but the ones about a position and a range. */
+export interface DirectionalLightOptions extends Omit<LightOptions, 'position' | 'range' | 'radius' | 'origin'> {
+  /**
+   * Apparent diameter of the light's disk in radians, 0..π/2: the sun's is about 0.0093 (0.53°);
+   * wider gives the soft shadows of an overcast sky, 0 hard shadows. Default `0.0093`.
+   */
+  angularSize?: number;
+}
+
+/**
+ * Light from far away — the sun or the moon — travelling along `rotation` (0: towards +x, so
+ * shadows fall towards +x) and covering the whole view with the same colour × intensity: no
+ * position, no range, no falloff. Its disk has an apparent diameter `angularSize`, so shadows are
+ * soft: exact for a uniformly emitting disk at infinity, hard at the hull and widening with the
+ * distance from it (by `2 × tan(angularSize / 2)` per unit). Hulls anywhere upstream of the view
+ * shadow it, not only those in view.
+ *
+ * `position`, `range`, `radius` and `origin` (inherited) mean nothing for it and are ignored.
+ */
+export class DirectionalLight extends Light {
+  private _angularSize = SUN_ANGULAR_SIZE;
+
+  constructor(options: DirectionalLightOptions = {}) {
+    super(options);
+    if (options.angularSize !== undefined) this.angularSize = options.angularSize;
+  }
+
+  get kind(): 'directional' {
+    return 'directional';
+  }
+
+  /** Apparent diameter of the light's disk in radians (0..π/2); see {@link DirectionalLightOptions.angularSize}. */
+  get angularSize(): number {
+    return this._angularSize;
+  }
+  set angularSize(value: number) {
+    assertNonNegative('DirectionalLight.angularSize', value);
+    if (value > Math.PI / 2) throw new RangeError(`DirectionalLight.angularSize must be at most π/2, got ${value}`);
+    this._angularSize = value;
+  }
+
+  /** Unbounded: it lights the whole view. @internal */
+  override reach(): number {
+    return Infinity;
+  }
+
+  /** It covers the view, not a disk. @internal */
+  override isConfinedToRangeDisk(): boolean {
+    return false;
+  }
+}
+
+/** The sun's apparent diameter seen from the Earth, in radians (0.53°). */
+const SUN_ANGULAR_SIZE = 0.0093;
