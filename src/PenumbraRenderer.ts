@@ -13,8 +13,8 @@ import { LightPass } from './passes/LightPass';
 import { ShadowTextures } from './passes/ShadowTextures';
 import { Hull } from './scene/Hull';
 import { IlluminationQuery, type CookieSampler, type Illumination, type IlluminationOptions } from './scene/illumination';
-import { Light, TexturedLight } from './scene/lights';
-import { assertFinite, assertNonNegative, assertOneOf, describeValue, frozenColor, type ColorLike } from './scene/validate';
+import { Light, TexturedLight, type LightOptions } from './scene/lights';
+import { ALL_LAYERS, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, describeValue, frozenColor, type ColorLike } from './scene/validate';
 
 /** Options of a {@link PenumbraRenderer}; every field has the default shown. */
 export interface PenumbraRendererOptions {
@@ -436,8 +436,12 @@ export class PenumbraRenderer {
    * Ends a frame: builds the lightmap and writes scene × lightmap into the framebuffer that was
    * bound at `beginDraw()`, with the viewport of that moment. Then rebinds that framebuffer and
    * viewport and restores the rest of the state.
+   *
+   * @param layers - content layers (a bit mask): the lightmap holds only the lights whose
+   *   `litLayers` share a bit with it (see {@link LightOptions.litLayers}). Default every layer.
    */
-  draw(): void {
+  draw(layers = ALL_LAYERS): void {
+    assertLayerMask('PenumbraRenderer.draw: layers', layers);
     if (this.isUnavailable()) return;
     if (!this.drawing) throw new Error('penumbra: draw() called without beginDraw()');
     this.drawing = false;
@@ -445,7 +449,7 @@ export class PenumbraRenderer {
     const resources = this.requireResources();
     this.enterHostState();
     try {
-      this.renderLightmapInto(resources);
+      this.renderLightmapInto(resources, layers);
       this.bindCompositeTarget();
       resources.composite.render(resources.scene.texture, resources.light.lightmap.texture, this);
       if (this.debug) {
@@ -465,8 +469,12 @@ export class PenumbraRenderer {
    * such as PixiJS and Phaser that draw into their own targets, so that `beginDraw()` cannot
    * redirect their drawing. The copy is a `blitFramebuffer`: a multisampled framebuffer must have
    * the same size as the renderer and an RGBA8 colour buffer. The context state is left as it was.
+   *
+   * @param layers - content layers: only the lights whose `litLayers` share a bit with it (see
+   *   {@link PenumbraRenderer.draw}). Default every layer.
    */
-  drawInPlace(): void {
+  drawInPlace(layers = ALL_LAYERS): void {
+    assertLayerMask('PenumbraRenderer.drawInPlace: layers', layers);
     if (this.isUnavailable()) return;
     if (this.drawing) throw new Error('penumbra: drawInPlace() called between beginDraw() and draw(): call draw() to end that frame first');
     this.beginDraw();
@@ -482,16 +490,22 @@ export class PenumbraRenderer {
     } finally {
       this.hostState.restore();
     }
-    this.draw();
+    this.draw(layers);
   }
 
-  /** Builds the lightmap only (see {@link PenumbraRenderer.lightmapTexture}); the context state is left as it was. */
-  renderLightmap(): void {
+  /**
+   * Builds the lightmap only (see {@link PenumbraRenderer.lightmapTexture}); the context state is left as it was.
+   *
+   * @param layers - content layers: only the lights whose `litLayers` share a bit with it (see
+   *   {@link PenumbraRenderer.draw}). Default every layer.
+   */
+  renderLightmap(layers = ALL_LAYERS): void {
+    assertLayerMask('PenumbraRenderer.renderLightmap: layers', layers);
     if (this.isUnavailable()) return;
     const resources = this.requireResources();
     this.enterHostState();
     try {
-      this.renderLightmapInto(resources);
+      this.renderLightmapInto(resources, layers);
     } finally {
       this.hostState.restore();
     }
@@ -509,7 +523,8 @@ export class PenumbraRenderer {
     this._hulls.length = 0;
   }
 
-  private renderLightmapInto(resources: Resources): void {
+  /** Builds the lightmap from the lights whose `litLayers` share a bit with `layers`. */
+  private renderLightmapInto(resources: Resources, layers: number): void {
     const start = this.measureCpuTime ? performance.now() : 0;
     const plan = this.plan;
     const viewProjection = this._viewProjection;
@@ -517,7 +532,9 @@ export class PenumbraRenderer {
     plan.build(this._lights, this._hulls, this.geometry, viewProjection, this.lightmapWidth, this.lightmapHeight);
     resources.shadows.upload(this.geometry, plan.bins);
     resources.light.begin(this._ambient, viewProjection);
-    for (let i = 0; i < plan.drawCount; i++) resources.light.render(plan.draws[i]);
+    for (let i = 0; i < plan.drawCount; i++) {
+      if ((plan.draws[i].light.litLayers & layers) !== 0) resources.light.render(plan.draws[i]);
+    }
     if (this._lightmapBlur > 0) resources.blur.render(resources.light.lightmap, this._lightmapBlur * this.lightmapScale);
     this.updateStats(this.measureCpuTime ? performance.now() - start : 0);
   }

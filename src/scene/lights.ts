@@ -54,6 +54,14 @@ export interface LightOptions {
    */
   shadowLayers?: number;
   /**
+   * The content layers this light lights, a bit mask: a lightmap built for content layers
+   * `layers` (`renderer.draw(layers)`, `drawInPlace(layers)`, `renderLightmap(layers)`) holds the
+   * light only when `light.litLayers & layers` is not 0 — e.g. a player's torch that lights the
+   * player's sprites but not the walls, or sprites lit by some lights only, drawn and lit apart (the
+   * engine integrations' lit groups do this). Default `0xffffffff` (every layer).
+   */
+  litLayers?: number;
+  /**
    * Colour of this light's shadows: the fraction of each channel of the light that a point in
    * full shadow still gets, where {@link LightOptions.shadowStrength} is 1. Default `[0, 0, 0]`.
    */
@@ -94,6 +102,7 @@ export abstract class Light {
   private _castsShadows = true;
   private _shadowType: ShadowType = ShadowType.Illuminated;
   private _shadowLayers = ALL_LAYERS;
+  private _litLayers = ALL_LAYERS;
   private _shadowColor: readonly [number, number, number] = Object.freeze([0, 0, 0] as const);
   private _shadowStrength = 1;
   /** Hulls this light passes through: they neither shadow it nor make it skip when its centre is inside them. */
@@ -113,6 +122,7 @@ export abstract class Light {
     if (options.castsShadows !== undefined) this.castsShadows = options.castsShadows;
     if (options.ignoredHulls !== undefined) this.ignoreHulls(options.ignoredHulls);
     if (options.shadowLayers !== undefined) this.shadowLayers = options.shadowLayers;
+    if (options.litLayers !== undefined) this.litLayers = options.litLayers;
     if (options.shadowColor !== undefined) this.shadowColor = options.shadowColor;
     if (options.shadowStrength !== undefined) this.shadowStrength = options.shadowStrength;
   }
@@ -216,6 +226,14 @@ export abstract class Light {
   }
   set shadowLayers(value: number) {
     this._shadowLayers = assertLayerMask(`${this.className}.shadowLayers`, value);
+  }
+
+  /** The content layers this light lights; see {@link LightOptions.litLayers}. */
+  get litLayers(): number {
+    return this._litLayers;
+  }
+  set litLayers(value: number) {
+    this._litLayers = assertLayerMask(`${this.className}.litLayers`, value);
   }
 
   /** Colour of this light's shadows, frozen; see {@link LightOptions.shadowColor}. */

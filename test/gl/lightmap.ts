@@ -12,9 +12,9 @@ export interface Lightmap {
   at(x: number, y: number): [number, number, number];
 }
 
-/** Builds the renderer's lightmap and reads it back. */
-export function renderLightmap(gl: WebGL2RenderingContext, renderer: PenumbraRenderer, width: number, height: number): Lightmap {
-  renderer.renderLightmap();
+/** Builds the renderer's lightmap (of the lights lighting content `layers`, default all) and reads it back. */
+export function renderLightmap(gl: WebGL2RenderingContext, renderer: PenumbraRenderer, width: number, height: number, layers?: number): Lightmap {
+  renderer.renderLightmap(layers);
   const rgb = lightmapToWorldRows(readTexture(gl, renderer.lightmapTexture, width, height), width, height);
   return {
     width, height, rgb,

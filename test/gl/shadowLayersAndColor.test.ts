@@ -3,7 +3,7 @@ import type { PenumbraRenderer } from '../../src/index';
 import { createSceneRenderer } from '../reference/buildScene';
 import { compareToReference } from '../reference/compareToReference';
 import { limitViolations } from '../reference/limits';
-import { box, type ReferenceScene } from '../reference/scenes';
+import { box, type Point, type ReferenceScene } from '../reference/scenes';
 import { computeReference, type ReferenceImage } from '../reference/softShadowReference';
 import { createContext, destroyContext } from './context';
 import { renderLightmap } from './lightmap';
@@ -91,5 +91,41 @@ describe('shadow colour and strength, on headless-gl', () => {
   it('draws today\'s black shadows by default', () => {
     const rendered = render(both, () => {});
     expect(limitViolations(compareToReference(both, rendered, withShadowKept(both, computeReference(both), [0, 0, 0])))).toEqual([]);
+  });
+});
+
+describe('content layers: lightmaps of the lights that light a layer, on headless-gl', () => {
+  // Two lights of the reference scenes' kind, one per content layer: a lightmap built for a layer
+  // must be the reference scene of that layer's lights alone.
+  const warm = { position: [35, 58] as Point, range: 150, radius: 6, color: [1, 0.5, 0.2] as [number, number, number] };
+  const cold = { position: [125, 60] as Point, range: 120, radius: 3, color: [0.2, 0.5, 1] as [number, number, number] };
+  const twoLights: ReferenceScene = { ...both, lights: [warm, cold] };
+  const cases = [
+    { title: 'a lightmap for layer 1 holds the light of layer 1 only', layers: 0b01, lights: [warm] },
+    { title: 'a lightmap for layer 2 holds the light of layer 2 only', layers: 0b10, lights: [cold] },
+    { title: 'a lightmap for both layers, the default, holds both lights', layers: undefined, lights: [warm, cold] },
+  ];
+  for (const { title, layers, lights } of cases) {
+    it(title, () => {
+      const gl = createContext(WIDTH, HEIGHT);
+      const renderer = createSceneRenderer(gl, twoLights);
+      renderer.lights[0].litLayers = 0b01;
+      renderer.lights[1].litLayers = 0b10;
+      const { rgb } = renderLightmap(gl, renderer, WIDTH, HEIGHT, layers);
+      expect(gl.getError()).toBe(0);
+      renderer.dispose();
+      destroyContext(gl);
+      const expected = { ...twoLights, lights };
+      // Errors in units of both lights' full strength, as the scene with both lights would count them.
+      expect(limitViolations(compareToReference(twoLights, rgb, computeReference(expected)))).toEqual([]);
+    });
+  }
+
+  it('names the argument when the layers are not a mask', () => {
+    const gl = createContext(WIDTH, HEIGHT);
+    const renderer = createSceneRenderer(gl, twoLights);
+    expect(() => renderer.drawInPlace(-1)).toThrow('PenumbraRenderer.drawInPlace: layers must be an integer from 0 to 0xffffffff (a bit mask), got -1');
+    renderer.dispose();
+    destroyContext(gl);
   });
 });
