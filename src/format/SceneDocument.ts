@@ -89,7 +89,10 @@ export interface SceneHull {
   layers: number;
 }
 
-/** Fields every light kind has, as in `LightOptions`. */
+/**
+ * Fields of the lights with a position (point, spot, textured), as in `LightOptions`. A
+ * {@link SceneDirectionalLight} has all of them but `position`, `range`, `radius` and `origin`.
+ */
 export interface SceneLightBase {
   /** Required. */
   position: [number, number];
@@ -147,5 +150,17 @@ export interface SceneTexturedLight extends SceneLightBase {
   size: [number, number] | null;
 }
 
+/**
+ * A `DirectionalLight` (version 2): light from infinitely far, travelling along `rotation`, with
+ * every field of {@link SceneLightBase} but those about a position and a range (`position`,
+ * `range`, `radius`, `origin`), which a file must not have.
+ */
+export interface SceneDirectionalLight extends Omit<SceneLightBase, 'position' | 'range' | 'radius' | 'origin'> {
+  /** Which light class this is. */
+  kind: 'directional';
+  /** Apparent diameter of the light's disk in radians, 0..π/2. Optional, default `0.0093` (the sun). */
+  angularSize: number;
+}
+
 /** Any light of a scene file, told apart by `kind`. */
-export type SceneLight = ScenePointLight | SceneSpotlight | SceneTexturedLight;
+export type SceneLight = ScenePointLight | SceneSpotlight | SceneTexturedLight | SceneDirectionalLight;

@@ -5,7 +5,7 @@ import {
 import { describeValue, shortened } from '../scene/validate';
 import {
   DEFAULT_LOOK, SCENE_FORMAT, SCENE_FORMAT_VERSION, SCENE_MAX_HULL_POINTS,
-  type SceneCamera, type SceneDocument, type SceneHull, type SceneLight, type SceneLightBase, type SceneLook,
+  type SceneCamera, type SceneDirectionalLight, type SceneDocument, type SceneHull, type SceneLight, type SceneLightBase, type SceneLook,
 } from './SceneDocument';
 import { SceneFormatError } from './SceneFormatError';
 
@@ -19,24 +19,35 @@ const LIGHT_FIELDS_V1 = [
   'castsShadows', 'ignoredHulls',
 ];
 const SHADOW_TYPES_V1 = ['solid', 'illuminated'] as const;
-/** The fields hulls and lights (besides their kind's) may have, and the shadow types, per version this reader knows. */
+const LIGHT_KINDS_V1 = ['point', 'spot', 'textured'] as const;
+/** The fields hulls and lights (besides their kind's) may have, the shadow types and the light kinds, per version this reader knows. */
 interface VersionFields {
   readonly document: readonly string[];
   readonly hull: readonly string[];
   readonly light: readonly string[];
   readonly shadowTypes: readonly SceneLightBase['shadowType'][];
+  readonly lightKinds: readonly SceneLight['kind'][];
 }
 const VERSION_FIELDS: Readonly<Record<number, VersionFields>> = {
-  1: { document: DOCUMENT_FIELDS.filter((field) => field !== 'look'), hull: HULL_FIELDS_V1, light: LIGHT_FIELDS_V1, shadowTypes: SHADOW_TYPES_V1 },
+  1: {
+    document: DOCUMENT_FIELDS.filter((field) => field !== 'look'), hull: HULL_FIELDS_V1, light: LIGHT_FIELDS_V1, shadowTypes: SHADOW_TYPES_V1,
+    lightKinds: LIGHT_KINDS_V1,
+  },
   [SCENE_FORMAT_VERSION]: {
     document: DOCUMENT_FIELDS,
     hull: [...HULL_FIELDS_V1, 'closed', 'layers'],
     light: [...LIGHT_FIELDS_V1, 'shadowLayers', 'shadowColor', 'shadowStrength'],
     shadowTypes: [...SHADOW_TYPES_V1, 'occluded'],
+    lightKinds: [...LIGHT_KINDS_V1, 'directional'],
   },
 };
-const KIND_FIELDS = { point: [], spot: ['coneAngle', 'coneDecay'], textured: ['cookie', 'size'] } as const;
-const LIGHT_KINDS = ['point', 'spot', 'textured'] as const;
+/** The light fields a directional light lacks: it has no position and lights everything. */
+const POSITION_FIELDS: readonly string[] = ['position', 'range', 'radius', 'origin'];
+const KIND_FIELDS = { point: [], spot: ['coneAngle', 'coneDecay'], textured: ['cookie', 'size'], directional: ['angularSize'] } as const;
+/** `DirectionalLight`'s default `angularSize`: the sun's apparent diameter, in radians. */
+const SUN_ANGULAR_SIZE = 0.0093;
+/** The fields every light kind has, a directional light included. */
+type SharedLightFields = Omit<SceneDirectionalLight, 'kind' | 'angularSize'>;
 
 /**
  * Reads a scene file (its JSON text, or the already parsed value) and checks every field. Only
@@ -133,10 +144,17 @@ function readHull(value: unknown, path: string, fields: readonly string[]): Scen
 }
 
 function readLight(value: unknown, path: string, fields: VersionFields, hullCount: number): SceneLight {
-  // The kind decides which extra fields are allowed, so it is read before the field check.
+  // The kind decides which fields are allowed, so it is read before the field check.
   const kindFields = readObject(value, path);
-  const kind = choiceField(kindFields, 'kind', LIGHT_KINDS);
-  const light = readObject(value, path, [...fields.light, ...KIND_FIELDS[kind]]);
+  const kind = choiceField(kindFields, 'kind', fields.lightKinds);
+  const shared = kind === 'directional' ? fields.light.filter((field) => !POSITION_FIELDS.includes(field)) : fields.light;
+  const light = readObject(value, path, [...shared, ...KIND_FIELDS[kind]]);
+  if (kind === 'directional') {
+    return {
+      kind, ...readSharedLightFields(light, fields.shadowTypes, hullCount),
+      angularSize: numberField(light, 'angularSize', SUN_ANGULAR_SIZE, 0, Math.PI / 2),
+    };
+  }
   const base = readLightBase(light, fields.shadowTypes, hullCount);
   switch (kind) {
     case 'point':
@@ -156,15 +174,20 @@ function readLight(value: unknown, path: string, fields: VersionFields, hullCoun
   }
 }
 
+/** The fields of a light with a position, in the order files have always been written. */
 function readLightBase(light: Fields, shadowTypes: VersionFields['shadowTypes'], hullCount: number): SceneLightBase {
+  const position = vec2Field(light, 'position');
+  const range = numberField(light, 'range', 100, 0);
+  const radius = numberField(light, 'radius', 0, 0);
+  const { color, intensity, rotation, ...rest } = readSharedLightFields(light, shadowTypes, hullCount);
+  return { position, range, radius, color, intensity, rotation, origin: vec2Field(light, 'origin', [0.5, 0.5]), ...rest };
+}
+
+function readSharedLightFields(light: Fields, shadowTypes: VersionFields['shadowTypes'], hullCount: number): SharedLightFields {
   return {
-    position: vec2Field(light, 'position'),
-    range: numberField(light, 'range', 100, 0),
-    radius: numberField(light, 'radius', 0, 0),
     color: colorField(light, 'color', [1, 1, 1]),
     intensity: numberField(light, 'intensity', 1, 0),
     rotation: numberField(light, 'rotation', 0),
-    origin: vec2Field(light, 'origin', [0.5, 0.5]),
     shadowType: choiceField(light, 'shadowType', shadowTypes, 'illuminated'),
     enabled: booleanField(light, 'enabled', true),
     castsShadows: booleanField(light, 'castsShadows', true),

@@ -1,5 +1,5 @@
 import { Hull } from '../scene/Hull';
-import { Light, PointLight, Spotlight, TexturedLight } from '../scene/lights';
+import { DirectionalLight, Light, PointLight, Spotlight, TexturedLight } from '../scene/lights';
 import { describeValue } from '../scene/validate';
 import { DEFAULT_LOOK, SCENE_FORMAT, SCENE_FORMAT_VERSION, type SceneCamera, type SceneDocument, type SceneLight, type SceneLook } from './SceneDocument';
 import { SceneFormatError } from './SceneFormatError';
@@ -39,6 +39,8 @@ function createLight(light: SceneLight, index: number, hulls: readonly Hull[], r
       if (!texture) throw new SceneFormatError(`lights[${index}].cookie`, `unknown cookie ${describeValue(light.cookie)}`);
       return new TexturedLight({ ...options, texture, size: light.size ?? undefined });
     }
+    case 'directional':
+      return new DirectionalLight(options);
   }
 }
 
@@ -85,14 +87,10 @@ function describeLook({ exposure, toneMapping, dithering, lightmapBlur }: Readon
 }
 
 function describeLight(light: Light, hullIndex: ReadonlyMap<Hull, number>, cookieName: (texture: WebGLTexture) => string): SceneLight {
-  const base = {
-    position: [...light.position] as [number, number],
-    range: light.range,
-    radius: light.radius,
+  const shared = {
     color: [...light.color] as [number, number, number],
     intensity: light.intensity,
     rotation: light.rotation,
-    origin: [...light.origin] as [number, number],
     shadowType: light.shadowType,
     enabled: light.enabled,
     castsShadows: light.castsShadows,
@@ -100,6 +98,15 @@ function describeLight(light: Light, hullIndex: ReadonlyMap<Hull, number>, cooki
     shadowLayers: light.shadowLayers,
     shadowColor: [...light.shadowColor] as [number, number, number],
     shadowStrength: light.shadowStrength,
+  };
+  // Its inherited position, range, radius and origin mean nothing: a file does not keep them.
+  if (light instanceof DirectionalLight) return { kind: 'directional', ...shared, angularSize: light.angularSize };
+  const base = {
+    ...shared,
+    position: [...light.position] as [number, number],
+    range: light.range,
+    radius: light.radius,
+    origin: [...light.origin] as [number, number],
   };
   if (light instanceof Spotlight) return { kind: 'spot', ...base, coneAngle: light.coneAngle, coneDecay: light.coneDecay };
   if (light instanceof TexturedLight) {

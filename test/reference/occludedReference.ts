@@ -43,7 +43,7 @@ export function computeOccludedReference(scene: ReferenceScene, samples = DISK_S
 }
 
 /** Writes every edge of the other hulls and the edges of `outlines[holder]` facing (px, py) into `edges`; returns the floats written. */
-function writeEdgesSeenFromInside(outlines: readonly Float64Array[], holder: number, px: number, py: number, edges: Float64Array): number {
+export function writeEdgesSeenFromInside(outlines: readonly Float64Array[], holder: number, px: number, py: number, edges: Float64Array): number {
   let floats = 0;
   outlines.forEach((outline, h) => {
     const count = outline.length / 2;

@@ -1,5 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { createSceneObjects, describeScene, readScene, SceneFormatError, Spotlight, TexturedLight, writeScene } from '../../src/index';
+import {
+  createSceneObjects, describeScene, DirectionalLight, Hull, readScene, SceneFormatError, Spotlight, TexturedLight, writeScene, type ScenePointLight,
+} from '../../src/index';
 import { errorOf, fullScene } from './sceneDocuments';
 
 /** A full scene with one field replaced (or deleted, with `undefined`) at a path of keys. */
@@ -58,6 +60,17 @@ describe('scene format', () => {
     expect(scene.look).toEqual({ exposure: 1, toneMapping: 'none', dithering: 'none', lightmapBlur: 0 });
   });
 
+  it('reads a directional light from version 2 on, with its defaults, and rejects one in a version 1 file', () => {
+    const v2 = { format: 'penumbra-scene', version: 2, lights: [{ kind: 'directional' }] };
+    expect(readScene(v2).lights[0]).toEqual({
+      kind: 'directional', color: [1, 1, 1], intensity: 1, rotation: 0, shadowType: 'illuminated', enabled: true, castsShadows: true,
+      ignoredHulls: [], shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, angularSize: new DirectionalLight().angularSize,
+    });
+    expect(readScene({ ...v2, lights: [{ kind: 'directional', angularSize: 0 }] }).lights[0]).toMatchObject({ angularSize: 0 });
+    expect(readScene({ ...v2, lights: [{ kind: 'directional', angularSize: Math.PI / 2 }] }).lights[0]).toMatchObject({ angularSize: Math.PI / 2 });
+    expect(errorOf({ ...v2, version: 1 }).message).toBe('lights[0].kind: expected one of "point", "spot", "textured", got "directional"');
+  });
+
   it('rejects an unknown version and another format', () => {
     expect(errorOf(withField(["version"], 3)).message).toBe("version: unsupported version 3 (this reader knows versions 1 and 2)");
     expect(errorOf(withField(['version'], undefined)).message).toBe('version: required field is missing');
@@ -94,7 +107,7 @@ describe('scene format', () => {
     ['lights not an array', ['lights'], 'none', 'lights: expected an array, got "none"'],
     ['light not an object', ['lights', 0], null, 'lights[0]: expected an object, got null'],
     ['light kind missing', ['lights', 0, 'kind'], undefined, 'lights[0].kind: required field is missing'],
-    ['light kind unknown', ['lights', 0, 'kind'], 'area', 'lights[0].kind: expected one of "point", "spot", "textured", got "area"'],
+    ['light kind unknown', ['lights', 0, 'kind'], 'area', 'lights[0].kind: expected one of "point", "spot", "textured", "directional", got "area"'],
     ['light position missing', ['lights', 0, 'position'], undefined, 'lights[0].position: required field is missing'],
     ['light position', ['lights', 0, 'position'], [1, 'a'], 'lights[0].position: expected two finite numbers, got [1,"a"]'],
     ['light range negative', ['lights', 0, 'range'], -1, 'lights[0].range: expected a number ≥ 0, got -1'],
@@ -124,6 +137,16 @@ describe('scene format', () => {
     ['textured cookie empty', ['lights', 2, 'cookie'], '', 'lights[2].cookie: expected a non-empty string, got ""'],
     ['textured size negative', ['lights', 2, 'size'], [10, -1], 'lights[2].size: expected numbers ≥ 0, got [10,-1]'],
     ['textured size not a pair', ['lights', 2, 'size'], 'big', 'lights[2].size: expected two finite numbers, got "big"'],
+    ['directional angularSize negative', ['lights', 3, 'angularSize'], -0.1, 'lights[3].angularSize: expected a number ≥ 0, got -0.1'],
+    ['directional angularSize above π/2', ['lights', 3, 'angularSize'], 2, 'lights[3].angularSize: expected a number ≤ 1.5707963267948966, got 2'],
+    ['directional angularSize not a number', ['lights', 3, 'angularSize'], '0.5°', 'lights[3].angularSize: expected a finite number, got "0.5°"'],
+    ['directional rotation', ['lights', 3, 'rotation'], null, 'lights[3].rotation: expected a finite number, got null'],
+    ['directional shadowType', ['lights', 3, 'shadowType'], 'dark', 'lights[3].shadowType: expected one of "solid", "illuminated", "occluded", got "dark"'],
+    ['directional ignoredHulls out of range', ['lights', 3, 'ignoredHulls', 0], 5, 'lights[3].ignoredHulls[0]: expected a hull index from 0 to 2, got 5'],
+    ...['position', 'range', 'radius', 'origin', 'coneAngle'].map((field): [string, (string | number)[], unknown, string] => [
+      `directional ${field}, a field it does not have`, ['lights', 3, field], field === 'position' || field === 'origin' ? [0, 0] : 1,
+      `lights[3].${field}: unknown field (allowed: kind, color, intensity, rotation, shadowType, enabled, castsShadows, ignoredHulls, shadowLayers, shadowColor, shadowStrength, angularSize)`,
+    ]),
   ];
   it.each(cases)('names the path of a bad field: %s', (_name, path, value, message) => {
     const error = errorOf(withField(path, value));
@@ -133,9 +156,10 @@ describe('scene format', () => {
 
   it('rejects NaN and Infinity in a scene given as a value', () => {
     const scene = fullScene();
-    scene.lights[0].range = Number.NaN;
+    const point = scene.lights[0] as ScenePointLight;
+    point.range = Number.NaN;
     expect(errorOf(scene).message).toBe('lights[0].range: expected a finite number, got NaN');
-    scene.lights[0].range = 1;
+    point.range = 1;
     scene.hulls[1].points[2] = [Infinity, 0];
     expect(errorOf(scene).message).toBe('hulls[1].points[2]: expected two finite numbers, got [Infinity,0]');
   });
@@ -171,6 +195,23 @@ describe('scene objects', () => {
     expect([...textured.ignoredHulls]).toEqual(objects.hulls.slice(0, 2));
     const described = describeScene({ ...objects, ambient: scene.ambient, camera: scene.camera, look: scene.look, cookieName: () => 'flame' });
     expect(described).toEqual(scene);
+  });
+
+  it('builds a directional light and describes it without the position, range, radius and origin it ignores', () => {
+    const objects = createSceneObjects(fullScene(), resolve);
+    const sun = objects.lights[3] as DirectionalLight;
+    expect(sun).toBeInstanceOf(DirectionalLight);
+    expect(sun).toMatchObject({ angularSize: 0.2, rotation: 2.1, intensity: 0.7, shadowType: 'occluded', shadowLayers: 5, shadowStrength: 0.9 });
+    expect([...sun.ignoredHulls]).toEqual([objects.hulls[2]]);
+    const moved = new DirectionalLight({ angularSize: 0, ignoredHulls: [new Hull([[0, 0], [1, 0], [0, 1]])] });
+    moved.setPosition(5, 6);
+    moved.range = 10;
+    const described = describeScene({ hulls: [], lights: [moved], ambient: [0, 0, 0], camera: { center: [0, 0], zoom: 1 }, cookieName: () => 'flame' });
+    expect(described.lights[0]).toEqual({
+      kind: 'directional', color: [1, 1, 1], intensity: 1, rotation: 0, shadowType: 'illuminated', enabled: true, castsShadows: true,
+      ignoredHulls: [], shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, angularSize: 0,
+    });
+    expect(readScene(writeScene(described))).toEqual(described);
   });
 
   it('names the light whose cookie is unknown and builds nothing', () => {

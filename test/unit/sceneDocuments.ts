@@ -59,6 +59,10 @@ export function fullScene(): SceneDocument {
         origin: [0.25, 0.75], shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [0, 1],
         shadowLayers: 0, shadowColor: [1, 1, 1], shadowStrength: 0, cookie: 'flame', size: [160, 120],
       },
+      {
+        kind: 'directional', color: [1, 0.95, 0.8], intensity: 0.7, rotation: 2.1, shadowType: 'occluded', enabled: true,
+        castsShadows: true, ignoredHulls: [2], shadowLayers: 5, shadowColor: [0.1, 0.1, 0.2], shadowStrength: 0.9, angularSize: 0.2,
+      },
     ],
   };
 }

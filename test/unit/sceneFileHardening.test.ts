@@ -1,5 +1,5 @@
 import { afterEach, describe, expect, it } from 'vitest';
-import { createSceneObjects, describeScene, SCENE_MAX_HULL_POINTS, readScene, writeScene, type SceneDocument } from '../../src/index';
+import { createSceneObjects, describeScene, SCENE_MAX_HULL_POINTS, readScene, writeScene, type SceneDocument, type ScenePointLight } from '../../src/index';
 import { errorOf, fullScene } from './sceneDocuments';
 
 /** A minimal scene whose light's `position` is `value`. */
@@ -59,7 +59,7 @@ describe('sparse arrays', () => {
       ['hulls[1].points[2]', (s) => { delete (s.hulls[1].points as unknown[])[2]; }],
       ['lights[0].color[1]', (s) => { delete (s.lights[0].color as unknown[])[1]; }],
       ['lights[2].ignoredHulls[0]', (s) => { delete (s.lights[2].ignoredHulls as unknown[])[0]; }],
-      ['lights[0].position[0]', (s) => { delete (s.lights[0].position as unknown[])[0]; }],
+      ['lights[0].position[0]', (s) => { delete ((s.lights[0] as ScenePointLight).position as unknown[])[0]; }],
     ];
     for (const [path, makeHole] of holes) {
       const scene = fullScene();

@@ -33,7 +33,7 @@ const BASES: readonly unknown[] = [fullScene(), docsExample(), ...referenceDocum
 function replacement(next: Random, jsonOnly: boolean): unknown {
   const plain = [
     NaN, Infinity, -Infinity, -1, 0, -0, 0.5, 1, 2, 3.5, 1e308, -1e308, 5e-324, 2 ** 53, 4, Math.PI, 3.2,
-    '', 'x', 'point', 'spot', 'textured', 'solid', 'illuminated', 'penumbra-scene', 'flame', null, true, false,
+    '', 'x', 'point', 'spot', 'textured', 'directional', 'solid', 'illuminated', 'penumbra-scene', 'flame', null, true, false,
     [], {}, [1], [1, 2], [1, 2, 3], [-1, 0], [0, -1], [[0, 0], [1, 0], [0, 1]], { kind: 'point', position: [0, 0] },
     'x'.repeat(1000), nested(100),
   ];
@@ -88,7 +88,7 @@ function mutate(next: Random, document: object, jsonOnly: boolean): void {
     case 2:
       // Defined, not assigned: an own "__proto__" field, as JSON.parse makes, not a new prototype.
       // Objects only: an array's fields are not read, and an own `constructor` breaks `splice`.
-      if (!Array.isArray(container)) Object.defineProperty(container, pick(next, ['extra', 'kind', 'size', 'cookie', 'coneAngle', 'points', '__proto__', 'constructor']), {
+      if (!Array.isArray(container)) Object.defineProperty(container, pick(next, ['extra', 'kind', 'size', 'cookie', 'coneAngle', 'angularSize', 'position', 'points', '__proto__', 'constructor']), {
         value: replacement(next, jsonOnly), enumerable: true, writable: true, configurable: true,
       });
       break;
