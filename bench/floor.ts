@@ -59,7 +59,9 @@ export class FillFloor {
     gl.blendFunc(gl.ONE, gl.ONE);
     for (const light of lights) {
       const [x, y] = light.position;
-      gl.uniform4f(this.rect, x / this.width * 2 - 1, 1 - y / this.height * 2, light.range / this.width * 2, light.range / this.height * 2);
+      // A directional light covers the whole target.
+      if (light.kind === 'directional') gl.uniform4f(this.rect, 0, 0, 1, 1);
+      else gl.uniform4f(this.rect, x / this.width * 2 - 1, 1 - y / this.height * 2, light.range / this.width * 2, light.range / this.height * 2);
       gl.uniform3f(this.color, light.color[0], light.color[1], light.color[2]);
       gl.drawArrays(gl.TRIANGLE_FAN, 0, 4);
     }

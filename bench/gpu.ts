@@ -17,7 +17,7 @@ import { createContext, destroyContext } from '../test/gl/context';
 import { EXTRA_STATS, extraStatCells, readExtraStats, type ExtraStats } from './extraStats';
 import { FillFloor } from './floor';
 import { CURRENT, type BenchRenderer, type RendererLibrary } from './library';
-import { createScene, SCENES, WORLD_HEIGHT, WORLD_WIDTH, type BenchScene, type SceneSpec } from './scenes';
+import { createScene, runsOn, SCENES, WORLD_HEIGHT, WORLD_WIDTH, type BenchScene, type SceneSpec } from './scenes';
 import { summarize, type Summary } from './stats';
 import { printTable, ratioCell } from './table';
 
@@ -142,7 +142,7 @@ function timeFrame(renderer: BenchRenderer): { frame: number; submit: number } {
 }
 
 function runScene(spec: SceneSpec): GpuSceneResult {
-  const contenders = [contender(spec, CURRENT), ...(baselineLibrary ? [contender(spec, baselineLibrary)] : [])];
+  const contenders = [contender(spec, CURRENT), ...(baselineLibrary && runsOn(spec, baselineLibrary) ? [contender(spec, baselineLibrary)] : [])];
   const floor = new FillFloor(gl, WORLD_WIDTH, WORLD_HEIGHT);
   const floorTimes: number[] = [];
   let reported = performance.now();

@@ -4,7 +4,7 @@ import * as current from '../src/index';
 /**
  * The part of penumbra-gl's public API the bench uses, and that every renderer it compares has
  * (the working tree's and the baseline built from a git ref, see bench/build.mjs). Kept to
- * PenumbraRenderer, PointLight, Spotlight, TexturedLight and Hull and the members below, so that
+ * PenumbraRenderer, PointLight, Spotlight, TexturedLight, Hull (and DirectionalLight where it exists) and the members below, so that
  * an older or newer core fits without the bench knowing its internals.
  */
 export interface RendererLibrary {
@@ -13,6 +13,8 @@ export interface RendererLibrary {
   Spotlight: new (options: BenchLightOptions & { coneAngle?: number; coneDecay?: number }) => BenchLight;
   TexturedLight: new (options: BenchLightOptions & { texture: WebGLTexture; size?: readonly [number, number] }) => BenchLight;
   Hull: new (points: readonly (readonly [number, number])[], options?: { position?: readonly [number, number]; rotation?: number }) => BenchHull;
+  /** Absent before the directional light existed: the scenes with a sun then leave that library out. */
+  DirectionalLight?: new (options: { rotation?: number; angularSize?: number; color?: readonly [number, number, number]; intensity?: number }) => BenchLight;
 }
 
 export interface BenchRendererOptions {
@@ -43,6 +45,8 @@ export interface BenchLightOptions {
 }
 
 export interface BenchLight {
+  /** Absent in versions before the light kinds had names. */
+  readonly kind?: string;
   readonly position: readonly [number, number];
   readonly range: number;
   readonly color: readonly [number, number, number];

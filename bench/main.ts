@@ -11,7 +11,7 @@ import { serveDirectory } from '../test/browser/staticServer';
 import { runCpu, type CpuResult } from './cpu';
 import { EXTRA_STATS, extraStatCells, type ExtraStats } from './extraStats';
 import { CURRENT } from './library';
-import { SCENES } from './scenes';
+import { runsOn, SCENES } from './scenes';
 import { summarize, type Summary } from './stats';
 import { printTable, ratioCell } from './table';
 import type { BenchPage } from './page/main';
@@ -63,7 +63,7 @@ const oldName = baseline ? `old ${baseline.ref}` : 'old';
 const results: SceneResult[] = scenes.map((spec) => ({ scene: spec.name, lights: spec.lights, hulls: spec.hulls + spec.farHulls }));
 if (!args.has('no-node')) {
   for (const [i, spec] of scenes.entries()) {
-    const contenders = [['new', CURRENT], ...(baselineLibrary ? [[oldName, baselineLibrary] as const] : [])] as const;
+    const contenders = [['new', CURRENT], ...(baselineLibrary && runsOn(spec, baselineLibrary) ? [[oldName, baselineLibrary] as const] : [])] as const;
     const measured: CpuResult[] = [];
     for (const [name, library] of contenders) {
       process.stderr.write(`node ${spec.name} ${name}…\n`);

@@ -11,6 +11,8 @@ export interface SceneSpec {
   hulls: number;
   /** Hulls placed beyond the reach of every light (the "sparse" variant). */
   farHulls: number;
+  /** Adds a low sun (a `DirectionalLight`) over the whole world: what it costs on top of the lights. */
+  sun?: boolean;
 }
 
 export const SCENES: readonly SceneSpec[] = [
@@ -19,7 +21,14 @@ export const SCENES: readonly SceneSpec[] = [
   { name: 'S3', lights: 128, hulls: 1000, farHulls: 0 },
   { name: 'S3-sparse', lights: 128, hulls: 1000, farHulls: 10000 },
   { name: 'S4', lights: 512, hulls: 4000, farHulls: 0 },
+  { name: 'S2-sun', lights: 32, hulls: 200, farHulls: 0, sun: true },
+  { name: 'S3-sun', lights: 128, hulls: 1000, farHulls: 0, sun: true },
 ];
+
+/** Whether `library` can build `spec` (a sun needs its `DirectionalLight`). */
+export function runsOn(spec: SceneSpec, library: RendererLibrary): boolean {
+  return !spec.sun || library.DirectionalLight !== undefined;
+}
 
 /** Every hull whose index is a multiple of this moves or rotates each frame ("one hull in ten"). */
 const MOVING_HULL_STRIDE = 10;
@@ -70,6 +79,11 @@ export function createScene(spec: SceneSpec, library: RendererLibrary = CURRENT,
       color: [between(0.3, 1), between(0.3, 1), between(0.3, 1)], intensity: 0.6,
     }));
   }
+  if (spec.sun) {
+    if (!library.DirectionalLight) throw new Error(`scene ${spec.name} needs a DirectionalLight`);
+    // Low and soft (2.9°), so that shadows run long across the world and have wide penumbrae.
+    lights.push(new library.DirectionalLight({ rotation: 0.5, angularSize: 0.05, color: [1, 0.9, 0.7], intensity: 0.5 }));
+  }
   const hulls: BenchHull[] = [];
   const hullAnchors: number[] = [];
   const total = spec.hulls + spec.farHulls;
@@ -92,7 +106,7 @@ export function createScene(spec: SceneSpec, library: RendererLibrary = CURRENT,
   return {
     spec, lights, hulls,
     step(frame) {
-      for (let i = 0; i < lights.length; i++) {
+      for (let i = 0; i < spec.lights; i++) {
         const phase = anchors[i * 3 + 2] + frame * 0.05;
         lights[i].setPosition(anchors[i * 3] + 12 * Math.cos(phase), anchors[i * 3 + 1] + 12 * Math.sin(phase));
       }

@@ -9,8 +9,8 @@ import { BlurPass } from './passes/BlurPass';
 import { CompositePass } from './passes/CompositePass';
 import { Dithering, MAX_BLUR_RADIUS, ToneMapping } from './passes/compositeLayout';
 import { DebugPass } from './passes/DebugPass';
-import { LightPass } from './passes/LightPass';
-import { ShadowTextures } from './passes/ShadowTextures';
+import { COOKIE_UNIT, LightPass } from './passes/LightPass';
+import { ShadowTextures, ShadowUnits } from './passes/ShadowTextures';
 import { Hull } from './scene/Hull';
 import { IlluminationQuery, type CookieSampler, type Illumination, type IlluminationOptions } from './scene/illumination';
 import { Light, TexturedLight, type LightOptions } from './scene/lights';
@@ -79,8 +79,8 @@ interface Resources {
 /** Clear value of the scene target. */
 const TRANSPARENT = new Float32Array(4);
 
-/** Texture units the passes bind (0..3), saved and restored around every draw. */
-const TEXTURE_UNITS = 4;
+/** Texture units the passes bind (from 0: the shadow textures' and the cookie's), saved and restored around every draw. */
+const TEXTURE_UNITS = Math.max(COOKIE_UNIT, ...Object.values(ShadowUnits)) + 1;
 
 /**
  * Real-time 2D lights with soft shadows for an existing WebGL2 context.
@@ -442,6 +442,11 @@ export class PenumbraRenderer {
    */
   draw(layers = ALL_LAYERS): void {
     assertLayerMask('PenumbraRenderer.draw: layers', layers);
+    this.endFrame(layers | 0);
+  }
+
+  /** What {@link PenumbraRenderer.draw} does, with the layers as an int32 (see `renderLightmapInto`). */
+  private endFrame(layers: number): void {
     if (this.isUnavailable()) return;
     if (!this.drawing) throw new Error('penumbra: draw() called without beginDraw()');
     this.drawing = false;
@@ -490,7 +495,7 @@ export class PenumbraRenderer {
     } finally {
       this.hostState.restore();
     }
-    this.draw(layers);
+    this.endFrame(layers | 0);
   }
 
   /**
@@ -505,7 +510,7 @@ export class PenumbraRenderer {
     const resources = this.requireResources();
     this.enterHostState();
     try {
-      this.renderLightmapInto(resources, layers);
+      this.renderLightmapInto(resources, layers | 0);
     } finally {
       this.hostState.restore();
     }
@@ -523,7 +528,10 @@ export class PenumbraRenderer {
     this._hulls.length = 0;
   }
 
-  /** Builds the lightmap from the lights whose `litLayers` share a bit with `layers`. */
+  /**
+   * Builds the lightmap from the lights whose `litLayers` share a bit with `layers`, an int32 (`| 0`
+   * of the mask): 0xffffffff itself is a double, which V8 boxes on the heap when it passes one.
+   */
   private renderLightmapInto(resources: Resources, layers: number): void {
     const start = this.measureCpuTime ? performance.now() : 0;
     const plan = this.plan;

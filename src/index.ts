@@ -16,5 +16,5 @@ export { SceneFormatError } from './format/SceneFormatError';
 export { createSceneObjects, describeScene, type SceneObjects, type CookieResolver, type SceneDescriptionInput } from './format/sceneObjects';
 export {
   SCENE_FORMAT, SCENE_FORMAT_VERSION, SCENE_MAX_HULL_POINTS, type SceneDocument, type SceneCamera, type SceneHull, type SceneLight,
-  type SceneLightBase, type ScenePointLight, type SceneSpotlight, type SceneTexturedLight, type SceneLook,
+  type SceneLightBase, type ScenePointLight, type SceneSpotlight, type SceneTexturedLight, type SceneDirectionalLight, type SceneLook,
 } from './format/SceneDocument';

@@ -2,7 +2,7 @@ import { library as baselineLibrary } from 'virtual:penumbra-baseline';
 import { readExtraStats, type ExtraStats } from '../extraStats';
 import { FillFloor } from '../floor';
 import { CURRENT, type BenchRenderer, type RendererLibrary } from '../library';
-import { createScene, SCENES, WORLD_HEIGHT, WORLD_WIDTH, type BenchScene } from '../scenes';
+import { createScene, runsOn, SCENES, WORLD_HEIGHT, WORLD_WIDTH, type BenchScene } from '../scenes';
 import { createFrameBounds, disposeFrameBounds, type FrameBounds } from './bounds';
 import { measureMicroRow, type MicroRow } from './micro';
 import { measureShadowStatistics } from './statistics';
@@ -65,7 +65,7 @@ function contender(library: RendererLibrary, name: string, lightmapScale: number
 const page: BenchPage = {
   setup(name, lightmapScale, withBounds) {
     const now = contender(CURRENT, name, lightmapScale);
-    const old = baselineLibrary ? contender(baselineLibrary, name, lightmapScale) : null;
+    const old = baselineLibrary && runsOn(SCENES.find((scene) => scene.name === name)!, baselineLibrary) ? contender(baselineLibrary, name, lightmapScale) : null;
     const bounds = withBounds ? createFrameBounds(gl, { ambientColor: [0.05, 0.05, 0.05], lightmapScale }, now.scene.lights, now.scene.hulls) : null;
     current = { now, old, floor: new FillFloor(gl, WORLD_WIDTH, WORLD_HEIGHT), bounds, frame: 0 };
   },

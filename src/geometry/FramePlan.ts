@@ -124,7 +124,7 @@ export class FramePlan {
     const strips = draw.strips, bins = this.bins, grid = this.grid;
     const box = writeUpstreamBox(draw, this.upstreamBox);
     const count = grid.search(box);
-    writeStrips(draw, light, grid.leastAlong(Math.cos(light.rotation), Math.sin(light.rotation)), strips);
+    writeStrips(draw, light, grid.extent, strips);
     bins.beginDirectional(strips);
     const layers = geometry.layers, shadowLayers = light.shadowLayers;
     for (let i = 0; i < count; i++) {
@@ -198,10 +198,11 @@ function writeUpstreamBox(draw: LightDraw, box: Float64Array): Float64Array {
 
 /**
  * Sets a directional light's strips over the view quad of `draw`, with the first distance bucket
- * at `hullsFrom`, the least coordinate along the travel of the filed hulls' bounds (a hull's circle
- * may reach a little further: it goes in the first bucket).
+ * at the least coordinate along the travel of the view and of `hulls`, the box of the hulls searched
+ * (a hull's circle may reach a little further: it goes in the first bucket). Doubles go through
+ * objects, not arguments: V8 boxes a double passed to a function it does not inline.
  */
-function writeStrips(draw: LightDraw, light: DirectionalLight, hullsFrom: number, strips: DirectionalStrips): void {
+function writeStrips(draw: LightDraw, light: DirectionalLight, hulls: Float64Array, strips: DirectionalStrips): void {
   const travelX = Math.cos(light.rotation), travelY = Math.sin(light.rotation), q = draw.quad;
   strips.travelX = travelX;
   strips.travelY = travelY;
@@ -218,6 +219,9 @@ function writeStrips(draw: LightDraw, light: DirectionalLight, hullsFrom: number
   strips.perpBase = perpMin;
   strips.width = Math.max(perpMax - perpMin, 1e-9) / BIN_COUNT;
   strips.alongEnd = alongMax;
+  // HullGrid.leastAlong inline: its arguments would be boxed.
+  const hullsFrom = hulls[0] > hulls[2] ? Infinity
+    : (travelX < 0 ? hulls[2] : hulls[0]) * travelX + (travelY < 0 ? hulls[3] : hulls[1]) * travelY;
   strips.alongBase = Math.min(alongMin, hullsFrom);
   strips.bucketWidth = Math.max(alongMax - strips.alongBase, 1e-9) / DISTANCE_BUCKETS;
 }

@@ -14,6 +14,8 @@ const CELLS_PER_HULL = 4;
  */
 export class HullGrid {
   private cellSize = MIN_CELL_SIZE;
+  /** `[minX, minY, maxX, maxY]` of the boxes the last `build` filed (infinite, inside out, when none was). */
+  readonly extent = new Float64Array(4);
   private originX = 0;
   private originY = 0;
   private columns = 0;
@@ -52,6 +54,11 @@ export class HullGrid {
       if (bounds[k + 3] > maxY) maxY = bounds[k + 3];
       filedCount++;
     }
+    const extent = this.extent;
+    extent[0] = minX;
+    extent[1] = minY;
+    extent[2] = maxX;
+    extent[3] = maxY;
     if (filedCount === 0) {
       this.columns = this.rows = 0;
       return;
@@ -82,11 +89,11 @@ export class HullGrid {
    * Puts into `found` the numbers of the filed boxes that overlap the box
    * `[minX, minY, maxX, maxY]`, each once; returns how many.
    */
-  /** The least value of x·dx + y·dy over the boxes filed by the last `build` (their bounds' corners); +∞ when none was. */
+  /** The least value of x·dx + y·dy over {@link HullGrid.extent}'s corners; +∞ when nothing was filed. */
   leastAlong(dx: number, dy: number): number {
-    if (this.columns === 0) return Infinity;
-    const size = this.cellSize;
-    return (dx < 0 ? this.originX + this.columns * size : this.originX) * dx + (dy < 0 ? this.originY + this.rows * size : this.originY) * dy;
+    const e = this.extent;
+    if (e[0] > e[2]) return Infinity;
+    return (dx < 0 ? e[2] : e[0]) * dx + (dy < 0 ? e[3] : e[1]) * dy;
   }
 
   search(box: ArrayLike<number>): number {

@@ -8,7 +8,8 @@ import { DirectionalLight, Spotlight, TexturedLight, type LightKind } from '../s
 import { shaderSources, type LightStages } from './shaders';
 import { ShadowUnits } from './ShadowTextures';
 
-const COOKIE_UNIT = 2;
+/** The texture unit of a textured light's cookie (the shadow textures take the others, see ShadowUnits). */
+export const COOKIE_UNIT = 2;
 
 /**
  * Light pass: owns the lightmap (RGBA16F where the context can render to it, so overlapping lights

@@ -2,7 +2,8 @@ import type { Page } from 'puppeteer';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { lightmapToWorldRows } from '../reference/buildScene';
 import { compareToReference, formatErrorTable, type SceneErrors } from '../reference/compareToReference';
-import { MAX_LIMIT, MEAN_LIMIT, P99_LIMIT, UMBRA_LIMIT } from '../reference/limits';
+import { limitViolations, MAX_LIMIT, MEAN_LIMIT, P99_LIMIT, UMBRA_LIMIT } from '../reference/limits';
+import { computeOccludedReference, OCCLUDED_SCENES } from '../reference/occludedReference';
 import { REFERENCE_SCENES } from '../reference/scenes';
 import { computeReference } from '../reference/softShadowReference';
 import { openReferencePage, type ReferencePage, type ReferencePageApi } from './referencePage';
@@ -40,6 +41,16 @@ describe('reference scenes in Chromium', () => {
         expect(errors.umbra.pixels).toBeGreaterThan(1000);
         expect(errors.umbra.max).toBeLessThanOrEqual(UMBRA_LIMIT);
       }
+    });
+  }
+
+  for (const scene of OCCLUDED_SCENES) {
+    it(`matches the Occluded reference: ${scene.name}`, async () => {
+      const texels = await page.evaluate((s) => (window as unknown as ReferencePageApi).renderScene(s), scene);
+      const errors = compareToReference(scene, lightmapToWorldRows(texels, scene.width, scene.height), computeOccludedReference(scene));
+      figures.push({ scene: scene.name, errors });
+      expect(pageErrors).toEqual([]);
+      expect(limitViolations(errors)).toEqual([]);
     });
   }
 

@@ -2,9 +2,10 @@ import { Hull, PenumbraRenderer, PointLight, ShadowType } from '../../src/index'
 import type { ReferenceScene } from './scenes';
 
 /**
- * A renderer set up for a reference scene: ambient black and Solid shadows, so the lightmap is
- * exactly Σ falloff × visible fraction × colour × intensity over the lights everywhere, hull
- * interiors included (the reference keeps them dark, as Solid does). Shared by the headless-gl
+ * A renderer set up for a reference scene: ambient black and the scene's shadow type (Solid by
+ * default), so the lightmap is exactly Σ falloff × visible fraction × colour × intensity over the
+ * lights everywhere, hull interiors included (the reference keeps them dark, as Solid does, or lit
+ * where the light reaches them, as Occluded does). Shared by the headless-gl
  * tests and the Chromium page.
  */
 export function createSceneRenderer(gl: WebGL2RenderingContext, scene: ReferenceScene): PenumbraRenderer {
@@ -20,8 +21,9 @@ export function createSceneRenderer(gl: WebGL2RenderingContext, scene: Reference
 export function setScene(renderer: PenumbraRenderer, scene: ReferenceScene): void {
   for (const light of [...renderer.lights]) renderer.removeLight(light);
   for (const hull of [...renderer.hulls]) renderer.removeHull(hull);
+  const shadowType = scene.shadowType === 'occluded' ? ShadowType.Occluded : ShadowType.Solid;
   for (const { position, range, radius, color, intensity } of scene.lights) {
-    renderer.addLight(new PointLight({ position, range, radius, color, intensity, shadowType: ShadowType.Solid }));
+    renderer.addLight(new PointLight({ position, range, radius, color, intensity, shadowType }));
   }
   for (const points of scene.hulls) renderer.addHull(new Hull(points));
   for (const points of scene.polylines ?? []) renderer.addHull(new Hull(points, { closed: false }));

@@ -1,5 +1,5 @@
 import { SceneGeometry } from './sceneGeometry';
-import type { Point, ReferenceScene } from './scenes';
+import { box, type Point, type ReferenceScene } from './scenes';
 import { computeReference, diskSamples, DISK_SAMPLES, LIT, PENUMBRA, shareOfSamplesSeen, UMBRA, type ReferenceImage } from './softShadowReference';
 
 /**
@@ -75,3 +75,22 @@ export function uShape(x: number, y: number, width: number, height: number, arm:
     [x + width, y], [x + width, y + height], [x, y + height],
   ];
 }
+
+const WIDTH = 160, HEIGHT = 120;
+const scene = (name: string, lights: ReferenceScene['lights'], hulls: ReferenceScene['hulls']): ReferenceScene => ({ name, width: WIDTH, height: HEIGHT, lights, hulls, shadowType: 'occluded' });
+
+/** Scenes of Occluded lights, each with hull pixels that are lit and (but two) some that are not. */
+export const OCCLUDED_SCENES: ReferenceScene[] = [
+  scene('a crate behind a wall is dark where the wall\'s shadow falls on it', [{ position: [30, 60], range: 160, radius: 6 }],
+    [box(60, 40, 8, 36), box(100, 34, 24, 24), box(100, 84, 16, 16)]),
+  scene('a U-shaped building shades its far arm from a light beside it', [{ position: [22, 44], range: 170, radius: 5 }],
+    [uShape(56, 30, 70, 56, 14, 32)]),
+  scene('a U-shaped building lit into its yard shades nothing of itself from there', [{ position: [91, 40], range: 120, radius: 4 }],
+    [uShape(56, 30, 70, 56, 14, 32)]),
+  scene('a convex hull never shades itself, and a hard light gives hard edges on the hull behind', [{ position: [20, 100], range: 200, radius: 0 }],
+    [[[50, 70], [70, 62], [84, 74], [78, 94], [56, 96]], box(100, 20, 40, 60)]),
+  scene('a torch whose disk reaches into an L-shaped hull lights the hull from the part of the disk inside it', [{ position: [66, 47], range: 110, radius: 9 }],
+    [[[40, 30], [56, 30], [56, 54], [110, 54], [110, 70], [40, 70]]]),
+  scene('two lights on both sides of a row of crates', [{ position: [20, 30], range: 150, radius: 4, color: [1, 0.6, 0.3] }, { position: [140, 100], range: 150, radius: 7, color: [0.3, 0.6, 1] }],
+    [box(50, 50, 14, 14), box(72, 56, 14, 14), box(94, 62, 14, 14), uShape(40, 82, 40, 26, 10, 14)]),
+];

@@ -28,6 +28,11 @@ export interface ReferenceScene {
    * light leaking through the seams between tiles shows as lit pixels the reference calls umbra.
    */
   darkUmbra?: boolean;
+  /**
+   * How the lights treat hull insides: `'solid'` (the default: dark, as computeReference has them)
+   * or `'occluded'` (lit where the light reaches them: computeOccludedReference).
+   */
+  shadowType?: 'solid' | 'occluded';
 }
 
 const WIDTH = 160;
