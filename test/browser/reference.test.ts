@@ -4,6 +4,7 @@ import { lightmapToWorldRows } from '../reference/buildScene';
 import { compareToReference, formatErrorTable, type SceneErrors } from '../reference/compareToReference';
 import { limitViolations, MAX_LIMIT, MEAN_LIMIT, P99_LIMIT, UMBRA_LIMIT } from '../reference/limits';
 import { computeOccludedReference, OCCLUDED_SCENES } from '../reference/occludedReference';
+import { asLitScene, computeDirectionalReference, DIRECTIONAL_SCENES } from '../reference/directionalReference';
 import { REFERENCE_SCENES } from '../reference/scenes';
 import { computeReference } from '../reference/softShadowReference';
 import { openReferencePage, type ReferencePage, type ReferencePageApi } from './referencePage';
@@ -48,6 +49,16 @@ describe('reference scenes in Chromium', () => {
     it(`matches the Occluded reference: ${scene.name}`, async () => {
       const texels = await page.evaluate((s) => (window as unknown as ReferencePageApi).renderScene(s), scene);
       const errors = compareToReference(scene, lightmapToWorldRows(texels, scene.width, scene.height), computeOccludedReference(scene));
+      figures.push({ scene: scene.name, errors });
+      expect(pageErrors).toEqual([]);
+      expect(limitViolations(errors)).toEqual([]);
+    });
+  }
+
+  for (const scene of DIRECTIONAL_SCENES) {
+    it(`matches the directional reference: ${scene.name}`, async () => {
+      const texels = await page.evaluate((s) => (window as unknown as ReferencePageApi).renderDirectionalScene(s), scene);
+      const errors = compareToReference(asLitScene(scene), lightmapToWorldRows(texels, scene.width, scene.height), computeDirectionalReference(scene));
       figures.push({ scene: scene.name, errors });
       expect(pageErrors).toEqual([]);
       expect(limitViolations(errors)).toEqual([]);

@@ -8,10 +8,13 @@ import type { IlluminationComparison } from '../reference/illuminationComparison
 import type { ReferenceScene } from '../reference/scenes';
 import { collectPageErrors, launchChromium } from './chromium';
 import { serveDirectory } from './staticServer';
+import type { DirectionalReferenceScene } from '../reference/directionalReference';
 
 /** What test/browser/reference-page/main.ts puts on `window`. */
 export interface ReferencePageApi {
   renderScene(scene: ReferenceScene): number[];
+  /** The lightmap of a directional light's scene (test/reference/directionalReference.ts). */
+  renderDirectionalScene(scene: DirectionalReferenceScene): number[];
   renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before: number[]; after: number[]; lostFrameError: string | null; windowErrors: string[] }>;
   checkHostState(): HostStateReport;
   compareIllumination(scene: ReferenceScene): IlluminationComparison & { glError: number; floatLightmap: boolean };

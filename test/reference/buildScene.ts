@@ -1,5 +1,6 @@
-import { Hull, PenumbraRenderer, PointLight, ShadowType } from '../../src/index';
-import type { ReferenceScene } from './scenes';
+import { DirectionalLight, Hull, PenumbraRenderer, PointLight, ShadowType } from '../../src/index';
+import type { DirectionalReferenceScene } from './directionalReference';
+import type { Point, ReferenceScene } from './scenes';
 
 /**
  * A renderer set up for a reference scene: ambient black and the scene's shadow type (Solid by
@@ -21,12 +22,33 @@ export function createSceneRenderer(gl: WebGL2RenderingContext, scene: Reference
 export function setScene(renderer: PenumbraRenderer, scene: ReferenceScene): void {
   for (const light of [...renderer.lights]) renderer.removeLight(light);
   for (const hull of [...renderer.hulls]) renderer.removeHull(hull);
-  const shadowType = scene.shadowType === 'occluded' ? ShadowType.Occluded : ShadowType.Solid;
+  const shadowType = SHADOW_TYPES[scene.shadowType ?? 'solid'];
   for (const { position, range, radius, color, intensity } of scene.lights) {
     renderer.addLight(new PointLight({ position, range, radius, color, intensity, shadowType }));
   }
   for (const points of scene.hulls) renderer.addHull(new Hull(points));
   for (const points of scene.polylines ?? []) renderer.addHull(new Hull(points, { closed: false }));
+}
+
+const SHADOW_TYPES = { solid: ShadowType.Solid, illuminated: ShadowType.Illuminated, occluded: ShadowType.Occluded } as const;
+
+/**
+ * A renderer set up for a directional reference scene: ambient black, the scene's sun and shadow
+ * type, each hull placed at its centre, so its coarse bounds (around its position) are as tight as
+ * its points': the search for hulls upstream, not a loose box, must find the far ones.
+ */
+export function createDirectionalSceneRenderer(gl: WebGL2RenderingContext, scene: DirectionalReferenceScene): PenumbraRenderer {
+  const renderer = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0], width: scene.width, height: scene.height });
+  for (const points of scene.hulls) renderer.addHull(centredHull(points));
+  for (const points of scene.polylines ?? []) renderer.addHull(new Hull(points, { closed: false }));
+  const { rotation, angularSize, color, intensity } = scene.light;
+  renderer.addLight(new DirectionalLight({ rotation, angularSize, color, intensity, shadowType: SHADOW_TYPES[scene.shadowType] }));
+  return renderer;
+}
+
+function centredHull(points: readonly Point[]): Hull {
+  const cx = points.reduce((sum, p) => sum + p[0], 0) / points.length, cy = points.reduce((sum, p) => sum + p[1], 0) / points.length;
+  return new Hull(points.map(([x, y]): Point => [x - cx, y - cy]), { position: [cx, cy] });
 }
 
 /** Lightmap texels (RGBA, rows bottom-up as GL reads them) → RGB rows top-down as the world is laid out. */

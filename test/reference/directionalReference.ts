@@ -1,6 +1,6 @@
-import { writeEdgesSeenFromInside } from './occludedReference';
+import { uShape, writeEdgesSeenFromInside } from './occludedReference';
 import { SceneGeometry, segmentsCross } from './sceneGeometry';
-import type { Point } from './scenes';
+import { box, type Point, type ReferenceScene } from './scenes';
 import {
   diskSamples, DISK_SAMPLES, HARD_EDGE_BAND, LIT, OUTLINE_BAND, PENUMBRA, shareOfSamplesSeen, UMBRA, type ReferenceImage,
 } from './softShadowReference';
@@ -162,4 +162,31 @@ function nearHardShadowEdge(geometry: SceneGeometry, px: number, py: number, rot
     if (dx * travelX + dy * travelY > 0 && Math.abs(dx * travelY - dy * travelX) < HARD_EDGE_BAND) return true;
   }
   return false;
+}
+
+const WIDTH = 160, HEIGHT = 120;
+const tiles = (x: number, y: number, count: number, size: number): Point[][] => Array.from({ length: count }, (_, i) => box(x, y + i * size, size, size));
+
+/** A directional reference scene, and whether it is a tile wall (held to UMBRA_LIMIT in its umbra). */
+export type DirectionalScene = DirectionalReferenceScene & { tileWall?: boolean };
+const scene = (name: string, light: DirectionalScene['light'], hulls: Point[][], extra: Partial<DirectionalScene> = {}): DirectionalScene => ({
+  name, width: WIDTH, height: HEIGHT, light, shadowType: 'solid', hulls, ...extra,
+});
+
+/** Scenes of one directional light, rendered on headless-gl and in Chromium. */
+export const DIRECTIONAL_SCENES: DirectionalScene[] = [
+  scene('a wall under a low sun', { rotation: 0.3, angularSize: 0.1 }, [box(40, 30, 10, 40)]),
+  scene('a row of posts under a hard noon sun', { rotation: Math.PI / 2, angularSize: 0 }, [box(30, 20, 6, 6), box(60, 24, 6, 6), box(90, 20, 6, 6), box(120, 28, 6, 6)]),
+  scene('crates under an overcast sky', { rotation: 2.2, angularSize: 0.6, color: [0.6, 0.7, 1] }, [box(50, 40, 20, 20), box(95, 60, 16, 24), [[120, 30], [140, 36], [128, 50]]]),
+  scene('a hull far upstream, out of view, shadows into it', { rotation: 0.05, angularSize: 0.03 }, [box(-400, 40, 20, 30)]),
+  scene('a wall of touching tiles lets no light through', { rotation: -0.2, angularSize: 0.08 }, tiles(60, 10, 12, 8), { tileWall: true }),
+  scene('a concave building under the sun with Occluded hulls', { rotation: 0.4, angularSize: 0.12 }, [uShape(30, 30, 70, 56, 14, 32), box(120, 20, 14, 14)], { shadowType: 'occluded' }),
+  scene('Illuminated hulls are lit and cast shadows', { rotation: -2.5, angularSize: 0.2 }, [box(70, 50, 24, 16), [[30, 80], [50, 70], [44, 100]]], { shadowType: 'illuminated' }),
+  scene('fences and posts across a slanted sun', { rotation: 0.9, angularSize: 0.05 }, [box(100, 80, 8, 8)], { polylines: [[[20, 40], [60, 30], [80, 50]], [[110, 20], [140, 25]]] }),
+];
+
+/** The scene as compareToReference counts full light: one light of the sun's colour × intensity. */
+export function asLitScene(scene: DirectionalReferenceScene): ReferenceScene {
+  const { color, intensity } = scene.light;
+  return { name: scene.name, width: scene.width, height: scene.height, hulls: scene.hulls, lights: [{ position: [0, 0], range: 1, radius: 0, color, intensity }] };
 }

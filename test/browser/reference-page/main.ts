@@ -4,7 +4,8 @@
 // Chromium's JS. Each scene is built with all of its lights and hulls by
 // test/reference/buildScene.ts, as on headless-gl. Exposes its entry points on `window`
 // (typed in test/browser/referencePage.ts).
-import { createSceneRenderer, setScene } from '../../reference/buildScene';
+import { createDirectionalSceneRenderer, createSceneRenderer, setScene } from '../../reference/buildScene';
+import type { DirectionalReferenceScene } from '../../reference/directionalReference';
 import type { ReferenceScene } from '../../reference/scenes';
 import { readTexture } from '../../gl/readTexture';
 import { callsThrowing } from '../../gl/fixtures';
@@ -28,8 +29,19 @@ function readLightmap(gl: WebGL2RenderingContext, texture: WebGLTexture, width: 
 }
 
 function renderScene(scene: ReferenceScene): number[] {
+  return renderWith(scene, createSceneRenderer);
+}
+
+function renderDirectionalScene(scene: DirectionalReferenceScene): number[] {
+  return renderWith(scene, createDirectionalSceneRenderer);
+}
+
+/** Renders the lightmap of `scene` with the renderer `create` sets up for it, read back. */
+function renderWith<T extends { name: string; width: number; height: number }>(
+  scene: T, create: (gl: WebGL2RenderingContext, scene: T) => PenumbraRenderer,
+): number[] {
   const gl = context(scene.width, scene.height);
-  const renderer = createSceneRenderer(gl, scene);
+  const renderer = create(gl, scene);
   renderer.renderLightmap();
   const pixels = readLightmap(gl, renderer.lightmapTexture, scene.width, scene.height);
   const error = gl.getError();
@@ -131,4 +143,4 @@ function compareIllumination(scene: ReferenceScene): IlluminationComparison & { 
   return { ...compareReferenceScene(gl, illuminationRenderer, scene), floatLightmap: illuminationRenderer.hasFloatLightmap };
 }
 
-Object.assign(window, { renderScene, renderAcrossContextLoss, checkHostState, compareIllumination });
+Object.assign(window, { renderScene, renderDirectionalScene, renderAcrossContextLoss, checkHostState, compareIllumination });
