@@ -12,7 +12,7 @@ import { DebugPass } from './passes/DebugPass';
 import { COOKIE_UNIT, LightPass } from './passes/LightPass';
 import { ShadowTextures, ShadowUnits } from './passes/ShadowTextures';
 import { Hull } from './scene/Hull';
-import { IlluminationQuery, type CookieSampler, type Illumination, type IlluminationOptions } from './scene/illumination';
+import { IlluminationQuery, type Illumination, type IlluminationOptions } from './scene/illumination';
 import { Light, TexturedLight, type LightOptions } from './scene/lights';
 import { ALL_LAYERS, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, describeValue, frozenColor, type ColorLike } from './scene/validate';
 
@@ -341,6 +341,7 @@ export class PenumbraRenderer {
   illuminationAt(x: number, y: number, options?: IlluminationOptions, out?: Illumination): Illumination {
     assertFinite('PenumbraRenderer.illuminationAt x', x);
     assertFinite('PenumbraRenderer.illuminationAt y', y);
+    if (options?.layers !== undefined) assertLayerMask('PenumbraRenderer.illuminationAt: options.layers', options.layers);
     return (this.illumination ??= new IlluminationQuery()).at(this._lights, this._hulls, this._ambient, x, y, options, out);
   }
 
@@ -354,14 +355,16 @@ export class PenumbraRenderer {
    * @param x World x of the point.
    * @param y World y of the point.
    * @param threshold Luminance to exceed. Default `0.1`.
-   * @param options The cookie of textured lights (see {@link IlluminationOptions.cookie}).
+   * @param options The cookie of textured lights and the content layers (see {@link IlluminationOptions}).
    * @throws RangeError when x, y or threshold is not a finite number.
    */
-  isLit(x: number, y: number, threshold = 0.1, options?: { cookie?: CookieSampler | null }): boolean {
+  isLit(x: number, y: number, threshold = 0.1, options?: Pick<IlluminationOptions, 'cookie' | 'layers'>): boolean {
     assertFinite('PenumbraRenderer.isLit x', x);
     assertFinite('PenumbraRenderer.isLit y', y);
     assertFinite('PenumbraRenderer.isLit threshold', threshold);
-    return (this.illumination ??= new IlluminationQuery()).isLit(this._lights, this._hulls, x, y, threshold, options?.cookie ?? null);
+    if (options?.layers !== undefined) assertLayerMask('PenumbraRenderer.isLit: options.layers', options.layers);
+    const layers = (options?.layers ?? ALL_LAYERS) | 0;
+    return (this.illumination ??= new IlluminationQuery()).isLit(this._lights, this._hulls, x, y, threshold, options?.cookie ?? null, layers);
   }
 
   /**

@@ -122,6 +122,8 @@ export interface SceneLightBase {
   shadowColor: [number, number, number];
   /** 0..1. Optional, default `1`; not in version 1 files. */
   shadowStrength: number;
+  /** Content layers the light lights, an integer 0..0xffffffff. Optional, default `0xffffffff`; not in version 1 files. */
+  litLayers: number;
 }
 
 /** A `PointLight`. */

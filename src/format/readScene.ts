@@ -36,7 +36,7 @@ const VERSION_FIELDS: Readonly<Record<number, VersionFields>> = {
   [SCENE_FORMAT_VERSION]: {
     document: DOCUMENT_FIELDS,
     hull: [...HULL_FIELDS_V1, 'closed', 'layers'],
-    light: [...LIGHT_FIELDS_V1, 'shadowLayers', 'shadowColor', 'shadowStrength'],
+    light: [...LIGHT_FIELDS_V1, 'shadowLayers', 'shadowColor', 'shadowStrength', 'litLayers'],
     shadowTypes: [...SHADOW_TYPES_V1, 'occluded'],
     lightKinds: [...LIGHT_KINDS_V1, 'directional'],
   },
@@ -193,6 +193,7 @@ function readSharedLightFields(light: Fields, shadowTypes: VersionFields['shadow
     castsShadows: booleanField(light, 'castsShadows', true),
     ignoredHulls: readIgnoredHulls(light, hullCount),
     shadowLayers: layersField(light, 'shadowLayers', 0xffffffff),
+    litLayers: layersField(light, 'litLayers', 0xffffffff),
     shadowColor: colorField(light, 'shadowColor', [0, 0, 0]),
     shadowStrength: numberField(light, 'shadowStrength', 1, 0, 1),
   };

@@ -98,6 +98,7 @@ function describeLight(light: Light, hullIndex: ReadonlyMap<Hull, number>, cooki
     shadowLayers: light.shadowLayers,
     shadowColor: [...light.shadowColor] as [number, number, number],
     shadowStrength: light.shadowStrength,
+    litLayers: light.litLayers,
   };
   // Its inherited position, range, radius and origin mean nothing: a file does not keep them.
   if (light instanceof DirectionalLight) return { kind: 'directional', ...shared, angularSize: light.angularSize };

@@ -3,6 +3,10 @@ import { HullGrid } from '../geometry/HullGrid';
 import { isInsidePolygon } from '../geometry/polygon';
 import type { Hull } from './Hull';
 import { DirectionalLight, ShadowType, Spotlight, TexturedLight, type Light } from './lights';
+import { ALL_LAYERS } from './validate';
+
+/** Every content layer, as an int32 (0xffffffff | 0). */
+const EVERY_LAYER = -1;
 
 /**
  * The value of a {@link TexturedLight}'s cookie (what the light pass reads from its texture's red
@@ -32,6 +36,11 @@ export interface IlluminationOptions {
    * an 8-bit image, so its figures are an upper bound (return 0 to leave textured lights out).
    */
   cookie?: CookieSampler | null;
+  /**
+   * Content layers (a bit mask): only the lights whose `litLayers` share a bit with it, as the
+   * lightmap `renderer.draw(layers)` builds. Default every layer.
+   */
+  layers?: number;
 }
 
 /** What one light adds at a point; see `PenumbraRenderer.illuminationAt`. */
@@ -142,6 +151,8 @@ export class IlluminationQuery {
     const perLight = options?.perLight ?? true;
     const includeAmbient = options?.includeAmbient ?? true;
     const cookie = options?.cookie ?? null;
+    // An int32: 0xffffffff is a double (see PenumbraRenderer.renderLightmapInto).
+    const layers = (options?.layers ?? ALL_LAYERS) | 0;
     // NaN, not 0: V8 then lays the number fields out as doubles from the start, and later stores of
     // doubles into them reuse their boxes instead of allocating new ones.
     const result = out ?? { color: [NaN, NaN, NaN], luminance: NaN, lights: [] };
@@ -153,7 +164,7 @@ export class IlluminationQuery {
     let listed = 0;
     for (let i = 0; i < lights.length; i++) {
       const light = lights[i];
-      if (!this.strengthOf(light, cookie) || !this.visibilityOf(light, hulls)) continue;
+      if ((light.litLayers & layers) === 0 || !this.strengthOf(light, cookie) || !this.visibilityOf(light, hulls)) continue;
       const strength = values[STRENGTH], visibility = values[VISIBILITY];
       const color = light.color, shadowColor = light.shadowColor, shadowStrength = light.shadowStrength;
       const scale = light.intensity * strength, hidden = 1 - visibility;
@@ -194,7 +205,7 @@ export class IlluminationQuery {
    * bounds each light's share from its strength alone (the shadows keep between 0 and all of it),
    * then works out visibilities only while the bounds leave the answer open.
    */
-  isLit(lights: readonly Light[], hulls: readonly Hull[], x: number, y: number, threshold: number, cookie: CookieSampler | null): boolean {
+  isLit(lights: readonly Light[], hulls: readonly Hull[], x: number, y: number, threshold: number, cookie: CookieSampler | null, layers = EVERY_LAYER): boolean {
     this.sync(hulls);
     if (this.strengths.length < lights.length) {
       const capacity = Math.ceil(lights.length * 1.5);
@@ -209,7 +220,7 @@ export class IlluminationQuery {
     for (let i = 0; i < lights.length; i++) {
       const light = lights[i];
       lows[i] = highs[i] = strengths[i] = 0;
-      if (!this.strengthOf(light, cookie)) continue;
+      if ((light.litLayers & layers) === 0 || !this.strengthOf(light, cookie)) continue;
       const strength = strengths[i] = values[STRENGTH];
       const color = light.color;
       const full = (LUMA_R * color[0] + LUMA_G * color[1] + LUMA_B * color[2]) * light.intensity * strength;

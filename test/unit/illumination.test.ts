@@ -174,6 +174,22 @@ describe('IlluminationQuery: the rules of the renderer\'s model', () => {
     expect(at(0, behindWall)).toBeCloseTo(falloffAt(behindWall), 9);
   });
 
+  it('counts only the lights whose litLayers share a bit with the content layers asked for', () => {
+    const warm = new PointLight({ ...LIGHT, color: [1, 0.5, 0.2], litLayers: 0b01 });
+    const cold = new PointLight({ ...LIGHT, position: [30, 60], color: [0.2, 0.5, 1], litLayers: 0b10 });
+    const point: Point = [80, 50];
+    const both = illuminationAt([warm, cold], [], ...point);
+    const warmOnly = illuminationAt([warm, cold], [], ...point, { layers: 0b01 });
+    const coldOnly = illuminationAt([warm, cold], [], ...point, { layers: 0b10 });
+    expect(warmOnly.lights.map((entry) => entry.light)).toEqual([warm]);
+    expect(coldOnly.lights.map((entry) => entry.light)).toEqual([cold]);
+    both.color.forEach((c, i) => expect(c).toBeCloseTo(warmOnly.color[i] + coldOnly.color[i], 12));
+    expect(illuminationAt([warm, cold], [], ...point, { layers: 0 }).color).toEqual([0, 0, 0]);
+    const query = new IlluminationQuery();
+    expect(query.isLit([warm, cold], [], ...point, warmOnly.luminance - 1e-9, null, 0b01)).toBe(true);
+    expect(query.isLit([warm, cold], [], ...point, warmOnly.luminance + 1e-9, null, 0b01)).toBe(false);
+  });
+
   it('passes through ignored hulls, and through every hull without castsShadows', () => {
     const { wall, crate } = layered();
     const ignoring = new PointLight({ ...LIGHT, ignoredHulls: [wall] });
