@@ -4,6 +4,7 @@ import { IlluminationQuery, type Illumination } from '../../src/scene/illuminati
 import { computeDirectionalReference, type DirectionalReferenceScene } from '../reference/directionalReference';
 import { uShape } from '../reference/occludedReference';
 import { box, type Point } from '../reference/scenes';
+import { messageOf } from './thrown';
 
 /**
  * The directional light: its class, and `illuminationAt` for it (src/scene/illumination.ts)
@@ -13,17 +14,6 @@ import { box, type Point } from '../reference/scenes';
 
 const figures: string[] = [];
 afterAll(() => console.log(figures.join('\n')));
-
-/** The message of the error `act` throws, checking its class. */
-function messageOf(act: () => unknown, type: ErrorConstructor): string {
-  try {
-    act();
-  } catch (error) {
-    expect(error).toBeInstanceOf(type);
-    return (error as Error).message;
-  }
-  throw new Error('expected an error');
-}
 
 describe('DirectionalLight', () => {
   it('has the sun as its default and no position, range or bounds', () => {

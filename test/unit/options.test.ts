@@ -2,6 +2,7 @@ import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
 import * as source from '../../src/index';
+import { messageOf } from './thrown';
 
 type Library = typeof source;
 
@@ -10,17 +11,6 @@ type Library = typeof source;
  * builds it first; run `npm run build` before running this file alone.
  */
 const DIST_ENTRY = new URL('../../dist/index.js', import.meta.url);
-
-/** The message of the error `act` throws, checking its class. */
-function messageOf(act: () => unknown, type: ErrorConstructor): string {
-  try {
-    act();
-  } catch (error) {
-    expect(error).toBeInstanceOf(type);
-    return (error as Error).message;
-  }
-  throw new Error('expected an error');
-}
 
 const texture = {} as WebGLTexture;
 const LIGHTS = [
