@@ -14,6 +14,7 @@ uniform vec4 u_shadow; // position xy, disk radius, row of the light's shadow bi
 uniform float u_shadowType; // how the light treats the inside of hulls: SHADOW_SOLID, … (src/geometry/shadowLayout.ts)
 uniform vec3 u_shadowKept; // the fraction of each channel a pixel in full shadow keeps (Light.writeShadowKept)
 uniform vec3 u_strips; // a directional light's strips: perpBase, width, alongBase (DirectionalStrips)
+uniform vec2 u_falloff; // the falloff's code and inverse-square core (see the chunk light-common)
 
 out vec2 v_fromLight;
 out vec2 v_uv;
@@ -23,6 +24,7 @@ flat out vec4 v_shadow;
 flat out float v_shadowType;
 flat out vec3 v_shadowKept;
 flat out vec3 v_strips;
+flat out vec2 v_falloff;
 
 void main() {
   vec2 world = u_quad[0] + a_corner.x * u_quad[1] + a_corner.y * u_quad[2];
@@ -34,6 +36,7 @@ void main() {
   v_shadowType = u_shadowType;
   v_shadowKept = u_shadowKept;
   v_strips = u_strips;
+  v_falloff = u_falloff;
   gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
   // Depth ½ whatever the view: the quadrature pass tests it against the main pass's marks (LightPass).
   gl_Position.z = 0.0;

@@ -3,7 +3,7 @@ export { ToneMapping, Dithering } from './passes/compositeLayout';
 export type { Illumination, IlluminationOptions, LightIllumination, CookieSampler } from './scene/illumination';
 export { Hull, type HullOptions } from './scene/Hull';
 export {
-  Light, PointLight, Spotlight, TexturedLight, DirectionalLight, ShadowType,
+  Light, PointLight, Spotlight, TexturedLight, DirectionalLight, ShadowType, Falloff,
   type LightOptions, type SpotlightOptions, type TexturedLightOptions, type DirectionalLightOptions, type LightKind,
 } from './scene/lights';
 export type { Vec2Like, ColorLike } from './scene/validate';

@@ -30,7 +30,7 @@ function light(position: Point, fields: Partial<SceneLightBase> = {}): SceneLigh
   return {
     position, range: 300, radius: 10, color: [1, 1, 1], intensity: 1, rotation: 0, origin: [0.5, 0.5],
     shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [],
-    shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, ...fields,
+    shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, falloff: 'linear', ...fields,
   };
 }
 

@@ -10,9 +10,22 @@ in vec2 v_uv;
 flat in vec3 v_color;
 out vec4 o_light;
 
-// Linear falloff: 1 at the centre, 0 at the range.
+flat in vec2 v_falloff; // the curve's code (FALLOFF_LINEAR, …: src/passes/lightLayout.ts), the inverse-square core in ranges
+
+// The light's strength by distance (Falloff in src/scene/lights.ts, and falloffAt there on the
+// CPU): 1 at the centre, 0 from the range on. A branch on a value the whole draw shares.
 float distanceFalloff() {
-  return max(0.0, 1.0 - length(v_fromLight));
+  float t = length(v_fromLight);
+  int curve = int(v_falloff.x);
+  if (curve == FALLOFF_SMOOTH) {
+    float window = max(0.0, 1.0 - t * t);
+    return window * window;
+  }
+  if (curve == FALLOFF_INVERSE_SQUARE) {
+    float t2 = t * t, window = max(0.0, 1.0 - t2 * t2), core2 = v_falloff.y * v_falloff.y;
+    return window * window * core2 / (core2 + t2);
+  }
+  return max(0.0, 1.0 - t);
 }
 
 #ifdef SHADOWED

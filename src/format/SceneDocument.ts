@@ -91,7 +91,7 @@ export interface SceneHull {
 
 /**
  * Fields of the lights with a position (point, spot, textured), as in `LightOptions`. A
- * {@link SceneDirectionalLight} has all of them but `position`, `range`, `radius` and `origin`.
+ * {@link SceneDirectionalLight} has all of them but `position`, `range`, `radius`, `origin` and `falloff`.
  */
 export interface SceneLightBase {
   /** Required. */
@@ -124,6 +124,8 @@ export interface SceneLightBase {
   shadowStrength: number;
   /** Content layers the light lights, an integer 0..0xffffffff. Optional, default `0xffffffff`; not in version 1 files. */
   litLayers: number;
+  /** `"linear"`, `"smooth"` or `"inverseSquare"` (see `Falloff`). Optional, default `"linear"`; not in version 1 files, nor for directional lights. */
+  falloff: 'linear' | 'smooth' | 'inverseSquare';
 }
 
 /** A `PointLight`. */
@@ -157,7 +159,7 @@ export interface SceneTexturedLight extends SceneLightBase {
  * every field of {@link SceneLightBase} but those about a position and a range (`position`,
  * `range`, `radius`, `origin`), which a file must not have.
  */
-export interface SceneDirectionalLight extends Omit<SceneLightBase, 'position' | 'range' | 'radius' | 'origin'> {
+export interface SceneDirectionalLight extends Omit<SceneLightBase, 'position' | 'range' | 'radius' | 'origin' | 'falloff'> {
   /** Which light class this is. */
   kind: 'directional';
   /** Apparent diameter of the light's disk in radians, 0..π/2. Optional, default `0.0093` (the sun). */

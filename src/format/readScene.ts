@@ -19,6 +19,7 @@ const LIGHT_FIELDS_V1 = [
   'castsShadows', 'ignoredHulls',
 ];
 const SHADOW_TYPES_V1 = ['solid', 'illuminated'] as const;
+const FALLOFFS = ['linear', 'smooth', 'inverseSquare'] as const;
 const LIGHT_KINDS_V1 = ['point', 'spot', 'textured'] as const;
 /** The fields hulls and lights (besides their kind's) may have, the shadow types and the light kinds, per version this reader knows. */
 interface VersionFields {
@@ -36,13 +37,13 @@ const VERSION_FIELDS: Readonly<Record<number, VersionFields>> = {
   [SCENE_FORMAT_VERSION]: {
     document: DOCUMENT_FIELDS,
     hull: [...HULL_FIELDS_V1, 'closed', 'layers'],
-    light: [...LIGHT_FIELDS_V1, 'shadowLayers', 'shadowColor', 'shadowStrength', 'litLayers'],
+    light: [...LIGHT_FIELDS_V1, 'shadowLayers', 'shadowColor', 'shadowStrength', 'litLayers', 'falloff'],
     shadowTypes: [...SHADOW_TYPES_V1, 'occluded'],
     lightKinds: [...LIGHT_KINDS_V1, 'directional'],
   },
 };
-/** The light fields a directional light lacks: it has no position and lights everything. */
-const POSITION_FIELDS: readonly string[] = ['position', 'range', 'radius', 'origin'];
+/** The light fields a directional light lacks: it has no position and lights everything alike. */
+const POSITION_FIELDS: readonly string[] = ['position', 'range', 'radius', 'origin', 'falloff'];
 const KIND_FIELDS = { point: [], spot: ['coneAngle', 'coneDecay'], textured: ['cookie', 'size'], directional: ['angularSize'] } as const;
 /** `DirectionalLight`'s default `angularSize`: the sun's apparent diameter, in radians. */
 const SUN_ANGULAR_SIZE = 0.0093;
@@ -180,7 +181,8 @@ function readLightBase(light: Fields, shadowTypes: VersionFields['shadowTypes'],
   const range = numberField(light, 'range', 100, 0);
   const radius = numberField(light, 'radius', 0, 0);
   const { color, intensity, rotation, ...rest } = readSharedLightFields(light, shadowTypes, hullCount);
-  return { position, range, radius, color, intensity, rotation, origin: vec2Field(light, 'origin', [0.5, 0.5]), ...rest };
+  const origin = vec2Field(light, 'origin', [0.5, 0.5]);
+  return { position, range, radius, color, intensity, rotation, origin, ...rest, falloff: choiceField(light, 'falloff', FALLOFFS, 'linear') };
 }
 
 function readSharedLightFields(light: Fields, shadowTypes: VersionFields['shadowTypes'], hullCount: number): SharedLightFields {

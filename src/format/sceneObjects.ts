@@ -108,6 +108,7 @@ function describeLight(light: Light, hullIndex: ReadonlyMap<Hull, number>, cooki
     range: light.range,
     radius: light.radius,
     origin: [...light.origin] as [number, number],
+    falloff: light.falloff,
   };
   if (light instanceof Spotlight) return { kind: 'spot', ...base, coneAngle: light.coneAngle, coneDecay: light.coneDecay };
   if (light instanceof TexturedLight) {

@@ -4,6 +4,7 @@ import { createPrograms, deletePrograms, type Program, type ProgramSources } fro
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import type { LightShapes } from '../gl/LightShapes';
 import { SHADOW_TYPE_CODES } from '../geometry/shadowLayout';
+import { FALLOFF_CODES } from './lightLayout';
 import { DirectionalLight, Spotlight, TexturedLight, type LightKind } from '../scene/lights';
 import { shaderSources, type LightStages } from './shaders';
 import { ShadowUnits } from './ShadowTextures';
@@ -31,6 +32,7 @@ export class LightPass {
   private readonly shadow = new Float32Array(4);
   private readonly shadowKept = new Float32Array(3);
   private readonly strips = new Float32Array(3);
+  private readonly falloff = new Float32Array(2);
   private readonly direction = new Float32Array(2);
   private readonly coneHalfAngle = new Float32Array(1);
   private readonly coneDecay = new Float32Array(1);
@@ -122,6 +124,7 @@ export class LightPass {
       gl.uniform3fv(uniforms.u_shadowKept, this.shadowKept);
     }
     if (uniforms.u_strips) gl.uniform3fv(uniforms.u_strips, this.strips);
+    if (uniforms.u_falloff) gl.uniform2fv(uniforms.u_falloff, this.falloff);
     if (light instanceof Spotlight) {
       gl.uniform2fv(uniforms.u_direction, this.direction);
       gl.uniform1fv(uniforms.u_coneHalfAngle, this.coneHalfAngle);
@@ -146,6 +149,8 @@ export class LightPass {
     this.shadow[2] = light.radius;
     this.shadow[3] = draw.binRow;
     light.writeShadowKept(this.shadowKept);
+    this.falloff[0] = FALLOFF_CODES[light.falloff];
+    this.falloff[1] = light.inverseSquareCore();
     if (light instanceof DirectionalLight) this.writeDirectionalUniforms(draw, light);
     if (light instanceof Spotlight) {
       this.direction[0] = Math.cos(light.rotation);

@@ -14,6 +14,7 @@ import shadowQuadrature from '../../shaders/chunks/shadow-quadrature.glsl?raw';
 import shadowVisibility from '../../shaders/chunks/shadow-visibility.glsl?raw';
 import { SHADOW_DEFINES } from '../geometry/shadowLayout';
 import { COMPOSITE_DEFINES, MAX_BLUR_RADIUS } from './compositeLayout';
+import { LIGHT_DEFINES } from './lightLayout';
 import { resolveIncludes, withDefines } from '../gl/program';
 
 const chunks = { 'light-common': lightCommon, 'shadow-visibility': shadowVisibility, 'shadow-behind': shadowBehind, 'shadow-quadrature': shadowQuadrature };
@@ -34,7 +35,7 @@ export interface LightStages {
 }
 
 function lightStage(source: string): LightStages {
-  const resolved = resolveChunks(source);
+  const resolved = withDefines(resolveChunks(source), LIGHT_DEFINES);
   return {
     unshadowed: resolved,
     shadowed: withDefines(resolved, { SHADOWED: '', ...SHADOW_DEFINES }),

@@ -2,7 +2,7 @@ import { DiskVisibility } from '../geometry/diskVisibility';
 import { HullGrid } from '../geometry/HullGrid';
 import { isInsidePolygon } from '../geometry/polygon';
 import type { Hull } from './Hull';
-import { DirectionalLight, ShadowType, Spotlight, TexturedLight, type Light } from './lights';
+import { DirectionalLight, falloffAt, ShadowType, Spotlight, TexturedLight, type Light } from './lights';
 import { ALL_LAYERS } from './validate';
 
 /** Every content layer, as an int32 (0xffffffff | 0). */
@@ -282,7 +282,7 @@ export class IlluminationQuery {
     }
     const dx = x - light.position[0], dy = y - light.position[1];
     const distance = Math.sqrt(dx * dx + dy * dy);
-    const falloff = 1 - distance / light.range;
+    const falloff = falloffAt(light.falloff, distance / light.range, light.inverseSquareCore());
     if (!(falloff > 0)) return false;
     if (!(light instanceof Spotlight)) {
       values[STRENGTH] = falloff;

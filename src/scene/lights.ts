@@ -24,6 +24,25 @@ export const ShadowType = {
 /** One of the {@link ShadowType} values. */
 export type ShadowType = (typeof ShadowType)[keyof typeof ShadowType];
 
+/**
+ * How a point light's or a spotlight's strength falls with the distance d from its position, t =
+ * d / range: every curve is 1 at the centre and 0 from the range on.
+ */
+export const Falloff = {
+  /** `max(0, 1 − t)`: the default. */
+  Linear: 'linear',
+  /** `max(0, 1 − t²)²`: flat near the centre, a soft edge at the range. */
+  Smooth: 'smooth',
+  /**
+   * `s² / (s² + t²) × max(0, 1 − t⁴)²`, s = max(radius, 1) / range: the light of a uniformly
+   * emitting disk of the light's radius seen face-on (inverse square beyond it), windowed to reach
+   * zero at the range. Physically based and bright only near a small light: raise the intensity.
+   */
+  InverseSquare: 'inverseSquare',
+} as const;
+/** One of the {@link Falloff} values. */
+export type Falloff = (typeof Falloff)[keyof typeof Falloff];
+
 /** Options shared by every light; every field has the default shown. */
 export interface LightOptions {
   /** World position of the light's centre (where shadows are cast from). Default `[0, 0]`. */
@@ -42,6 +61,8 @@ export interface LightOptions {
   origin?: Vec2Like;
   /** {@link ShadowType.Solid}, {@link ShadowType.Illuminated} or {@link ShadowType.Occluded}. Default `Illuminated`. */
   shadowType?: ShadowType;
+  /** How the light falls with distance (point lights and spotlights); see {@link Falloff}. Default `Linear`. */
+  falloff?: Falloff;
   /** A disabled light is not drawn. Default `true`. */
   enabled?: boolean;
   /** When false, the light ignores every hull. Default `true`. */
@@ -101,6 +122,7 @@ export abstract class Light {
   private _enabled = true;
   private _castsShadows = true;
   private _shadowType: ShadowType = ShadowType.Illuminated;
+  private _falloff: Falloff = Falloff.Linear;
   private _shadowLayers = ALL_LAYERS;
   private _litLayers = ALL_LAYERS;
   private _shadowColor: readonly [number, number, number] = Object.freeze([0, 0, 0] as const);
@@ -118,6 +140,7 @@ export abstract class Light {
     if (options.rotation !== undefined) this.rotation = options.rotation;
     if (options.origin !== undefined) this.origin = options.origin;
     if (options.shadowType !== undefined) this.shadowType = options.shadowType;
+    if (options.falloff !== undefined) this.falloff = options.falloff;
     if (options.enabled !== undefined) this.enabled = options.enabled;
     if (options.castsShadows !== undefined) this.castsShadows = options.castsShadows;
     if (options.ignoredHulls !== undefined) this.ignoreHulls(options.ignoredHulls);
@@ -220,6 +243,14 @@ export abstract class Light {
     this._shadowType = assertOneOf(`${this.className}.shadowType`, value, SHADOW_TYPES);
   }
 
+  /** How the light falls with distance; see {@link Falloff}. Textured and directional lights ignore it. */
+  get falloff(): Falloff {
+    return this._falloff;
+  }
+  set falloff(value: Falloff) {
+    this._falloff = assertOneOf(`${this.className}.falloff`, value, FALLOFFS);
+  }
+
   /** The hull layers that shadow this light; see {@link LightOptions.shadowLayers}. */
   get shadowLayers(): number {
     return this._shadowLayers;
@@ -272,6 +303,15 @@ export abstract class Light {
       if (!(hull instanceof Hull)) throw new TypeError(`${name}[${i}] must be a Hull, got ${describeValue(hull)}`);
     });
     for (const hull of list) this.ignoredHulls.add(hull);
+  }
+
+  /**
+   * The inverse-square falloff's core s in ranges (see {@link Falloff.InverseSquare}):
+   * max(radius, 1) / range.
+   * @internal
+   */
+  inverseSquareCore(): number {
+    return Math.max(this._radius, 1) / this._range;
   }
 
   /**
@@ -328,6 +368,25 @@ export abstract class Light {
 
 const CENTRE = [0.5, 0.5] as const;
 const SHADOW_TYPES: readonly ShadowType[] = Object.values(ShadowType);
+const FALLOFFS: readonly Falloff[] = Object.values(Falloff);
+
+/**
+ * The light's strength at distance t (in ranges) from its position by `falloff` (see
+ * {@link Falloff}); `core` is s, the inverse-square core in ranges. The same curves as
+ * `distanceFalloff` in shaders/chunks/light-common.glsl.
+ * @internal
+ */
+export function falloffAt(falloff: Falloff, t: number, core: number): number {
+  if (falloff === Falloff.Smooth) {
+    const window = Math.max(0, 1 - t * t);
+    return window * window;
+  }
+  if (falloff === Falloff.InverseSquare) {
+    const t2 = t * t, window = Math.max(0, 1 - t2 * t2), core2 = core * core;
+    return (window * window * core2) / (core2 + t2);
+  }
+  return Math.max(0, 1 - t);
+}
 
 
 /** An isotropic light: full at its centre, falling linearly to zero at `range`. */
@@ -474,7 +533,7 @@ function checkTexture(value: WebGLTexture): WebGLTexture {
 }
 
 /** Options of a {@link DirectionalLight}: those of every light but the ones about a position and a range. */
-export interface DirectionalLightOptions extends Omit<LightOptions, 'position' | 'range' | 'radius' | 'origin'> {
+export interface DirectionalLightOptions extends Omit<LightOptions, 'position' | 'range' | 'radius' | 'origin' | 'falloff'> {
   /**
    * Apparent diameter of the light's disk in radians, 0..π/2: the sun's is about 0.0093 (0.53°);
    * wider gives the soft shadows of an overcast sky, 0 hard shadows. Default `0.0093`.

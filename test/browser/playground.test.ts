@@ -23,7 +23,7 @@ function testScene(light: [number, number], range = 300): SceneDocument {
     lights: [{
       kind: 'point', position: light, range, radius: 0, color: [1, 1, 1], intensity: 1, rotation: 0, origin: [0.5, 0.5],
       shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [],
-      shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff,
+      shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, falloff: 'linear',
     }],
     look: { exposure: 1, toneMapping: 'none', dithering: 'none', lightmapBlur: 0 },
   };

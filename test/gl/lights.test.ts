@@ -1,5 +1,5 @@
 import { afterEach, describe, expect, it } from 'vitest';
-import { Hull, PenumbraRenderer, PointLight, ShadowType, Spotlight, TexturedLight } from '../../src/index';
+import { Falloff, Hull, PenumbraRenderer, PointLight, ShadowType, Spotlight, TexturedLight } from '../../src/index';
 import { createContext, destroyContext } from './context';
 import { renderLightmap } from './lightmap';
 
@@ -202,4 +202,45 @@ describe('several lights', () => {
     expect(shadowed).toBeGreaterThan(100); // the two umbrae overlap
     expect(worst).toBeLessThan(2 * CLOSE);
   });
+});
+
+describe('falloff curves', () => {
+  // The curves of Falloff, written out here from their definitions (t = d / range), not imported.
+  const curves = {
+    linear: (t: number) => Math.max(0, 1 - t),
+    smooth: (t: number) => Math.max(0, 1 - t * t) ** 2,
+    inverseSquare: (t: number, core: number) => (core * core / (core * core + t * t)) * Math.max(0, 1 - t ** 4) ** 2,
+  };
+  const cases = [
+    { falloff: Falloff.Linear, radius: 0 },
+    { falloff: Falloff.Smooth, radius: 0 },
+    { falloff: Falloff.InverseSquare, radius: 6 },
+    { falloff: Falloff.InverseSquare, radius: 0 },
+  ];
+  for (const { falloff, radius } of cases) {
+    it(`${falloff} (radius ${radius}): every pixel of a point light and a spotlight, and illuminationAt, follow the curve`, () => {
+      setUp();
+      const range = 40, core = Math.max(radius, 1) / range;
+      const point = renderer.addLight(new PointLight({ position: [30, 32], range, radius, falloff }));
+      const spot = renderer.addLight(new Spotlight({ position: [70, 32], range, radius, falloff, coneAngle: Math.PI, coneDecay: 0, litLayers: 0b10 }));
+      point.litLayers = 0b01;
+      for (const [light, layers, [lx, ly]] of [[point, 0b01, [30, 32]], [spot, 0b10, [70, 32]]] as const) {
+        const map = renderLightmap(gl, renderer, W, H, layers);
+        let worst = 0, worstQuery = 0;
+        for (let y = 0; y < H; y++) {
+          for (let x = 0; x < W; x++) {
+            const t = Math.hypot(x + 0.5 - lx, y + 0.5 - ly) / range;
+            // The spotlight's cone (half angle π/2, decay 0) keeps the half plane ahead of it.
+            if (light === spot && x + 0.5 < lx) continue;
+            const expected = curves[falloff](t, core);
+            worst = Math.max(worst, Math.abs(map.at(x, y)[0] - expected));
+            const queried = renderer.illuminationAt(x + 0.5, y + 0.5, { layers, includeAmbient: false }).color[0];
+            worstQuery = Math.max(worstQuery, Math.abs(queried - expected));
+          }
+        }
+        expect(worst).toBeLessThan(CLOSE);
+        expect(worstQuery).toBeLessThan(1e-9);
+      }
+    });
+  }
 });

@@ -35,7 +35,7 @@ describe('scene format', () => {
     expect(scene.lights[0]).toEqual({
       kind: 'point', position: [1, 2], range: 100, radius: 0, color: [1, 1, 1], intensity: 1, rotation: 0,
       origin: [0.5, 0.5], shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [],
-      shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff,
+      shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, falloff: 'linear',
     });
     expect(scene.lights[1]).toMatchObject({ coneAngle: Math.PI / 2, coneDecay: 1 });
     expect(scene.lights[2]).toMatchObject({ cookie: 'c', size: null });
@@ -123,6 +123,7 @@ describe('scene format', () => {
     ['look lightmapBlur', ['look', 'lightmapBlur'], 33, 'look.lightmapBlur: expected a number ≤ 32, got 33'],
     ['look unknown field', ['look', 'gamma'], 2.2, 'look.gamma: unknown field (allowed: exposure, toneMapping, dithering, lightmapBlur)'],
     ['light shadowLayers', ['lights', 0, 'shadowLayers'], -1, 'lights[0].shadowLayers: expected an integer from 0 to 4294967295 (a bit mask), got -1'],
+    ['light falloff', ['lights', 0, 'falloff'], 'cubic', 'lights[0].falloff: expected one of "linear", "smooth", "inverseSquare", got "cubic"'],
     ['light litLayers', ['lights', 0, 'litLayers'], 1.5, 'lights[0].litLayers: expected an integer from 0 to 4294967295 (a bit mask), got 1.5'],
     ['hull layers', ['hulls', 1, 'layers'], 0.5, 'hulls[1].layers: expected an integer from 0 to 4294967295 (a bit mask), got 0.5'],
     ['light shadowStrength', ['lights', 1, 'shadowStrength'], 2, 'lights[1].shadowStrength: expected a number ≤ 1, got 2'],
@@ -130,7 +131,7 @@ describe('scene format', () => {
     ['ignoredHulls not an array', ['lights', 0, 'ignoredHulls'], 1, 'lights[0].ignoredHulls: expected an array, got 1'],
     ['ignoredHulls out of range', ['lights', 2, 'ignoredHulls', 1], 3, 'lights[2].ignoredHulls[1]: expected a hull index from 0 to 2, got 3'],
     ['ignoredHulls not an integer', ['lights', 2, 'ignoredHulls', 0], 0.5, 'lights[2].ignoredHulls[0]: expected a hull index from 0 to 2, got 0.5'],
-    ['light unknown field', ['lights', 0, 'coneAngle'], 1, 'lights[0].coneAngle: unknown field (allowed: kind, position, range, radius, color, intensity, rotation, origin, shadowType, enabled, castsShadows, ignoredHulls, shadowLayers, shadowColor, shadowStrength, litLayers)'],
+    ['light unknown field', ['lights', 0, 'coneAngle'], 1, 'lights[0].coneAngle: unknown field (allowed: kind, position, range, radius, color, intensity, rotation, origin, shadowType, enabled, castsShadows, ignoredHulls, shadowLayers, shadowColor, shadowStrength, litLayers, falloff)'],
     ['spot coneAngle above π', ['lights', 1, 'coneAngle'], 4, 'lights[1].coneAngle: expected a number ≤ 3.141592653589793, got 4'],
     ['spot coneAngle negative', ['lights', 1, 'coneAngle'], -1, 'lights[1].coneAngle: expected a number ≥ 0, got -1'],
     ['spot coneDecay negative', ['lights', 1, 'coneDecay'], -2, 'lights[1].coneDecay: expected a number ≥ 0, got -2'],
