@@ -1,5 +1,5 @@
 import GUI, { type Controller } from 'lil-gui';
-import { Hull, ShadowType, Spotlight, TexturedLight, type Light } from 'penumbra-gl';
+import { Dithering, Hull, ShadowType, Spotlight, TexturedLight, ToneMapping, type Light } from 'penumbra-gl';
 import type { Editor } from './Editor';
 import type { ImageTracer } from './ImageTracer';
 import type { Playground } from './Playground';
@@ -23,6 +23,36 @@ const PAINT_LABELS = { start: 'paint tiles (drag; right-drag or Shift erases)', 
 const NARROW_SCREEN = 720;
 /** Below this page height (CSS pixels) the content folder opens collapsed: the panel would run off the page. */
 const SHORT_SCREEN = 640;
+
+/** The layer bits the panel has a checkbox for; a mask's higher bits are kept as they are. */
+const LAYER_CHECKBOXES = 8;
+/** A mask with every layer's bit: `Light.shadowLayers`' default. */
+const ALL_LAYERS = 0xffffffff;
+
+/**
+ * A layer mask as a folder title shows it: `all`, `none`, or its layer numbers with runs as ranges
+ * (`0 2–5 8–31`).
+ */
+function describeLayers(mask: number): string {
+  if (mask === ALL_LAYERS) return 'all';
+  const runs: string[] = [];
+  for (let bit = 0; bit < 32; bit++) {
+    if (!hasLayer(mask, bit)) continue;
+    const first = bit;
+    while (bit < 31 && hasLayer(mask, bit + 1)) bit++;
+    runs.push(first === bit ? `${first}` : `${first}–${bit}`);
+  }
+  return runs.length > 0 ? runs.join(' ') : 'none';
+}
+
+function hasLayer(mask: number, bit: number): boolean {
+  return ((mask >>> bit) & 1) === 1;
+}
+
+/** `mask` with layer `bit` on or off. JavaScript's bit operators give signed 32-bit results: `>>> 0` makes the mask unsigned again. */
+function withLayer(mask: number, bit: number, on: boolean): number {
+  return (on ? mask | (1 << bit) : mask & ~(1 << bit)) >>> 0;
+}
 
 /** `[r, g, b]` in 0..1 ↔ `#rrggbb` for lil-gui's colour picker (channels above 1 show as 1). */
 function toHex(color: readonly number[]): string {
@@ -74,6 +104,7 @@ export class Panel {
     scene.add(playground, 'animate').name('animate');
     scene.add(actions, 'save').name('save scene (download)');
     scene.add(actions, 'load').name('load scene… (or drop a file)');
+    this.lookControls();
 
     const edit = this.gui.addFolder('Add / delete');
     const buttons = {
@@ -102,6 +133,27 @@ export class Panel {
     this.gui.onOpenClose(() => this.measureCovered());
     window.addEventListener('resize', () => this.measureCovered());
     this.measureCovered();
+  }
+
+  /**
+   * How the final image is made from the lightmap: the renderer's look, which scene files store.
+   * The controllers listen, so a loaded scene's look shows as soon as it applies.
+   */
+  private lookControls(): void {
+    const renderer = this.playground.renderer;
+    const folder = this.gui.addFolder('Look');
+    const m: Record<string, unknown> = {};
+    this.field(m, 'exposure', () => renderer.exposure, (v: number) => { renderer.exposure = v; });
+    this.field(m, 'toneMapping', () => renderer.toneMapping, (v: ToneMapping) => { renderer.toneMapping = v; });
+    this.field(m, 'dithering', () => renderer.dithering, (v: Dithering) => { renderer.dithering = v; });
+    this.field(m, 'lightmapBlur', () => renderer.lightmapBlur, (v: number) => { renderer.lightmapBlur = v; });
+    // Sliders over the useful ranges (a value typed outside is clamped to them); a loaded file's value shows as it is.
+    folder.add(m, 'exposure', 0.1, 4, 0.05).listen();
+    // The library's constants as the menus: a curve or dithering added to them shows here too.
+    folder.add(m, 'toneMapping', ToneMapping).name('tone mapping').listen();
+    folder.add(m, 'dithering', Dithering).listen();
+    folder.add(m, 'lightmapBlur', 0, 32, 1).name('lightmap blur').listen();
+    if (window.innerHeight < SHORT_SCREEN) folder.close();
   }
 
   /**
@@ -186,6 +238,8 @@ export class Panel {
     this.field(m, 'originX', () => light.origin[0], (v: number) => { light.origin = [v, light.origin[1]]; });
     this.field(m, 'originY', () => light.origin[1], (v: number) => { light.origin = [light.origin[0], v]; });
     this.field(m, 'shadowType', () => light.shadowType, (v: ShadowType) => { light.shadowType = v; });
+    this.field(m, 'shadowColor', () => toHex(light.shadowColor), (v: string) => { light.shadowColor = fromHex(v); });
+    this.field(m, 'shadowStrength', () => light.shadowStrength, (v: number) => { light.shadowStrength = v; });
     folder.add(m, 'enabled').listen();
     folder.add(m, 'castsShadows').listen();
     number(folder, m, 'x', 1);
@@ -197,7 +251,10 @@ export class Panel {
     number(folder, m, 'rotation°', 1);
     number(folder, m, 'originX', 2);
     number(folder, m, 'originY', 2);
-    folder.add(m, 'shadowType', [ShadowType.Illuminated, ShadowType.Solid]).listen();
+    // ShadowType itself is the menu (its entries): a type added to the library shows here too.
+    folder.add(m, 'shadowType', ShadowType).listen();
+    folder.addColor(m, 'shadowColor').listen();
+    folder.add(m, 'shadowStrength', 0, 1, 0.01).listen();
     this.ignoredHullsControls(folder, light);
     if (light instanceof Spotlight) {
       this.field(m, 'coneAngle°', () => light.coneAngle * DEGREES, (v: number) => { light.coneAngle = v / DEGREES; });
@@ -214,6 +271,7 @@ export class Panel {
       number(folder, m, 'width', 1);
       number(folder, m, 'height', 1);
     }
+    this.layerControls(folder, 'shadow layers', () => light.shadowLayers, (mask) => { light.shadowLayers = mask; });
   }
 
   /**
@@ -226,6 +284,23 @@ export class Panel {
     folder.add(m, 'ignored').name('ignored hulls').disable().listen();
     this.pickButton = folder.add(m, 'pick');
     this.labelPickButton();
+  }
+
+  /**
+   * A layer mask as a folder of checkboxes, one per layer below {@link LAYER_CHECKBOXES}, closed
+   * with the mask summed up in its title. Only these checkboxes change a mask while its object is
+   * selected (a loaded scene clears the selection), so the title follows their changes alone.
+   */
+  private layerControls(parent: GUI, label: string, get: () => number, set: (mask: number) => void): void {
+    const folder = parent.addFolder(label).close();
+    const showMask = () => folder.title(`${label}: ${describeLayers(get())}`);
+    const m: Record<string, unknown> = {};
+    for (let bit = 0; bit < LAYER_CHECKBOXES; bit++) {
+      const key = `layer ${bit}`;
+      this.field(m, key, () => hasLayer(get(), bit), (on: boolean) => set(withLayer(get(), bit, on)));
+      folder.add(m, key).onChange(showMask);
+    }
+    showMask();
   }
 
   private labelPickButton(): void {
@@ -243,6 +318,9 @@ export class Panel {
     this.field(m, 'scaleX', () => hull.scale[0], (v: number) => { hull.scale = [v, hull.scale[1]]; });
     this.field(m, 'scaleY', () => hull.scale[1], (v: number) => { hull.scale = [hull.scale[0], v]; });
     this.field(m, 'points', () => JSON.stringify(hull.points), (v: string) => { hull.points = JSON.parse(v); });
+    // Off: an open polyline. Fixed when a hull is built: a rebuilt hull takes its place and the
+    // selection, so this folder is replaced by the new hull's.
+    bind(m, 'closed', () => hull.closed, (v: boolean) => this.playground.setHullClosed(hull, v));
     bind(m, 'valid', () => (hull.valid ? 'valid' : 'INVALID (ignored by the renderer)'), () => undefined);
     folder.add(m, 'enabled').listen();
     number(folder, m, 'x', 1);
@@ -254,5 +332,7 @@ export class Panel {
     number(folder, m, 'scaleY', 2);
     folder.add(m, 'points').name('points (JSON)').listen();
     folder.add(m, 'valid').disable().listen();
+    folder.add(m, 'closed');
+    this.layerControls(folder, 'layers', () => hull.layers, (mask) => { hull.layers = mask; });
   }
 }

@@ -41,8 +41,11 @@ export class Playground extends EventTarget {
   ];
   /** Images traced into hulls, drawn as sprites that follow their hulls; forgotten once their hulls are gone. */
   private images: ImageSprite[] = [];
-  /** The hulls traced from the same image: they move together. */
-  private readonly companions = new WeakMap<Hull, readonly Hull[]>();
+  /**
+   * The hulls traced from the same image: they move together. One array per image, shared with its
+   * sprite, so a hull rebuilt in place ({@link setHullClosed}) is swapped in both at once.
+   */
+  private readonly companions = new WeakMap<Hull, Hull[]>();
   private readonly view = new Float32Array(4);
   private time = 0;
 
@@ -80,6 +83,8 @@ export class Playground extends EventTarget {
     for (const hull of objects.hulls) renderer.addHull(hull);
     for (const light of objects.lights) renderer.addLight(light);
     renderer.ambientColor = document.ambient;
+    // readScene checked the look against the renderer's own ranges: these setters cannot throw.
+    Object.assign(renderer, document.look);
     this.camera.center[0] = document.camera.center[0];
     this.camera.center[1] = document.camera.center[1];
     this.camera.zoom = document.camera.zoom;
@@ -92,7 +97,7 @@ export class Playground extends EventTarget {
     const { renderer, camera } = this;
     return describeScene({
       lights: [...renderer.lights], hulls: [...renderer.hulls], ambient: renderer.ambientColor,
-      camera: { center: [...camera.center], zoom: camera.zoom }, cookieName: this.cookies.nameOf,
+      camera: { center: [...camera.center], zoom: camera.zoom }, cookieName: this.cookies.nameOf, look: renderer,
     });
   }
 
@@ -158,11 +163,12 @@ export class Playground extends EventTarget {
    * hulls' local space) drawn under them as a sprite that follows them. The hulls move together.
    */
   addTracedImage(hulls: readonly Hull[], image: TexImageSource, width: number, height: number): void {
-    for (const hull of hulls) {
+    const group = [...hulls];
+    for (const hull of group) {
       this.renderer.addHull(hull);
-      this.companions.set(hull, hulls);
+      this.companions.set(hull, group);
     }
-    this.images.push({ texture: createTexture(this.gl, image, false), hulls, width, height });
+    this.images.push({ texture: createTexture(this.gl, image, false), hulls: group, width, height });
     this.selection = null;
     this.changed();
   }
@@ -170,6 +176,29 @@ export class Playground extends EventTarget {
   /** The other hulls traced from the same image as `hull` (empty for any other hull). */
   companionsOf(hull: Hull): readonly Hull[] {
     return (this.companions.get(hull) ?? []).filter((other) => other !== hull);
+  }
+
+  /**
+   * Makes a hull closed or open. That is fixed when a hull is built, so a new hull with every other
+   * setting of the old one takes its place: in the scene (at the end of its order, which only the
+   * file's order shows), in the lights that ignore it, in its traced image's group, and in the
+   * selection. Returns the hull now in the scene.
+   */
+  setHullClosed(hull: Hull, closed: boolean): Hull {
+    if (hull.closed === closed) return hull;
+    const { points, position, origin, rotation, scale, enabled, layers } = hull;
+    const rebuilt = new Hull(points, { closed, position, origin, rotation, scale, enabled, layers });
+    this.renderer.removeHull(hull);
+    this.renderer.addHull(rebuilt);
+    for (const light of this.renderer.lights) if (light.ignoredHulls.delete(hull)) light.ignoredHulls.add(rebuilt);
+    const group = this.companions.get(hull);
+    if (group) {
+      group[group.indexOf(hull)] = rebuilt;
+      this.companions.set(rebuilt, group);
+    }
+    if (this._selection === hull) this.selection = rebuilt;
+    this.changed();
+    return rebuilt;
   }
 
   /** Removes the selected light or hull (and forgets it in lights' ignored hulls). */

@@ -1,10 +1,12 @@
-import { mkdtempSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { PNG } from 'pngjs';
 import type { Browser, Page } from 'puppeteer';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import type { SceneDocument } from '../../src/index';
+import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import type { SceneDirectionalLight, SceneDocument, SceneLight } from '../../src/index';
+import { Dithering, ToneMapping } from '../../src/passes/compositeLayout';
+import { ShadowType } from '../../src/scene/lights';
 import { collectPageErrors, launchChromium } from './chromium';
 import { serveDirectory, type StaticServer } from './staticServer';
 
@@ -15,8 +17,13 @@ const WIDTH = 800, HEIGHT = 400;
 /** The page is ready after its first frames, which SwiftShader compiles and draws slowly on a busy machine. */
 const PAGE_READY_MS = 100_000;
 
+/** A scene of these tests, built or saved: they have no directional light, so every light has a position, range and radius. */
+interface TestScene extends Omit<SceneDocument, 'lights'> {
+  lights: Exclude<SceneLight, SceneDirectionalLight>[];
+}
+
 /** One light at `light` (no source radius, so the umbra is exact) and one 40 × 120 box at (220, 200). */
-function testScene(light: [number, number], range = 300): SceneDocument {
+function testScene(light: [number, number], range = 300): TestScene {
   return {
     format: 'penumbra-scene', version: 2, ambient: [0.02, 0.02, 0.02], camera: { center: [300, 200], zoom: 1 },
     hulls: [{ points: [[-20, -60], [20, -60], [20, 60], [-20, 60]], position: [220, 200], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: true, closed: true, layers: 1 }],
@@ -30,7 +37,7 @@ function testScene(light: [number, number], range = 300): SceneDocument {
 }
 
 /** The test scene without its box: painted and traced hulls are then the only ones. */
-function emptyScene(light: [number, number], range = 300): SceneDocument {
+function emptyScene(light: [number, number], range = 300): TestScene {
   return { ...testScene(light, range), hulls: [] };
 }
 
@@ -65,7 +72,7 @@ describe('playground page in Chromium', () => {
   /** The canvas colour at a world point. */
   const readPixel = (x: number, y: number) => page.evaluate((wx, wy) => window.playground.readPixel(...window.playground.worldToScreen(wx, wy)), x, y);
   const toScreen = (x: number, y: number) => page.evaluate((wx, wy) => window.playground.worldToScreen(wx, wy), x, y);
-  const sceneDocument = async () => JSON.parse(await page.evaluate(() => window.playground.sceneText())) as SceneDocument;
+  const sceneDocument = async () => JSON.parse(await page.evaluate(() => window.playground.sceneText())) as TestScene;
   /** Clicks the panel button whose label starts with `label`. */
   const clickButton = (label: string) => page.evaluate((text) => [...document.querySelectorAll('.lil-gui button')]
     .find((b) => b.textContent?.startsWith(text))!.dispatchEvent(new MouseEvent('click', { bubbles: true })), label);
@@ -85,6 +92,38 @@ describe('playground page in Chromium', () => {
     select.selectedIndex = [...select.options].findIndex((o) => o.textContent === option);
     select.dispatchEvent(new Event('change'));
   }, name, value);
+  /** The input (or, with `selector`, another element) of the panel's field named `name`. */
+  const fieldElement = (name: string, selector = 'input') => page.evaluateHandle((label, element) =>
+    [...document.querySelectorAll('.lil-gui .lil-controller')].find((c) => c.querySelector('.lil-name')?.textContent === label)!
+      .querySelector<HTMLInputElement>(element)!, name, selector);
+  /** Enters `text` into the field named `name` (a number, a slider's number or a colour as `#rrggbb`), as typing or picking does. */
+  const enter = async (name: string, text: string) => (await fieldElement(name)).evaluate((input, value) => {
+    input.value = value;
+    input.dispatchEvent(new Event('input'));
+    input.dispatchEvent(new Event('blur'));
+  }, text);
+  /** Ticks or clears the checkbox named `name` (folded folders included), as a click does. */
+  const tick = async (name: string, on: boolean) => (await fieldElement(name)).evaluate((input, value) => {
+    if (input.checked !== value) input.click();
+  }, on);
+  const isTicked = async (name: string) => (await fieldElement(name)).evaluate((input) => input.checked);
+  /** The labels of the menu named `name`, in order. */
+  const menuLabels = async (name: string) => (await fieldElement(name, 'select')).evaluate((select) =>
+    [...(select as unknown as HTMLSelectElement).options].map((option) => option.textContent));
+  const folderTitles = () => page.$$eval('.lil-gui .lil-title', (titles) => titles.map((title) => title.textContent));
+  /** What the Look folder shows: exposure, tone mapping, dithering and lightmap blur. */
+  const lookShown = async () => [await fieldText('exposure'), await fieldText('tone mapping'), await fieldText('dithering'), await fieldText('lightmap blur')];
+  /** Clicks "save scene" and returns the text of the file it downloads. */
+  const saveThroughPanel = async () => {
+    const folder = mkdtempSync(join(tmpdir(), 'penumbra-playground-save-'));
+    const session = await page.createCDPSession();
+    await session.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: folder });
+    await clickButton('save scene');
+    const file = join(folder, 'scene.penumbra.json');
+    await vi.waitFor(() => expect(existsSync(file)).toBe(true), { timeout: 10_000 });
+    await session.detach();
+    return readFileSync(file, 'utf8');
+  };
   /** Turns tile mode on or off through its panel button (whatever an earlier test left it in). */
   const tileMode = async (on: boolean) => {
     if (await page.evaluate(() => window.playground.tileMode().painting) !== on) await clickButton(on ? 'paint tiles' : 'stop painting');
@@ -409,6 +448,137 @@ describe('playground page in Chromium', () => {
     shapes = await hullShapes();
     expect(shapes).toHaveLength(1);
     expect(errors).toEqual([]);
+  });
+
+  it('tints a light\'s shadow with its shadow colour, and at shadow strength 0 lights the pixel behind a hull as without it', async () => {
+    expect(await load(emptyScene([100, 200]))).toBe(true);
+    const unshadowed = await readPixel(300, 200);
+    expect(await load(testScene([100, 200]))).toBe(true);
+    await page.mouse.click(...await toScreen(100, 200));
+    expect(brightness(await readPixel(300, 200))).toBeLessThan(30);
+
+    // A red shadow colour lets the red channel through in full.
+    await enter('shadowColor', '#ff0000');
+    expect((await sceneDocument()).lights[0].shadowColor).toEqual([1, 0, 0]);
+    const [r, g, b] = await readPixel(300, 200);
+    expect(Math.abs(r - unshadowed[0])).toBeLessThanOrEqual(2);
+    expect(g + b).toBeLessThan(10);
+
+    await enter('shadowStrength', '0');
+    expect((await sceneDocument()).lights[0].shadowStrength).toBe(0);
+    (await readPixel(300, 200)).forEach((channel, i) => expect(Math.abs(channel - unshadowed[i])).toBeLessThanOrEqual(2));
+  });
+
+  it('offers every shadow type, tone mapping and dithering the library has, and sets the one picked', async () => {
+    expect(await load(testScene([100, 200]))).toBe(true);
+    await page.mouse.click(...await toScreen(100, 200));
+    expect(await menuLabels('shadowType')).toEqual(Object.keys(ShadowType));
+    expect(await menuLabels('tone mapping')).toEqual(Object.keys(ToneMapping));
+    expect(await menuLabels('dithering')).toEqual(Object.keys(Dithering));
+    await choose('shadowType', 'Solid');
+    expect((await sceneDocument()).lights[0].shadowType).toBe('solid');
+  });
+
+  it('removes a hull\'s shadow when its layers share none with the light\'s shadow layers, and brings it back when they do', async () => {
+    expect(await load(testScene([100, 200]))).toBe(true);
+    await page.mouse.click(...await toScreen(100, 200));
+    expect(await folderTitles()).toContain('shadow layers: all');
+    await tick('layer 0', false);
+    expect((await sceneDocument()).lights[0].shadowLayers).toBe(0xfffffffe);
+    expect(await folderTitles()).toContain('shadow layers: 1–31');
+    // The hull is in layer 0 only.
+    expect(brightness(await readPixel(300, 200))).toBeGreaterThan(150);
+
+    await page.mouse.click(...await toScreen(220, 200));
+    expect(await folderTitles()).toContain('layers: 0');
+    await tick('layer 2', true);
+    expect((await sceneDocument()).hulls[0].layers).toBe(0b101);
+    expect(await folderTitles()).toContain('layers: 0 2');
+    expect(brightness(await readPixel(300, 200))).toBeLessThan(30);
+    await tick('layer 2', false);
+    expect((await sceneDocument()).hulls[0].layers).toBe(1);
+    expect(brightness(await readPixel(300, 200))).toBeGreaterThan(150);
+  });
+
+  it('rebuilds a hull as an open polyline and back with its other settings, keeping it selected and ignored', async () => {
+    const scene = testScene([100, 200]);
+    Object.assign(scene.hulls[0], { origin: [5, 0], rotation: 0.3, scale: [1.5, 1], layers: 5 });
+    scene.lights[0].ignoredHulls = [0];
+    expect(await load(scene)).toBe(true);
+    const [original] = await page.evaluate(() => window.playground.hullIds());
+    await page.mouse.click(...await toScreen(220, 200));
+    expect(await isTicked('closed')).toBe(true);
+
+    await tick('closed', false);
+    let saved = await sceneDocument();
+    expect(saved.hulls).toEqual([{ ...scene.hulls[0], closed: false }]);
+    expect(saved.lights[0].ignoredHulls).toEqual([0]);
+    expect(await page.evaluate(() => window.playground.hullIds())).not.toEqual([original]);
+    // The panel shows the rebuilt hull, and its fields edit it.
+    expect(await isTicked('closed')).toBe(false);
+    await enter('x', '260');
+    expect((await sceneDocument()).hulls[0].position).toEqual([260, 200]);
+
+    await tick('closed', true);
+    saved = await sceneDocument();
+    expect(saved.hulls).toEqual([{ ...scene.hulls[0], position: [260, 200] }]);
+    expect(saved.lights[0].ignoredHulls).toEqual([0]);
+    expect(errors).toEqual([]);
+  });
+
+  it('keeps a traced hull rebuilt as open in its image\'s group: the hulls still move together', async () => {
+    expect(await load(emptyScene([100, 200], 500))).toBe(true);
+    await tileMode(false);
+    await dropDisc('pieces.png', [250, 180], 128, 50, 20, '#ff0000');
+    const before = unionBounds((await hullShapes()).map((s) => s.bounds));
+    // A point of the ring, off the axes its pieces may be cut along.
+    const onRing: [number, number] = [250 + 35 * Math.cos(0.6), 180 + 35 * Math.sin(0.6)];
+    await page.mouse.click(...await toScreen(...onRing));
+    await tick('closed', false);
+    expect((await sceneDocument()).hulls.filter((hull) => !hull.closed)).toHaveLength(1);
+
+    await stroke([onRing, [onRing[0] + 20, onRing[1] + 30]]);
+    const after = unionBounds((await hullShapes()).map((s) => s.bounds));
+    // Pointer events land on whole CSS pixels.
+    after.forEach((value, i) => expect(Math.abs(value - before[i] - [20, 30][i % 2])).toBeLessThanOrEqual(1));
+  });
+
+  it('applies the look set in the panel, saves it, and a saved file loaded through the picker brings it back to the renderer and the panel', async () => {
+    expect(await load(testScene([100, 200]))).toBe(true);
+    const lit = await readPixel(160, 200);
+    await enter('exposure', '0.5');
+    (await readPixel(160, 200)).forEach((channel, i) => expect(Math.abs(channel - lit[i] / 2)).toBeLessThanOrEqual(2));
+    await choose('tone mapping', 'Aces');
+    await choose('dithering', 'Ordered');
+    await enter('lightmap blur', '7');
+    const look = { exposure: 0.5, toneMapping: 'aces', dithering: 'ordered', lightmapBlur: 7 };
+    const saved = await saveThroughPanel();
+    expect(JSON.parse(saved).look).toEqual(look);
+
+    expect(await load(testScene([100, 200]))).toBe(true);
+    expect(await fieldText('exposure')).toBe('1');
+    const file = join(mkdtempSync(join(tmpdir(), 'penumbra-playground-')), 'look.penumbra.json');
+    writeFileSync(file, saved);
+    const [chooser] = await Promise.all([page.waitForFileChooser(), clickButton('load scene')]);
+    await chooser.accept([file]);
+    await page.waitForFunction((text) => window.playground.sceneText() === text, { timeout: 10_000 }, saved);
+    expect((await sceneDocument()).look).toEqual(look);
+    expect(await lookShown()).toEqual(['0.5', 'Aces', 'Ordered', '7']);
+  });
+
+  it('shows the look of a scene dropped on the page in the panel, and a preset\'s look after it', async () => {
+    const scene = { ...testScene([100, 200]), look: { exposure: 2.25, toneMapping: 'reinhard', dithering: 'noise', lightmapBlur: 12 } } as const;
+    await page.evaluate((text) => {
+      const data = new DataTransfer();
+      data.items.add(new File([text], 'look.json', { type: 'application/json' }));
+      document.getElementById('gizmos')!.dispatchEvent(new DragEvent('drop', { dataTransfer: data, bubbles: true, cancelable: true }));
+    }, JSON.stringify(scene));
+    await page.waitForFunction(() => JSON.parse(window.playground.sceneText()).look.exposure === 2.25, { timeout: 10_000 });
+    expect((await sceneDocument()).look).toEqual(scene.look);
+    expect(await lookShown()).toEqual(['2.25', 'Reinhard', 'Noise', '12']);
+
+    await page.evaluate(() => window.playground.selectPreset('Stage'));
+    expect(await lookShown()).toEqual(['1', 'None', 'None', '0']);
   });
 
   it('switches presets and keeps the scene across a reload', async () => {
