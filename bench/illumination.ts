@@ -61,6 +61,7 @@ function illuminationCase(spec: SceneSpec, mode: Mode): IlluminationCase {
 
 const PLAYGROUND: SceneSpec = { name: 'playground-like', lights: 10, hulls: 50, farHulls: 0 };
 const S2: SceneSpec = { name: 'S2', lights: 32, hulls: 200, farHulls: 0 };
+const S2_SUN: SceneSpec = { ...S2, name: 'S2-sun', sun: true };
 const S3: SceneSpec = { name: 'S3', lights: 128, hulls: 1000, farHulls: 0 };
 const S3_SPARSE: SceneSpec = { name: 'S3-sparse', lights: 128, hulls: 1000, farHulls: 10000 };
 
@@ -71,6 +72,8 @@ export const CASES: Record<string, () => IlluminationCase> = {
   'playground-like: isLit(0.1)': () => illuminationCase(PLAYGROUND, 'isLit'),
   'playground-like: illuminationAt, scene still': () => illuminationCase(PLAYGROUND, 'still'),
   'S2: illuminationAt, sum only': () => illuminationCase(S2, 'sum'),
+  'S2 with a sun: illuminationAt, sum only': () => illuminationCase(S2_SUN, 'sum'),
+  'S2 with a sun: isLit(0.1)': () => illuminationCase(S2_SUN, 'isLit'),
   'S3 (stress): illuminationAt, sum only': () => illuminationCase(S3, 'sum'),
   'S3 (stress): isLit(0.1)': () => illuminationCase(S3, 'isLit'),
   'S3-sparse (stress): illuminationAt, sum only': () => illuminationCase(S3_SPARSE, 'sum'),
