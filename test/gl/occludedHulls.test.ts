@@ -32,6 +32,7 @@ describe('Occluded lights light hulls only where the light reaches them (headles
       const reference = computeOccludedReference(source);
       const { rgb, queried } = renderOccluded(source);
       const errors = compareToReference(source, rgb, reference);
+      console.log(`${source.name.padEnd(100)} mean ${errors.all.mean.toFixed(4)} p99 ${errors.all.p99.toFixed(4)} max ${errors.all.max.toFixed(4)}`);
       expect(limitViolations(errors), JSON.stringify(errors)).toEqual([]);
       // Some hull pixels are lit and some are not, so the scene tests what it is named for.
       const geometry = new SceneGeometry(source.hulls);
