@@ -4,8 +4,7 @@ import { stripGlslComments } from './scripts/glsl-comments.mjs';
 
 // Library build: the core and one entry per engine integration, as ES modules (.js) and CommonJS
 // (.cjs, for require() and Jest), shaders inlined through `?raw` imports (without their comments),
-// gl-matrix left to the
-// user's bundler. Source maps embed their sources (sourcesContent), so they need nothing outside dist/.
+// gl-matrix left to the user's bundler. Source maps embed their sources (sourcesContent), so they need nothing outside dist/.
 // The declarations come from `tsc -p tsconfig.build.json` and scripts/fix-declarations.mjs.
 export default defineConfig({
   plugins: [stripGlslComments()],
