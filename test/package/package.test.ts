@@ -231,7 +231,8 @@ describe('the README\'s browser snippets, built with Vite and rendered in Chromi
       const errors = collectPageErrors(tab);
       await tab.setViewport({ width: 1024, height: 768 });
       await tab.goto(`${server.url}${page}/index.html`);
-      const canvas = await tab.waitForSelector('canvas', { timeout: 30_000 });
+      // Long: under load the page's main thread can be busy for tens of seconds compiling shaders.
+      const canvas = await tab.waitForSelector('canvas', { timeout: 90_000 });
       // Frames until the criteria hold or 90 s pass (SwiftShader takes seconds a frame; engines boot on their own clock).
       let stats!: ReturnType<typeof luminanceStats>;
       let size = '';
