@@ -68,6 +68,26 @@ export function propImage(): ImageData {
   return new ImageData(data, size, size);
 }
 
+/** The examples' ambient colour: what every lit thing gets without any light. */
+export const AMBIENT_COLOR: readonly [number, number, number] = [0.08, 0.08, 0.12];
+
+/**
+ * Content layers (bit masks): the level is lit by the lamps and the flashlight (`litLayers` WORLD),
+ * the player, drawn in a lit group of layers PLAYER, by its own torch only (`litLayers` PLAYER).
+ */
+export const WORLD_LAYER = 0b01;
+export const PLAYER_LAYER = 0b10;
+
+/** The player's torch, at the player: it lights the player's own drawing and nothing else. */
+export const PLAYER_TORCH = { range: 45, radius: 2, color: [1, 0.85, 0.6] as [number, number, number], intensity: 1.1, castsShadows: false } as const;
+
+/**
+ * A glowing sign on the floor, world units (x, y, width, height), drawn after the lighting: unlit,
+ * it keeps exactly SIGN_COLOR whatever the lights, and follows the camera as the level does.
+ */
+export const SIGN: Rect = [246, 220, 48, 18];
+export const SIGN_COLOR = 0xff2d6f;
+
 /** Lamps: position and colour. */
 export const LAMPS: readonly { position: [number, number]; color: [number, number, number] }[] = [
   { position: [120, 90], color: [1, 0.75, 0.45] },
@@ -119,13 +139,24 @@ export interface View {
   scroll: [number, number];
 }
 
+/** How far the mouse wheel zooms in: the zoom factor's range, and its step per wheel notch. */
+export const ZOOM_FACTOR_MAX = 3;
+export const ZOOM_FACTOR_STEP = 1.1;
+
+/** The zoom factor after a wheel event of `deltaY` (negative: zoom in), within 1..{@link ZOOM_FACTOR_MAX}. */
+export function zoomFactorAfterWheel(factor: number, deltaY: number): number {
+  const next = deltaY < 0 ? factor * ZOOM_FACTOR_STEP : deltaY > 0 ? factor / ZOOM_FACTOR_STEP : factor;
+  return Math.min(Math.max(next, 1), ZOOM_FACTOR_MAX);
+}
+
 /**
  * The camera for a canvas of `width` × `height` CSS pixels (the examples fill the window): at least
- * {@link ZOOM}, more where the window is larger than the level so that the level still fills it;
- * centred on the player, but never past the level's edges.
+ * {@link ZOOM}, more where the window is larger than the level so that the level still fills it,
+ * times `zoomFactor` (the mouse wheel's, 1 or more); centred on the player, but never past the
+ * level's edges.
  */
-export function followPlayer(player: readonly [number, number], width: number, height: number, out: View): View {
-  const zoom = Math.max(ZOOM, width / WORLD_WIDTH, height / WORLD_HEIGHT);
+export function followPlayer(player: readonly [number, number], width: number, height: number, out: View, zoomFactor = 1): View {
+  const zoom = Math.max(ZOOM, width / WORLD_WIDTH, height / WORLD_HEIGHT) * zoomFactor;
   const viewWidth = width / zoom;
   const viewHeight = height / zoom;
   out.zoom = zoom;
@@ -150,6 +181,8 @@ export interface ExampleHook {
   setTile(x: number, y: number, solid: boolean): void;
   /** Places the prop sprite (world position, rotation in radians, scale, mirrored left–right) and stops its spinning. */
   setProp(x: number, y: number, rotation: number, scale: number, flipX: boolean): void;
+  /** Sets the mouse wheel's zoom factor (1 to {@link ZOOM_FACTOR_MAX}); the camera takes it at the next update. */
+  setZoom(factor: number): void;
 }
 
 declare global {

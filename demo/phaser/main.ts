@@ -1,12 +1,16 @@
 // Phaser 4 example: a character with a flashlight aimed at the mouse, walking (WASD / arrows)
 // through a tilemap's walls that cast soft shadows, past a spinning prop whose shadow is traced
-// from its sprite's alpha, with a few lamps. The HUD sits above the lighting layer.
+// from its sprite's alpha, with a few lamps; the wheel zooms. The player is in a lit group of its
+// own, lit by its own torch only; the lamps' bulbs and a sign glow above the lighting layer (unlit,
+// following the camera); the HUD is above it all.
 import Phaser from 'phaser';
 import { DEFAULT_LAYER_DEPTH, PenumbraPlugin, PointLight, Spotlight } from 'penumbra-gl/phaser';
 import {
-  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, PROP_POSITION, PROP_SPIN, TILE_SIZE, WORLD_HEIGHT,
-  WORLD_WIDTH, canvasSize, followPlayer, levelTiles, moveWithCollisions, readPixels, waitFrames,
+  AMBIENT_COLOR, HUD_COLOR, Keys, LAMPS, PLAYER_LAYER, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, PLAYER_TORCH, PROP_POSITION,
+  PROP_SPIN, SIGN, SIGN_COLOR, TILE_SIZE, WORLD_HEIGHT, WORLD_LAYER, WORLD_WIDTH, canvasSize, followPlayer, levelTiles,
+  moveWithCollisions, readPixels, waitFrames, zoomFactorAfterWheel,
 } from '../examples/level';
+import { installGroupCheck } from './groupCheck';
 import { installOccluderCheck } from './occluderCheck';
 import { ART_KEY, FLASHLIGHT, PROP_CUT, PROP_FRAME, PROP_TRIMMED_WIDTH, WALL_TILE, drawArt } from './content';
 
@@ -15,10 +19,12 @@ class LevelScene extends Phaser.Scene {
   private readonly position: [number, number] = [PLAYER_START[0], PLAYER_START[1]];
   private readonly direction: [number, number] = [0, 0];
   private readonly view = { zoom: 1, scroll: [0, 0] as [number, number] };
+  private zoomFactor = 1;
   private readonly keys = new Keys(window);
   private player!: Phaser.GameObjects.Graphics;
   private hud!: Phaser.GameObjects.Container;
   private flashlight!: Spotlight;
+  private torch!: PointLight;
   private walls!: Phaser.Tilemaps.TilemapLayer;
   private prop!: Phaser.GameObjects.Sprite;
   private propSpinning = true;
@@ -45,21 +51,34 @@ class LevelScene extends Phaser.Scene {
     // The prop: its shadow is traced from its frame's alpha and follows it (turning about the frame's centre).
     this.prop = this.add.sprite(PROP_POSITION[0], PROP_POSITION[1], ART_KEY, PROP_FRAME);
     this.penumbra.addSprite(this.prop);
+    // The level is lit by the lights of WORLD_LAYER.
+    this.penumbra.layers = WORLD_LAYER;
     for (const lamp of LAMPS) {
-      this.penumbra.addLight(new PointLight({ position: lamp.position, color: lamp.color, range: 220, radius: 8, intensity: 1.2 }));
-      this.add.graphics().fillStyle(0xffffff).fillCircle(lamp.position[0], lamp.position[1], 5);
+      this.penumbra.addLight(new PointLight({ position: lamp.position, color: lamp.color, range: 220, radius: 8, intensity: 1.2, litLayers: WORLD_LAYER }));
     }
-    this.player = this.add.graphics().fillStyle(0xe8d8b0).fillCircle(0, 0, PLAYER_RADIUS).fillStyle(0x444444).fillRect(4, -3, 12, 6);
-    this.flashlight = this.penumbra.addLight(new Spotlight(FLASHLIGHT));
+    this.flashlight = this.penumbra.addLight(new Spotlight({ ...FLASHLIGHT, litLayers: WORLD_LAYER }));
     this.cameras.main.setOrigin(0, 0);
 
-    // Above the lighting layer: unlit.
-    const hud = this.add.container(0, 0).setScrollFactor(0).setDepth(DEFAULT_LAYER_DEPTH + 1);
+    // The player, in a group lit apart (drawn after the lighting layer), by its own torch only.
+    this.player = this.add.graphics().fillStyle(0xe8d8b0).fillCircle(0, 0, PLAYER_RADIUS).fillStyle(0x444444).fillRect(4, -3, 12, 6);
+    this.penumbra.addGroup({ layers: PLAYER_LAYER, children: [this.player] });
+    this.torch = this.penumbra.addLight(new PointLight({ ...PLAYER_TORCH, litLayers: PLAYER_LAYER }));
+
+    // Above the lighting layer, in no group: unlit. The glowing bulbs and sign follow the camera…
+    const glowing = this.add.graphics().setDepth(DEFAULT_LAYER_DEPTH + 1).fillStyle(0xffffff);
+    for (const lamp of LAMPS) glowing.fillCircle(lamp.position[0], lamp.position[1], 5);
+    glowing.fillStyle(SIGN_COLOR).fillRoundedRect(...SIGN, 4);
+    // …the HUD does not (scroll factor 0).
+    const hud = this.add.container(0, 0).setScrollFactor(0).setDepth(DEFAULT_LAYER_DEPTH + 2);
     hud.add(this.add.graphics().fillStyle(HUD_COLOR).fillRect(8, 8, 28, 28));
-    hud.add(this.add.text(44, 12, 'WASD / arrows to move, mouse to aim', { color: '#ffffff', fontSize: '14px' }));
+    hud.add(this.add.text(44, 12, 'WASD / arrows to move, mouse to aim, wheel to zoom', { color: '#ffffff', fontSize: '14px' }));
     this.hud = hud;
+    this.input.on('wheel', (_pointer: unknown, _objects: unknown, _dx: number, dy: number) => {
+      this.zoomFactor = zoomFactorAfterWheel(this.zoomFactor, dy);
+    });
     this.exposeTestHook();
     installOccluderCheck(this);
+    installGroupCheck(this);
   }
 
   override update(_time: number, delta: number): void {
@@ -70,7 +89,7 @@ class LevelScene extends Phaser.Scene {
     const { position, direction } = this;
     this.keys.direction(direction);
     moveWithCollisions(position, direction[0] * PLAYER_SPEED * seconds, direction[1] * PLAYER_SPEED * seconds);
-    const { zoom, scroll } = followPlayer(position, this.scale.width, this.scale.height, this.view);
+    const { zoom, scroll } = followPlayer(position, this.scale.width, this.scale.height, this.view, this.zoomFactor);
     this.cameras.main.setZoom(zoom).setScroll(scroll[0], scroll[1]);
     // The camera zooms about its origin (0, 0), the HUD too: scaled back, it keeps its size and place.
     this.hud.setScale(1 / zoom);
@@ -79,6 +98,7 @@ class LevelScene extends Phaser.Scene {
     this.player.setPosition(position[0], position[1]).setRotation(aim);
     this.flashlight.setPosition(position[0], position[1]);
     this.flashlight.rotation = aim;
+    this.torch.setPosition(position[0], position[1]);
     if (this.propSpinning) this.prop.rotation += PROP_SPIN * seconds;
   }
 
@@ -107,6 +127,9 @@ class LevelScene extends Phaser.Scene {
         this.propSpinning = false;
         this.prop.setPosition(x, y).setRotation(rotation).setScale(scale).setFlipX(flipX);
       },
+      setZoom: (factor) => {
+        this.zoomFactor = factor;
+      },
       removeLighting: () => {
         this.plugins.removeScenePlugin('PenumbraPlugin');
         this.penumbra.destroy();
@@ -130,5 +153,5 @@ new Phaser.Game({
   backgroundColor: '#000000',
   scene: LevelScene,
   // Renderer options go in the plugin entry's data (or to this.penumbra.configure() in a scene).
-  plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra', data: { ambientColor: [0.08, 0.08, 0.12] } }] },
+  plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra', data: { ambientColor: AMBIENT_COLOR } }] },
 });

@@ -1,12 +1,16 @@
 // PixiJS v8 example: a character with a flashlight aimed at the mouse, walking (WASD / arrows)
 // through a tile map's walls that cast soft shadows, past a spinning prop whose shadow is traced
-// from its sprite's alpha, with a few lamps. The HUD is drawn after the lighting.
+// from its sprite's alpha, with a few lamps; the wheel zooms. The player is drawn in a lit group
+// of its own, lit by its own torch only; the lamps' bulbs and a sign glow, drawn after the
+// lighting in the camera's container (unlit, following the camera); the HUD is drawn after it all.
 import { Application, Container, Graphics, Rectangle, Sprite, Text, Texture, type WebGLRenderer } from 'pixi.js';
-import { PenumbraLayer, PointLight, Spotlight, TileHulls } from 'penumbra-gl/pixi';
+import { PenumbraGroup, PenumbraLayer, PointLight, Spotlight, TileHulls } from 'penumbra-gl/pixi';
 import {
-  HUD_COLOR, Keys, LAMPS, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, PROP_POSITION, PROP_SIZE, PROP_SPIN, TILE_SIZE,
-  WORLD_HEIGHT, WORLD_WIDTH, canvasSize, followPlayer, levelTiles, moveWithCollisions, propImage, readPixels, waitFrames,
+  AMBIENT_COLOR, HUD_COLOR, Keys, LAMPS, PLAYER_LAYER, PLAYER_RADIUS, PLAYER_SPEED, PLAYER_START, PLAYER_TORCH, PROP_POSITION,
+  PROP_SIZE, PROP_SPIN, SIGN, SIGN_COLOR, TILE_SIZE, WORLD_HEIGHT, WORLD_LAYER, WORLD_WIDTH, canvasSize, followPlayer,
+  levelTiles, moveWithCollisions, propImage, readPixels, waitFrames, zoomFactorAfterWheel,
 } from '../examples/level';
+import { exposeGroupCheck } from './groupCheck';
 import { exposeOccluderCheck } from './occluderCheck';
 
 const app = new Application<WebGLRenderer>();
@@ -14,10 +18,11 @@ const app = new Application<WebGLRenderer>();
 await app.init({ resizeTo: window, preference: 'webgl', background: '#000000', antialias: false });
 document.body.appendChild(app.canvas);
 
-// The world container is the camera: its position and scale pan and zoom everything in it.
+// The world container is the camera: its position and scale pan and zoom everything in it. The
+// lighting layer inside it lights what is drawn before it (the level) with the lights of WORLD_LAYER.
 const world = new Container();
 world.addChild(drawFloor());
-const lighting = new PenumbraLayer(app.renderer, { camera: world, ambientColor: [0.08, 0.08, 0.12] });
+const lighting = new PenumbraLayer(app.renderer, { camera: world, ambientColor: AMBIENT_COLOR, layers: WORLD_LAYER });
 
 // The walls: a tile map, drawn as rectangles, whose hulls cover its solid tiles (a few large hulls).
 const tiles = new TileHulls(levelTiles(), { tileSize: TILE_SIZE });
@@ -31,17 +36,27 @@ prop.position.set(PROP_POSITION[0], PROP_POSITION[1]);
 lighting.addOccluder(prop);
 let propSpinning = true;
 
-const player = world.addChild(new Graphics().circle(0, 0, PLAYER_RADIUS).fill(0xe8d8b0).rect(4, -3, 12, 6).fill(0x444444));
 for (const lamp of LAMPS) {
-  lighting.addLight(new PointLight({ position: lamp.position, color: lamp.color, range: 220, radius: 8, intensity: 1.2 }));
-  world.addChild(new Graphics().circle(lamp.position[0], lamp.position[1], 5).fill(0xffffff));
+  lighting.addLight(new PointLight({ position: lamp.position, color: lamp.color, range: 220, radius: 8, intensity: 1.2, litLayers: WORLD_LAYER }));
 }
-const flashlight = lighting.addLight(new Spotlight({ range: 320, radius: 3, coneAngle: Math.PI / 3.5, coneDecay: 0.6, intensity: 1.3, color: [1, 0.95, 0.8] }));
+const flashlight = lighting.addLight(new Spotlight({
+  range: 320, radius: 3, coneAngle: Math.PI / 3.5, coneDecay: 0.6, intensity: 1.3, color: [1, 0.95, 0.8], litLayers: WORLD_LAYER,
+}));
+world.addChild(lighting);
+
+// After the lighting, in the camera: the player in a group lit apart, by its own torch only…
+const actors = world.addChild(new PenumbraGroup({ lighting, layers: PLAYER_LAYER }));
+const player = actors.addChild(new Graphics().circle(0, 0, PLAYER_RADIUS).fill(0xe8d8b0).rect(4, -3, 12, 6).fill(0x444444));
+const torch = lighting.addLight(new PointLight({ ...PLAYER_TORCH, litLayers: PLAYER_LAYER }));
+// …and what glows: the lamps' bulbs and a sign, unlit.
+const glowing = world.addChild(new Graphics());
+for (const lamp of LAMPS) glowing.circle(lamp.position[0], lamp.position[1], 5).fill(0xffffff);
+glowing.roundRect(...SIGN, 4).fill(SIGN_COLOR);
 
 const hud = new Container();
 hud.addChild(new Graphics().roundRect(8, 8, 28, 28, 4).fill(HUD_COLOR));
-hud.addChild(new Text({ text: 'WASD / arrows to move, mouse to aim', x: 44, y: 12, style: { fill: 0xffffff, fontSize: 14 } }));
-app.stage.addChild(world, lighting, hud);
+hud.addChild(new Text({ text: 'WASD / arrows to move, mouse to aim, wheel to zoom', x: 44, y: 12, style: { fill: 0xffffff, fontSize: 14 } }));
+app.stage.addChild(world, hud);
 
 const position: [number, number] = [PLAYER_START[0], PLAYER_START[1]];
 const mouse: [number, number] = [app.screen.width, app.screen.height / 2];
@@ -52,11 +67,16 @@ app.canvas.addEventListener('pointermove', (event) => {
 const keys = new Keys(window);
 const direction: [number, number] = [0, 0];
 const view = { zoom: 1, scroll: [0, 0] as [number, number] };
+let zoomFactor = 1;
+app.canvas.addEventListener('wheel', (event) => {
+  event.preventDefault();
+  zoomFactor = zoomFactorAfterWheel(zoomFactor, event.deltaY);
+}, { passive: false });
 
 function update(seconds: number): void {
   keys.direction(direction);
   moveWithCollisions(position, direction[0] * PLAYER_SPEED * seconds, direction[1] * PLAYER_SPEED * seconds);
-  const { zoom, scroll } = followPlayer(position, app.screen.width, app.screen.height, view);
+  const { zoom, scroll } = followPlayer(position, app.screen.width, app.screen.height, view, zoomFactor);
   world.scale.set(zoom);
   world.position.set(-scroll[0] * zoom, -scroll[1] * zoom);
   const aim = Math.atan2(mouse[1] / zoom + scroll[1] - position[1], mouse[0] / zoom + scroll[0] - position[0]);
@@ -64,6 +84,7 @@ function update(seconds: number): void {
   player.rotation = aim;
   flashlight.setPosition(position[0], position[1]);
   flashlight.rotation = aim;
+  torch.setPosition(position[0], position[1]);
   if (propSpinning) prop.rotation += PROP_SPIN * seconds;
 }
 app.ticker.add((ticker) => update(Math.min(ticker.deltaMS, 50) / 1000));
@@ -138,6 +159,9 @@ window.penumbraExample = {
     prop.rotation = rotation;
     prop.scale.set(flipX ? -scale : scale, scale);  // Pixi mirrors with a negative scale
   },
+  setZoom(factor) {
+    zoomFactor = factor;
+  },
   removeLighting() {
     lighting.destroy();
     const gl = app.renderer.gl;
@@ -145,3 +169,4 @@ window.penumbraExample = {
   },
 };
 exposeOccluderCheck(app, world, lighting, (x, y) => window.penumbraExample!.setPlayer(x, y));
+exposeGroupCheck(app, world, lighting);

@@ -10,7 +10,8 @@ export async function openExample(browser: Browser, url: string): Promise<{ page
   // The examples fill the window: a small one keeps SwiftShader's frames short.
   await page.setViewport({ width: 600, height: 400 });
   const errors = collectPageErrors(page);
-  await page.goto(url);
+  // A shared, busy machine may take SwiftShader well past puppeteer's 30 s to load an example.
+  await page.goto(url, { timeout: 120_000 });
   await page.waitForFunction(() => window.penumbraExample !== undefined, { timeout: 60_000 });
   await page.evaluate(() => window.penumbraExample!.frames(3));
   return { page, errors };

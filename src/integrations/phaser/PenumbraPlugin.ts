@@ -1,7 +1,9 @@
 import Phaser from 'phaser';
-import { mat4 } from 'gl-matrix';
-import { PenumbraRenderer, type Hull, type Light, type PenumbraRendererOptions } from '../../index';
-import { setViewProjection, type Affine2D } from '../viewProjection';
+import { PenumbraRenderer, type Hull, type Light, type LightOptions, type PenumbraRendererOptions } from '../../index';
+import { ALL_LAYERS, assertLayerMask } from '../../scene/validate';
+import { InPlaceLighting, type InPlaceView } from '../inPlaceLighting';
+import type { Affine2D } from '../viewProjection';
+import { PenumbraGroup, type PenumbraGroupOptions } from './PenumbraGroup';
 import { SpriteHulls, type FrameObject, type SpriteHullsOptions } from './SpriteHulls';
 import { TilemapLayerHulls, type TilemapLayerHullsOptions } from './TilemapLayerHulls';
 
@@ -23,9 +25,11 @@ export type PenumbraPluginOptions = Omit<PenumbraRendererOptions, 'viewProjectio
  * {@link PenumbraPlugin.configure}.
  *
  * It adds a lighting layer to the scene's display list, at depth {@link DEFAULT_LAYER_DEPTH}:
- * everything the camera drew below that depth is multiplied by the lightmap, what is drawn
- * above it (the HUD) stays unlit. Lights and hulls are in world units: the camera's scroll,
- * zoom and rotation are honoured. The layer is an `Extern`, Phaser's own hook for foreign GL
+ * everything the camera drew below that depth is multiplied by the lightmap (with the lights of
+ * {@link PenumbraPlugin.layers}), what is drawn above it stays unlit: the HUD, and glowing world
+ * objects, which follow the camera as any object does. Above it too, {@link PenumbraPlugin.addGroup}
+ * makes groups lit apart, by some lights only. Lights and hulls are in world units: the camera's
+ * scroll, zoom and rotation are honoured. The layer is an `Extern`, Phaser's own hook for foreign GL
  * code, so Phaser yields the context before and rebinds its state after. On scene shutdown the
  * lights and hulls are dropped; when the scene or the plugin is destroyed the GL resources are freed.
  *
@@ -34,20 +38,33 @@ export type PenumbraPluginOptions = Omit<PenumbraRendererOptions, 'viewProjectio
  * opaque pixels, following the sprite).
  */
 export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
-  private renderer: PenumbraRenderer | null = null;
+  /** The renderer, and what lights in place with it; null before boot and once destroyed. */
+  private inPlace: InPlaceLighting | null = null;
   private options: PenumbraPluginOptions = {};
   private extern: Phaser.GameObjects.Extern | null = null;
-  private readonly viewProjection = mat4.create();
+  private _layers = ALL_LAYERS;
+  /** The drawing context's viewport and its world → context map, filled before each lighting. */
+  private readonly view: InPlaceView = { pixelWidth: 0, pixelHeight: 0, width: 0, height: 0, flipY: false };
   private readonly camera: Affine2D = { a: 1, b: 0, c: 0, d: 1, tx: 0, ty: 0 };
-  private targetWidth = 0;
-  private targetHeight = 0;
   /** The tilemap layers and sprites added, with their hulls. */
   private readonly occluders = new Map<Phaser.GameObjects.GameObject, TilemapLayerHulls | SpriteHulls>();
 
   /** The core renderer: ambient colour, debug wireframe, stats, lights and hulls. */
   get penumbra(): PenumbraRenderer {
-    if (!this.renderer) throw new Error('penumbra: the plugin is not booted or was destroyed');
-    return this.renderer;
+    if (!this.inPlace) throw new Error('penumbra: the plugin is not booted or was destroyed');
+    return this.inPlace.renderer;
+  }
+
+  /**
+   * The content layers the lighting layer lights, a bit mask: it lights with the lights whose
+   * `litLayers` share a bit with it (see {@link LightOptions.litLayers}). Default `0xffffffff`
+   * (every light). Kept across scene restarts and {@link PenumbraPlugin.configure}.
+   */
+  get layers(): number {
+    return this._layers;
+  }
+  set layers(value: number) {
+    this._layers = assertLayerMask('PenumbraPlugin.layers', value);
   }
 
   /** The lighting layer: set its depth to choose what is lit (below) and what is not (above). */
@@ -78,11 +95,11 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
       lightmapBlur: old.lightmapBlur,
       ...options,
     };
-    const renderer = this.createRenderer(merged);
-    for (const light of old.lights) renderer.addLight(light);
-    for (const hull of old.hulls) renderer.addHull(hull);
+    const lighting = this.createLighting(merged);
+    for (const light of old.lights) lighting.renderer.addLight(light);
+    for (const hull of old.hulls) lighting.renderer.addHull(hull);
     old.dispose();
-    this.renderer = renderer;
+    this.inPlace = lighting;
     this.options = merged;
     return this;
   }
@@ -101,7 +118,29 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   }
   /** Removes a hull; returns whether it was there (false once the plugin is destroyed). */
   removeHull(hull: Hull): boolean {
-    return this.renderer?.removeHull(hull) ?? false;
+    return this.inPlace?.renderer.removeHull(hull) ?? false;
+  }
+
+  /**
+   * Adds a {@link PenumbraGroup} to the scene: a `Layer` whose children are lit apart, by the
+   * ambient colour and the lights whose `litLayers` share a bit with `options.layers` only (0: the
+   * ambient colour only). It is drawn after the lighting layer (its depth defaults to the layer's);
+   * to keep objects unlit, put them above the lighting layer's depth, in no group.
+   *
+   * ```ts
+   * const WORLD = 0b01, PLAYER = 0b10;
+   * this.penumbra.layers = WORLD;                                          // the level: lamps only
+   * this.penumbra.addLight(new PointLight({ position: [200, 150], range: 300, litLayers: WORLD }));
+   * const torch = this.penumbra.addLight(new PointLight({ range: 80, litLayers: PLAYER }));
+   * const actors = this.penumbra.addGroup({ layers: PLAYER });             // the player: its torch only
+   * actors.add(this.add.sprite(320, 240, 'hero'));
+   * this.add.image(400, 100, 'neon').setDepth(DEFAULT_LAYER_DEPTH + 1);    // glows: unlit
+   * ```
+   * @throws Error while the scene is not running (the lighting layer exists only then).
+   */
+  addGroup(options?: PenumbraGroupOptions): PenumbraGroup {
+    const scene = this.scene!;
+    return scene.add.existing(new PenumbraGroup(scene, this, options));
   }
 
   /**
@@ -153,7 +192,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   /** Called by Phaser once, when the scene boots. @internal */
   override boot(): void {
     this.options = this.entryData();
-    this.renderer = this.createRenderer(this.options);
+    this.inPlace = this.createLighting(this.options);
     const events = this.systems!.events;
     events.on(Phaser.Scenes.Events.START, this.onStart, this);
     events.on(Phaser.Scenes.Events.SHUTDOWN, this.onShutdown, this);
@@ -169,8 +208,8 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     this.dropOccluders();
     this.extern?.destroy();
     this.extern = null;
-    this.renderer?.dispose();
-    this.renderer = null;
+    this.inPlace?.renderer.dispose();
+    this.inPlace = null;
     super.destroy();
   }
 
@@ -192,7 +231,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     for (const occluder of [...this.occluders.values()]) occluder.destroy();
   }
 
-  private createRenderer(options: PenumbraPluginOptions): PenumbraRenderer {
+  private createLighting(options: PenumbraPluginOptions): InPlaceLighting {
     const renderer = this.game!.renderer as Partial<Phaser.Renderer.WebGL.WebGLRenderer>;
     if (!renderer.gl) throw new TypeError('penumbra: PenumbraPlugin needs Phaser\'s WebGL renderer (type: Phaser.WEBGL)');
     const gl = renderer.gl as WebGL2RenderingContext;
@@ -203,9 +242,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
       width: gl.drawingBufferWidth,
       height: gl.drawingBufferHeight,
     });
-    this.targetWidth = gl.drawingBufferWidth;
-    this.targetHeight = gl.drawingBufferHeight;
-    return penumbra;
+    return new InPlaceLighting(penumbra, gl.drawingBufferWidth, gl.drawingBufferHeight);
   }
 
   /** The `data` of this plugin's entry in the game config's `plugins.scene` (Phaser passes it to global plugins only). */
@@ -230,7 +267,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   private onShutdown(): void {
     this.extern = null;
     this.dropOccluders();
-    const penumbra = this.renderer;
+    const penumbra = this.inPlace?.renderer;
     if (!penumbra) return;
     for (let i = penumbra.lights.length - 1; i >= 0; i--) penumbra.removeLight(penumbra.lights[i]);
     for (let i = penumbra.hulls.length - 1; i >= 0; i--) penumbra.removeHull(penumbra.hulls[i]);
@@ -242,25 +279,36 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     context: Phaser.Renderer.WebGL.DrawingContext,
     calcMatrix: Phaser.GameObjects.Components.TransformMatrix,
   ): void => {
-    const penumbra = this.renderer;
-    if (!penumbra) return;
+    this.lightContext(context, calcMatrix, this._layers);
+  };
+
+  /** Whether the plugin has a renderer to light with: booted and not destroyed. @internal */
+  get canLight(): boolean {
+    return this.inPlace !== null;
+  }
+
+  /**
+   * Lights what is drawn in `context` in place with the lights of content `layers`,
+   * `worldToContext` mapping world units to the context's. Call it between Phaser's YieldContext and
+   * RebindContext nodes, which the Extern's renderer runs around the layer's render. @internal
+   */
+  lightContext(context: Phaser.Renderer.WebGL.DrawingContext, worldToContext: Phaser.GameObjects.Components.TransformMatrix, layers: number): void {
+    const lighting = this.inPlace;
+    if (!lighting) return;
     // Binds the context's framebuffer and viewport, which the lighting reads and writes.
     context.beginDraw();
-    if (context.width !== this.targetWidth || context.height !== this.targetHeight) {
-      this.targetWidth = context.width;
-      this.targetHeight = context.height;
-      penumbra.resize(context.width, context.height);
-    }
+    // Phaser 4 draws every context, the canvas and framebuffers (camera filters, lit groups) alike,
+    // with the same projection, y down (setProjectionMatrixFromDrawingContext): none upside down.
+    const view = this.view;
+    view.pixelWidth = view.width = context.width;
+    view.pixelHeight = view.height = context.height;
     const camera = this.camera;
-    camera.a = calcMatrix.a;
-    camera.b = calcMatrix.b;
-    camera.c = calcMatrix.c;
-    camera.d = calcMatrix.d;
-    camera.tx = calcMatrix.e;
-    camera.ty = calcMatrix.f;
-    // Phaser draws framebuffer contexts (camera filters) upside down, the canvas right side up.
-    setViewProjection(this.viewProjection, context.width, context.height, !context.useCanvas, camera);
-    penumbra.viewProjection = this.viewProjection;
-    penumbra.drawInPlace();
-  };
+    camera.a = worldToContext.a;
+    camera.b = worldToContext.b;
+    camera.c = worldToContext.c;
+    camera.d = worldToContext.d;
+    camera.tx = worldToContext.e;
+    camera.ty = worldToContext.f;
+    lighting.draw(view, camera, layers);
+  }
 }

@@ -3,6 +3,7 @@
  * Re-exports the core API so that one import is enough.
  */
 export { PenumbraPlugin, DEFAULT_LAYER_DEPTH, type PenumbraPluginOptions } from './PenumbraPlugin';
+export { PenumbraGroup, type PenumbraGroupOptions } from './PenumbraGroup';
 export { TilemapLayerHulls, type TilemapLayerHullsOptions } from './TilemapLayerHulls';
 export { SpriteHulls, type SpriteHullsOptions, type FrameObject } from './SpriteHulls';
 export type { HullTarget } from './shared';

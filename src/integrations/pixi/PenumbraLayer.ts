@@ -1,7 +1,7 @@
-import { mat4 } from 'gl-matrix';
 import { Graphics, RenderContainer, Sprite, type Container, type Renderer, type WebGLRenderer } from 'pixi.js';
-import { Hull, PenumbraRenderer, type Light, type PenumbraRendererOptions } from '../../index';
-import { setViewProjection } from '../viewProjection';
+import { Hull, PenumbraRenderer, type Light, type LightOptions, type PenumbraRendererOptions } from '../../index';
+import { ALL_LAYERS, assertLayerMask } from '../../scene/validate';
+import { InPlaceLighting, type InPlaceView } from '../inPlaceLighting';
 import { GraphicsOccluder, type GraphicsHullsOptions } from './graphicsHulls';
 import { Occluder, prepareSpace, type OccluderSpace } from './Occluder';
 import { gpuReads, SpriteOccluder, type SpriteHullsOptions } from './spriteHulls';
@@ -14,6 +14,11 @@ export interface PenumbraLayerOptions extends Omit<PenumbraRendererOptions, 'vie
    * view-projection every frame. Default `null`: lights and hulls are in stage (screen) pixels.
    */
   camera?: Container | null;
+  /**
+   * The content layers this layer lights, a bit mask: it lights with the lights whose `litLayers`
+   * share a bit with it (see {@link LightOptions.litLayers}). Default `0xffffffff` (every light).
+   */
+  layers?: number;
 }
 
 type BindState = ReturnType<WebGLRenderer['renderTarget']['getBindState']>;
@@ -30,6 +35,10 @@ type BindState = ReturnType<WebGLRenderer['renderTarget']['getBindState']>;
  * app.stage.addChild(world, lighting, hud);
  * lighting.addLight(new PointLight({ position: [200, 150], range: 300, radius: 10 }));
  * ```
+ *
+ * Content drawn after the layer is drawn as it is, unlit: a HUD, or glowing world sprites (put them
+ * after the layer inside the camera container, and they follow the camera). Content in a
+ * {@link PenumbraGroup} placed after the layer is lit apart, by some lights only.
  *
  * Hulls can also follow display objects: {@link PenumbraLayer.addOccluder} traces a `Sprite`'s
  * alpha or reads a `Graphics`' shapes, {@link PenumbraLayer.follow} takes your own hulls; the
@@ -53,16 +62,19 @@ export class PenumbraLayer extends RenderContainer {
   private readonly removeDestroyed = (occluder: Occluder): void => {
     this.removeOccluder(occluder);
   };
-  private readonly viewProjection = mat4.create();
-  private targetWidth = 0;
-  private targetHeight = 0;
+  /** Lights Pixi's bound target; shared with the groups, which light with the same renderer. */
+  private readonly inPlace: InPlaceLighting;
+  /** The bound target's viewport, filled before each lighting. */
+  private readonly view: InPlaceView = { pixelWidth: 0, pixelHeight: 0, width: 0, height: 0, flipY: false };
+  private _layers = ALL_LAYERS;
 
   constructor(renderer: Renderer, options: PenumbraLayerOptions = {}) {
     super({ label: 'PenumbraLayer' });
     const gl = (renderer as Partial<WebGLRenderer>).gl;
     if (!gl) throw new TypeError('penumbra: PenumbraLayer needs Pixi\'s WebGL renderer (Application.init({ preference: \'webgl\' }))');
-    const { camera = null, ...rendererOptions } = options;
+    const { camera = null, layers = ALL_LAYERS, ...rendererOptions } = options;
     this.camera = camera;
+    this.layers = layers;
     this.pixi = renderer;
     // Every renderer option goes through; the size and the view follow Pixi's target each frame.
     this.penumbra = new PenumbraRenderer(gl, {
@@ -71,8 +83,15 @@ export class PenumbraLayer extends RenderContainer {
       width: gl.drawingBufferWidth,
       height: gl.drawingBufferHeight,
     });
-    this.targetWidth = gl.drawingBufferWidth;
-    this.targetHeight = gl.drawingBufferHeight;
+    this.inPlace = new InPlaceLighting(this.penumbra, gl.drawingBufferWidth, gl.drawingBufferHeight);
+  }
+
+  /** The content layers this layer lights; see {@link PenumbraLayerOptions.layers}. */
+  get layers(): number {
+    return this._layers;
+  }
+  set layers(value: number) {
+    this._layers = assertLayerMask('PenumbraLayer.layers', value);
   }
 
   /** Adds a light (in the camera's space); see {@link PenumbraRenderer.addLight}. */
@@ -176,7 +195,6 @@ export class PenumbraLayer extends RenderContainer {
   override render(renderer: Renderer): void {
     const pixi = renderer as WebGLRenderer;
     const targets = pixi.renderTarget;
-    const target = targets.renderTarget;
     targets.getBindState(this.bindState);
     const reads = gpuReads;
     this.updateOccluders();
@@ -185,14 +203,33 @@ export class PenumbraLayer extends RenderContainer {
       pixi.resetState();
       targets.bind(this.bindState);
     }
-    this.fitTarget(target.pixelWidth, target.pixelHeight);
-    // Pixi draws render textures upside down (row 0 at the top) and the screen right side up.
-    const cameraTransform = this.camera?.worldTransform ?? null;
-    setViewProjection(this.viewProjection, target.width, target.height, !target.isRoot, cameraTransform);
-    this.penumbra.viewProjection = this.viewProjection;
-    this.penumbra.drawInPlace();
+    this.lightBoundTarget(pixi, this._layers);
+  }
+
+  /**
+   * Lights the viewport of Pixi's bound target in place with the lights of content `layers`, seen
+   * through the camera, then hands Pixi back its state with the target still bound. @internal
+   */
+  lightBoundTarget(pixi: WebGLRenderer, layers: number): void {
+    const targets = pixi.renderTarget;
+    targets.getBindState(this.bindState);
+    const target = targets.renderTarget;
+    const viewport = targets.viewport;
+    const view = this.view;
+    view.pixelWidth = viewport.width;
+    view.pixelHeight = viewport.height;
+    view.width = viewport.width / target.resolution;
+    view.height = viewport.height / target.resolution;
+    // As Pixi's own projection: render textures upside down (row 0 at the top), the screen right
+    // side up, and either way round again when bound with flipY.
+    view.flipY = !target.isRoot !== Boolean(target.flipY);
+    this.inPlace.draw(view, this.camera?.worldTransform ?? null, layers);
     // The engine's own mechanism for foreign GL code; it forgets the bound target too, so bind it back.
     pixi.resetState();
+    // resetState takes Pixi's cached clear colour to transparent black without setting GL's, which
+    // still holds the frame's background: the next clear to transparent (a filter's texture, a
+    // lit group's) would skip gl.clearColor and clear to the background. Make them agree.
+    pixi.gl.clearColor(0, 0, 0, 0);
     targets.bind(this.bindState);
   }
 
@@ -202,12 +239,5 @@ export class PenumbraLayer extends RenderContainer {
     this._occluders.length = 0;
     this.penumbra.dispose();
     super.destroy(options);
-  }
-
-  private fitTarget(width: number, height: number): void {
-    if (width === this.targetWidth && height === this.targetHeight) return;
-    this.targetWidth = width;
-    this.targetHeight = height;
-    this.penumbra.resize(width, height);
   }
 }

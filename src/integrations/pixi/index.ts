@@ -3,6 +3,7 @@
  * Re-exports the core API so that one import is enough.
  */
 export { PenumbraLayer, type PenumbraLayerOptions } from './PenumbraLayer';
+export { PenumbraGroup, type PenumbraGroupOptions } from './PenumbraGroup';
 export { hullFromBounds, hullFromPolygon } from './hulls';
 export { Occluder } from './Occluder';
 export { SpriteOccluder, hullsFromTexture, forgetTextureHulls, type SpriteHullsOptions, type TextureHullsOptions } from './spriteHulls';
