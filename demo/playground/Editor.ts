@@ -1,13 +1,16 @@
-import { Hull, type Light } from 'penumbra-gl';
-import { hullContains } from './hullShape';
+import { DirectionalLight, Hull, type Light } from 'penumbra-gl';
+import { hullHit } from './hullShape';
 import { LIGHT_HANDLE_RADIUS } from './Overlay';
 import type { Playground, Selectable } from './Playground';
+import { rotationTowards, sunUnder } from './sunCompass';
 import type { TilePainter } from './TilePainter';
 
 /** Keyboard panning speed in CSS pixels per second. */
 const PAN_SPEED = 600;
 /** Clicking this close (CSS pixels) to a new hull's first point closes it. */
 const CLOSE_DISTANCE = 12;
+/** A click this close (CSS pixels) to an open hull's line picks it. */
+const OPEN_HULL_PICK_DISTANCE = 6;
 const PAN_KEYS: Record<string, [number, number]> = {
   KeyW: [0, 1], ArrowUp: [0, 1], KeyS: [0, -1], ArrowDown: [0, -1],
   KeyA: [1, 0], ArrowLeft: [1, 0], KeyD: [-1, 0], ArrowRight: [-1, 0],
@@ -16,12 +19,15 @@ const PAN_KEYS: Record<string, [number, number]> = {
 /** What a single-pointer drag is doing. */
 type Drag =
   | { kind: 'move'; target: Selectable; offsetX: number; offsetY: number; moved: boolean }
+  /** Turning a sun by its compass (centre in CSS pixels): its arrow follows the pointer. */
+  | { kind: 'turn'; sun: DirectionalLight; centre: [number, number]; moved: boolean }
   | { kind: 'pan' }
   | { kind: 'paint' };
 
 /**
  * Pointer and keyboard editing on the overlay canvas: click to select, drag lights and hulls
- * (mouse, pen or touch), drag empty space or press W/A/S/D or arrows to pan, wheel or pinch to
+ * (mouse, pen or touch; an open hull is picked near its line), drag a sun's compass to turn it (its
+ * arrow follows the pointer), drag empty space or press W/A/S/D or arrows to pan, wheel or pinch to
  * zoom, and in hull mode click points to draw a hull (click its first point, double-click or press
  * Enter to close; Escape cancels). While picking a light's ignored hulls, a click on a hull adds it
  * to them or takes it out (Escape ends). In tile mode a drag paints wall tiles, a right-drag or
@@ -139,18 +145,23 @@ export class Editor extends EventTarget {
     }
   }
 
-  /** The light or hull under a canvas point (CSS pixels): lights first, topmost first. */
+  /**
+   * The light or hull in the world under a canvas point (CSS pixels): lights with a position first,
+   * topmost first (suns have none: their compasses are picked by {@link sunUnder}).
+   */
   pick(x: number, y: number): Selectable | null {
     const { camera, renderer } = this.playground;
     const [wx, wy] = camera.screenToWorld(x, y, this.world);
     const lights = renderer.lights;
     const reach = LIGHT_HANDLE_RADIUS / camera.zoom;
     for (let i = lights.length - 1; i >= 0; i--) {
+      if (lights[i] instanceof DirectionalLight) continue;
       const [lx, ly] = lights[i].position;
       if ((lx - wx) ** 2 + (ly - wy) ** 2 <= reach * reach) return lights[i];
     }
     const hulls = renderer.hulls;
-    for (let i = hulls.length - 1; i >= 0; i--) if (hullContains(hulls[i], wx, wy)) return hulls[i];
+    const lineReach = OPEN_HULL_PICK_DISTANCE / camera.zoom;
+    for (let i = hulls.length - 1; i >= 0; i--) if (hullHit(hulls[i], wx, wy, lineReach)) return hulls[i];
     return null;
   }
 
@@ -172,6 +183,13 @@ export class Editor extends EventTarget {
       const [wx, wy] = this.playground.camera.screenToWorld(event.offsetX, event.offsetY, this.world);
       this.painter.begin(wx, wy, !(event.button === 2 || event.shiftKey));
       this.drag = { kind: 'paint' };
+      return;
+    }
+    // The compasses lie over the world, so they are picked first.
+    const compass = sunUnder(this.playground.renderer.lights, this.playground.camera.height, event.offsetX, event.offsetY);
+    if (compass) {
+      this.playground.selection = compass.sun;
+      this.drag = { kind: 'turn', ...compass, moved: false };
       return;
     }
     const target = this.pick(event.offsetX, event.offsetY);
@@ -209,6 +227,11 @@ export class Editor extends EventTarget {
       camera.panBy(dx, dy);
       return;
     }
+    if (drag.kind === 'turn') {
+      drag.sun.rotation = rotationTowards(drag.centre, event.offsetX, event.offsetY);
+      drag.moved = true;
+      return;
+    }
     const [wx, wy] = camera.screenToWorld(event.offsetX, event.offsetY, this.world);
     if (drag.kind === 'paint') {
       this.painter.moveTo(wx, wy);
@@ -222,7 +245,7 @@ export class Editor extends EventTarget {
 
   private readonly onPointerUp = (event: PointerEvent): void => {
     this.pointers.delete(event.pointerId);
-    if (this.drag?.kind === 'move' && this.drag.moved) this.playground.changed();
+    if ((this.drag?.kind === 'move' || this.drag?.kind === 'turn') && this.drag.moved) this.playground.changed();
     if (this.drag?.kind === 'paint') this.painter.end();
     if (this.pointers.size === 0) this.drag = null;
   };

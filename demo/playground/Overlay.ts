@@ -1,6 +1,7 @@
-import { Hull, Spotlight, type Light } from 'penumbra-gl';
+import { DirectionalLight, Hull, Spotlight, type Light } from 'penumbra-gl';
 import { hullWorldPoint } from './hullShape';
 import type { Playground } from './Playground';
+import { COMPASS_RADIUS, compassCentre, forEachSun } from './sunCompass';
 
 /** Outline of a hull the selected light passes through. */
 const IGNORED_HULL_COLOR = '#ff9a3d';
@@ -12,6 +13,13 @@ export const LIGHT_HANDLE_RADIUS = 9;
 const MIN_GRID_SPACING = 6;
 /** The faint tile grid of tile mode. */
 const GRID_COLOR = 'rgba(255, 255, 255, 0.12)';
+/** Outline of the selected light or hull. */
+const SELECTED_COLOR = '#ffd34d';
+
+/** A light's linear colour as a CSS colour, channels above 1 shown as 1. */
+function cssColor([r, g, b]: readonly number[]): string {
+  return `rgb(${Math.min(255, r * 255)}, ${Math.min(255, g * 255)}, ${Math.min(255, b * 255)})`;
+}
 
 /** What tile mode shows: the grid of `tileSize` world units, the tile under the pointer, and whether a stroke erases. */
 export interface PaintGuide {
@@ -21,8 +29,9 @@ export interface PaintGuide {
 }
 
 /**
- * The editing gizmos, drawn unlit on a 2D canvas over the WebGL canvas: light handles, hull
- * outlines (invalid hulls dashed red, as the renderer ignores them), the selection, the hulls the
+ * The editing gizmos, drawn unlit on a 2D canvas over the WebGL canvas: light handles, the suns'
+ * compasses, hull outlines (invalid hulls dashed red, as the renderer ignores them; open hulls
+ * unclosed), the selection, the hulls the
  * selected light ignores (orange), the hull being drawn, and in tile mode the faint grid and the
  * tile under the pointer.
  */
@@ -52,10 +61,12 @@ export class Overlay {
       if (hull === selected || hull.valid && hulls.length > MAX_OUTLINED_HULLS) continue;
       this.outlineHull(hull, hull.valid ? 'rgba(255, 255, 255, 0.25)' : '#ff4d4d');
     }
-    if (selected instanceof Hull) this.outlineHull(selected, selected.valid ? '#ffd34d' : '#ff4d4d');
+    if (selected instanceof Hull) this.outlineHull(selected, selected.valid ? SELECTED_COLOR : '#ff4d4d');
     else if (selected) for (const hull of selected.ignoredHulls) this.outlineHull(hull, IGNORED_HULL_COLOR);
     if (lights.length <= MAX_OUTLINED_HULLS) for (const light of lights) this.drawLight(light, light === selected);
     else if (selected && !(selected instanceof Hull)) this.drawLight(selected, true);
+    // Few and fixed on the view: always drawn.
+    forEachSun(lights, (sun, index) => this.drawCompass(sun, index, sun === selected));
     if (draft.length > 0) this.drawDraft(draft, draftValid);
   }
 
@@ -103,7 +114,7 @@ export class Overlay {
       if (i === 0) g.moveTo(point[0], point[1]);
       else g.lineTo(point[0], point[1]);
     }
-    g.closePath();
+    if (hull.closed) g.closePath();
     g.stroke();
     g.setLineDash([]);
     if (!hull.valid) {
@@ -113,14 +124,15 @@ export class Overlay {
     }
   }
 
+  /** A light's handle at its position; none for a sun, which has no position (its compass stands for it). */
   private drawLight(light: Light, selected: boolean): void {
+    if (light instanceof DirectionalLight) return;
     const { g, point } = this;
     const camera = this.playground.camera;
     camera.worldToScreen(light.position[0], light.position[1], point);
     const [x, y] = point;
-    const [r, gr, b] = light.color;
-    g.fillStyle = `rgb(${Math.min(255, r * 255)}, ${Math.min(255, gr * 255)}, ${Math.min(255, b * 255)})`;
-    g.strokeStyle = selected ? '#ffd34d' : 'rgba(0, 0, 0, 0.7)';
+    g.fillStyle = cssColor(light.color);
+    g.strokeStyle = selected ? SELECTED_COLOR : 'rgba(0, 0, 0, 0.7)';
     g.lineWidth = selected ? 3 : 1.5;
     g.beginPath();
     g.arc(x, y, LIGHT_HANDLE_RADIUS, 0, Math.PI * 2);
@@ -143,6 +155,38 @@ export class Overlay {
       g.stroke();
       g.setLineDash([]);
     }
+  }
+
+  /**
+   * Sun `index`'s compass: a ring with the sun, in its colour, on the side its light comes from,
+   * and an arrow across to the side it travels to, where shadows fall.
+   */
+  private drawCompass(sun: DirectionalLight, index: number, selected: boolean): void {
+    const { g, point } = this;
+    const [x, y] = compassCentre(index, this.playground.camera.height, point);
+    const dx = Math.cos(sun.rotation) * COMPASS_RADIUS, dy = Math.sin(sun.rotation) * COMPASS_RADIUS;
+    g.fillStyle = 'rgba(0, 0, 0, 0.55)';
+    g.strokeStyle = selected ? SELECTED_COLOR : 'rgba(255, 255, 255, 0.7)';
+    g.lineWidth = selected ? 3 : 1.5;
+    g.beginPath();
+    g.arc(x, y, COMPASS_RADIUS, 0, Math.PI * 2);
+    g.fill();
+    g.stroke();
+    // The arrow, from the sun's side to the head at the rim.
+    const headX = x + dx * 0.8, headY = y + dy * 0.8;
+    g.strokeStyle = '#fff';
+    g.lineWidth = 2;
+    g.beginPath();
+    g.moveTo(x - dx * 0.5, y - dy * 0.5);
+    g.lineTo(headX, headY);
+    g.moveTo(headX - dx * 0.35 - dy * 0.25, headY - dy * 0.35 + dx * 0.25);
+    g.lineTo(headX, headY);
+    g.lineTo(headX - dx * 0.35 + dy * 0.25, headY - dy * 0.35 - dx * 0.25);
+    g.stroke();
+    g.fillStyle = cssColor(sun.color);
+    g.beginPath();
+    g.arc(x - dx * 0.7, y - dy * 0.7, COMPASS_RADIUS * 0.22, 0, Math.PI * 2);
+    g.fill();
   }
 
   private drawDraft(draft: readonly (readonly [number, number])[], valid: boolean): void {

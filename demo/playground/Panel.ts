@@ -1,5 +1,7 @@
 import GUI, { type Controller } from 'lil-gui';
-import { Dithering, Hull, ShadowType, Spotlight, TexturedLight, ToneMapping, type Light } from 'penumbra-gl';
+import {
+  DirectionalLight, Dithering, Falloff, Hull, PointLight, ShadowType, Spotlight, TexturedLight, ToneMapping, type Light,
+} from 'penumbra-gl';
 import type { Editor } from './Editor';
 import type { ImageTracer } from './ImageTracer';
 import type { Playground } from './Playground';
@@ -26,8 +28,10 @@ const SHORT_SCREEN = 640;
 
 /** The layer bits the panel has a checkbox for; a mask's higher bits are kept as they are. */
 const LAYER_CHECKBOXES = 8;
-/** A mask with every layer's bit: `Light.shadowLayers`' default. */
+/** A mask with every layer's bit: the default of `Light.shadowLayers` and `Light.litLayers`. */
 const ALL_LAYERS = 0xffffffff;
+/** The end of the angular size slider (radians): wider than this, a sun's shadows are mostly penumbra. */
+const MAX_SLIDER_ANGULAR_SIZE = 0.8;
 
 /**
  * A layer mask as a folder title shows it: `all`, `none`, or its layer numbers with runs as ranges
@@ -66,8 +70,16 @@ function fromHex(hex: string): [number, number, number] {
  * A number field with its value shown to `decimals` places. No min or max: lil-gui would clamp a
  * typed value silently, while the model refuses one out of range with a message naming it.
  */
-function number(folder: GUI, model: Record<string, unknown>, key: string, decimals: number): void {
-  folder.add(model, key).decimals(decimals).listen();
+function number(folder: GUI, model: Record<string, unknown>, key: string, decimals: number): Controller {
+  return folder.add(model, key).decimals(decimals).listen();
+}
+
+/**
+ * Shows `text` while the pointer rests on a control or a folder (lil-gui has no tooltips: this is
+ * the element's title attribute, which a folder's rows show too, having none of their own).
+ */
+function hint(control: { domElement: HTMLElement }, text: string): void {
+  control.domElement.title = text;
 }
 
 /** Adds a property to `model` whose reads and writes go through `get` and `set`. */
@@ -111,12 +123,14 @@ export class Panel {
       point: () => playground.addLight('point'),
       spot: () => playground.addLight('spot'),
       textured: () => playground.addLight('textured'),
+      sun: () => playground.addLight('directional'),
       hull: () => { editor.drawing = !editor.drawing; },
       remove: () => playground.deleteSelection(),
     };
     edit.add(buttons, 'point').name('add point light');
     edit.add(buttons, 'spot').name('add spotlight');
     edit.add(buttons, 'textured').name('add textured light');
+    hint(edit.add(buttons, 'sun').name('add sun (directional light)'), 'Light from far away over the whole view; drag its compass (bottom left) to turn it');
     const drawHull = edit.add(buttons, 'hull').name('draw hull (click points)');
     edit.add(buttons, 'remove').name('delete selected (Del)');
 
@@ -228,29 +242,18 @@ export class Panel {
     const m: Record<string, unknown> = {};
     this.field(m, 'enabled', () => light.enabled, (v: boolean) => { light.enabled = v; });
     this.field(m, 'castsShadows', () => light.castsShadows, (v: boolean) => { light.castsShadows = v; });
-    this.field(m, 'x', () => light.position[0], (v: number) => light.setPosition(v, light.position[1]));
-    this.field(m, 'y', () => light.position[1], (v: number) => light.setPosition(light.position[0], v));
-    this.field(m, 'range', () => light.range, (v: number) => { light.range = v; });
-    this.field(m, 'radius', () => light.radius, (v: number) => { light.radius = v; });
+    this.field(m, 'rotation°', () => light.rotation * DEGREES, (v: number) => { light.rotation = v / DEGREES; });
     this.field(m, 'color', () => toHex(light.color), (v: string) => { light.color = fromHex(v); });
     this.field(m, 'intensity', () => light.intensity, (v: number) => { light.intensity = v; });
-    this.field(m, 'rotation°', () => light.rotation * DEGREES, (v: number) => { light.rotation = v / DEGREES; });
-    this.field(m, 'originX', () => light.origin[0], (v: number) => { light.origin = [v, light.origin[1]]; });
-    this.field(m, 'originY', () => light.origin[1], (v: number) => { light.origin = [light.origin[0], v]; });
     this.field(m, 'shadowType', () => light.shadowType, (v: ShadowType) => { light.shadowType = v; });
     this.field(m, 'shadowColor', () => toHex(light.shadowColor), (v: string) => { light.shadowColor = fromHex(v); });
     this.field(m, 'shadowStrength', () => light.shadowStrength, (v: number) => { light.shadowStrength = v; });
     folder.add(m, 'enabled').listen();
     folder.add(m, 'castsShadows').listen();
-    number(folder, m, 'x', 1);
-    number(folder, m, 'y', 1);
-    number(folder, m, 'range', 1);
-    number(folder, m, 'radius', 1);
+    if (light instanceof DirectionalLight) this.sunControls(folder, m, light);
+    else this.placeControls(folder, m, light);
     folder.addColor(m, 'color').listen();
     number(folder, m, 'intensity', 2);
-    number(folder, m, 'rotation°', 1);
-    number(folder, m, 'originX', 2);
-    number(folder, m, 'originY', 2);
     // ShadowType itself is the menu (its entries): a type added to the library shows here too.
     folder.add(m, 'shadowType', ShadowType).listen();
     folder.addColor(m, 'shadowColor').listen();
@@ -272,6 +275,48 @@ export class Panel {
       number(folder, m, 'height', 1);
     }
     this.layerControls(folder, 'shadow layers', () => light.shadowLayers, (mask) => { light.shadowLayers = mask; });
+    const litLayers = this.layerControls(folder, 'lit layers', () => light.litLayers, (mask) => { light.litLayers = mask; });
+    hint(litLayers, 'The content layers this light lights (renderer.draw(layers)). The playground draws every layer at once, '
+      + 'so here it changes nothing on screen: it is saved with the scene, for games that draw layers apart.');
+  }
+
+  /**
+   * Where a light with a position is and how far it reaches: position, range, radius, rotation and
+   * origin, and the falloff of the lights that have one (textured lights' cookies replace it).
+   * `m` holds the shared `rotation°` field.
+   */
+  private placeControls(folder: GUI, m: Record<string, unknown>, light: Light): void {
+    this.field(m, 'x', () => light.position[0], (v: number) => light.setPosition(v, light.position[1]));
+    this.field(m, 'y', () => light.position[1], (v: number) => light.setPosition(light.position[0], v));
+    this.field(m, 'range', () => light.range, (v: number) => { light.range = v; });
+    this.field(m, 'radius', () => light.radius, (v: number) => { light.radius = v; });
+    this.field(m, 'originX', () => light.origin[0], (v: number) => { light.origin = [v, light.origin[1]]; });
+    this.field(m, 'originY', () => light.origin[1], (v: number) => { light.origin = [light.origin[0], v]; });
+    number(folder, m, 'x', 1);
+    number(folder, m, 'y', 1);
+    number(folder, m, 'range', 1);
+    number(folder, m, 'radius', 1);
+    if (light instanceof PointLight || light instanceof Spotlight) {
+      this.field(m, 'falloff', () => light.falloff, (v: Falloff) => { light.falloff = v; });
+      // Falloff itself is the menu, as ShadowType is.
+      folder.add(m, 'falloff', Falloff).listen();
+    }
+    number(folder, m, 'rotation°', 1);
+    number(folder, m, 'originX', 2);
+    number(folder, m, 'originY', 2);
+  }
+
+  /**
+   * A sun's direction and size: it has no position, range, radius or origin. `m` holds the shared
+   * `rotation°` field, which its compass (bottom left of the view) also turns.
+   */
+  private sunControls(folder: GUI, m: Record<string, unknown>, sun: DirectionalLight): void {
+    this.field(m, 'angularSize', () => sun.angularSize, (v: number) => { sun.angularSize = v; });
+    hint(number(folder, m, 'rotation°', 1), 'The direction the light travels: shadows fall that way (0° is +x, 90° is down). Or drag the sun\'s compass, bottom left.');
+    // A slider over the useful range (a value typed beyond it is clamped to it); a loaded file's
+    // wider size (up to π/2) shows as it is. Steps of 0.0001 show the sun's 0.0093 as it is.
+    const size = folder.add(m, 'angularSize', 0, MAX_SLIDER_ANGULAR_SIZE, 0.0001).listen();
+    hint(size, 'Apparent diameter of the light\'s disk, radians: 0.0093 is the sun\'s; wider gives softer shadows, 0 hard ones.');
   }
 
   /**
@@ -290,8 +335,9 @@ export class Panel {
    * A layer mask as a folder of checkboxes, one per layer below {@link LAYER_CHECKBOXES}, closed
    * with the mask summed up in its title. Only these checkboxes change a mask while its object is
    * selected (a loaded scene clears the selection), so the title follows their changes alone.
+   * Returns the folder.
    */
-  private layerControls(parent: GUI, label: string, get: () => number, set: (mask: number) => void): void {
+  private layerControls(parent: GUI, label: string, get: () => number, set: (mask: number) => void): GUI {
     const folder = parent.addFolder(label).close();
     const showMask = () => folder.title(`${label}: ${describeLayers(get())}`);
     const m: Record<string, unknown> = {};
@@ -301,6 +347,7 @@ export class Panel {
       folder.add(m, key).onChange(showMask);
     }
     showMask();
+    return folder;
   }
 
   private labelPickButton(): void {

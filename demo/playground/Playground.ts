@@ -1,5 +1,5 @@
 import {
-  createSceneObjects, describeScene, Hull, PenumbraRenderer, PointLight, readScene, Spotlight, TexturedLight,
+  createSceneObjects, describeScene, DirectionalLight, Hull, PenumbraRenderer, PointLight, readScene, Spotlight, TexturedLight,
   type Light, type SceneDocument,
 } from 'penumbra-gl';
 import { Camera } from './Camera';
@@ -10,7 +10,7 @@ import { createTexture } from './textures';
 /** What can be selected and edited. */
 export type Selectable = Light | Hull;
 /** Kinds of light the page can add. */
-export type NewLightKind = 'point' | 'spot' | 'textured';
+export type NewLightKind = 'point' | 'spot' | 'textured' | 'directional';
 
 /** How far apart (CSS pixels) a new light is put from the others: a few handle radii. */
 const NEW_LIGHT_SPACING = 48;
@@ -18,6 +18,8 @@ const NEW_LIGHT_SPACING = 48;
 const GOLDEN_ANGLE = Math.PI * (3 - Math.sqrt(5));
 /** Spotlights sweep this far (radians) either side when animation is on. */
 const SWEEP = 0.5;
+/** A new sun's light: shadows fall down and to the right, as under a low afternoon sun; its angular size is the library's (the sun's). */
+const NEW_SUN = { rotation: Math.PI / 4, color: [1, 0.95, 0.85], intensity: 0.8 } as const;
 
 /**
  * The playground's model: the renderer with its lights and hulls, the camera, the selection and
@@ -101,27 +103,35 @@ export class Playground extends EventTarget {
     });
   }
 
-  /** Adds a light of `kind` near the centre of the view, clear of the other lights' handles, and selects it. */
+  /**
+   * Adds a light of `kind` and selects it: a sun (shown by a compass on the view), or a light near
+   * the centre of the view, clear of the other lights' handles.
+   */
   addLight(kind: NewLightKind): Light {
-    const options = { position: this.freeSpotNearCentre(), range: 300, radius: 10, color: [1, 0.9, 0.7] as [number, number, number] };
-    const light = kind === 'point' ? new PointLight(options)
-      : kind === 'spot' ? new Spotlight({ ...options, coneAngle: 0.8 })
-        : new TexturedLight({ ...options, texture: this.cookies.resolve('flame')!, size: [500, 500] });
+    const light = kind === 'directional' ? new DirectionalLight(NEW_SUN) : this.newPlacedLight(kind);
     this.renderer.addLight(light);
     this.selection = light;
     this.changed();
     return light;
   }
 
+  /** A light of `kind` with a position, near the centre of the view. */
+  private newPlacedLight(kind: Exclude<NewLightKind, 'directional'>): Light {
+    const options = { position: this.freeSpotNearCentre(), range: 300, radius: 10, color: [1, 0.9, 0.7] as [number, number, number] };
+    return kind === 'point' ? new PointLight(options)
+      : kind === 'spot' ? new Spotlight({ ...options, coneAngle: 0.8 })
+        : new TexturedLight({ ...options, texture: this.cookies.resolve('flame')!, size: [500, 500] });
+  }
+
   /**
    * The centre of the view, or failing that the first point of a sunflower spiral around it that
-   * is {@link NEW_LIGHT_SPACING} CSS pixels from every light: lights added one after another do
-   * not hide each other's handles.
+   * is {@link NEW_LIGHT_SPACING} CSS pixels from every light with a handle in the world (suns have
+   * none): lights added one after another do not hide each other's handles.
    */
   private freeSpotNearCentre(): [number, number] {
     const [cx, cy] = this.camera.center;
     const spacing = NEW_LIGHT_SPACING / this.camera.zoom;
-    const lights = this.renderer.lights;
+    const lights = this.renderer.lights.filter((light) => !(light instanceof DirectionalLight));
     for (let k = 0; ; k++) {
       const radius = spacing * Math.sqrt(k), angle = k * GOLDEN_ANGLE;
       const x = cx + radius * Math.cos(angle), y = cy + radius * Math.sin(angle);

@@ -25,6 +25,8 @@ void main() {
 /** World units per repetition of the floor and stone textures. */
 const FLOOR_TILE = 256;
 const STONE_TILE = 128;
+/** Width in world units of the stone line an open hull is drawn as. */
+const OPEN_HULL_WIDTH = 6;
 /** Floats per vertex: position (2), uv (2). */
 const FLOATS = 4;
 
@@ -52,8 +54,9 @@ export interface ImageSprite {
 
 /**
  * The game-like scene under the lights, drawn with plain WebGL2 in world space: a tiled floor,
- * the hulls' tops in stone (any simple or even invalid polygon, via a stencil even-odd fill, so no
- * triangulation is needed), then sprites and traced images. The renderer lights whatever this draws.
+ * the closed hulls' tops in stone (any simple or even invalid polygon, via a stencil even-odd fill,
+ * so no triangulation is needed) and the open hulls as stone lines (they have no inside), then
+ * sprites and traced images. The renderer lights whatever this draws.
  */
 export class SceneArt {
   private readonly program: WebGLProgram;
@@ -110,7 +113,7 @@ export class SceneArt {
     gl.stencilFunc(gl.ALWAYS, 0, 0xff);
     gl.stencilOp(gl.KEEP, gl.KEEP, gl.INVERT);
     gl.colorMask(false, false, false, false);
-    for (const hull of hulls) if (hull.enabled) this.pushFan(hull);
+    for (const hull of hulls) if (hull.enabled && hull.closed) this.pushFan(hull);
     this.flush(this.textures.stone);
     gl.colorMask(true, true, true, true);
     gl.stencilFunc(gl.NOTEQUAL, 0, 0xff);
@@ -118,6 +121,8 @@ export class SceneArt {
     this.pushWorldRect(view, STONE_TILE);
     this.flush(this.textures.stone);
     gl.disable(gl.STENCIL_TEST);
+    for (const hull of hulls) if (hull.enabled && !hull.closed) this.pushLine(hull);
+    this.flush(this.textures.stone);
 
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
@@ -182,6 +187,31 @@ export class SceneArt {
       this.pushVertex(first[0], first[1], 0, 0);
       this.pushVertex(previous[0], previous[1], 0, 0);
       this.pushVertex(point[0], point[1], 0, 0);
+      previous[0] = point[0];
+      previous[1] = point[1];
+    }
+  }
+
+  /**
+   * An open hull's segments as quads {@link OPEN_HULL_WIDTH} wide, each reaching half the width
+   * past its ends so that consecutive ones overlap at their shared point (no notch at a bend).
+   * Opaque, so the overlaps need no stencil.
+   */
+  private pushLine(hull: Hull): void {
+    const n = hull.points.length;
+    if (n < 2) return;
+    const half = OPEN_HULL_WIDTH / 2;
+    const previous = hullWorldPoint(hull, 0, this.previous);
+    for (let i = 1; i < n; i++) {
+      const point = hullWorldPoint(hull, i, this.point);
+      const length = Math.hypot(point[0] - previous[0], point[1] - previous[1]);
+      if (length > 0) {
+        // Unit vectors along the segment and across it.
+        const ux = (point[0] - previous[0]) / length, uy = (point[1] - previous[1]) / length;
+        const x = previous[0] - ux * half + uy * half, y = previous[1] - uy * half - ux * half;
+        const along = length + OPEN_HULL_WIDTH;
+        this.pushQuad(x, y, ux * along, uy * along, -uy * OPEN_HULL_WIDTH, ux * OPEN_HULL_WIDTH, 0, 0, along / STONE_TILE, OPEN_HULL_WIDTH / STONE_TILE);
+      }
       previous[0] = point[0];
       previous[1] = point[1];
     }

@@ -22,6 +22,39 @@ export function hullLocalToWorld(hull: Hull, lx: number, ly: number, out: [numbe
 const scratch: [number, number] = [0, 0];
 const previous: [number, number] = [0, 0];
 
+/**
+ * Whether world point (x, y) picks the hull: inside a closed one (which is drawn filled), within
+ * `reach` world units of an open one's line (which is drawn as a line, with no inside to click).
+ */
+export function hullHit(hull: Hull, x: number, y: number, reach: number): boolean {
+  return hull.closed ? hullContains(hull, x, y) : polylineDistance(hull, x, y) <= reach;
+}
+
+/** Distance from world point (x, y) to the nearest segment of a hull's points taken as an open polyline (∞ with no points). */
+function polylineDistance(hull: Hull, x: number, y: number): number {
+  const n = hull.points.length;
+  if (n === 0) return Infinity;
+  hullWorldPoint(hull, 0, previous);
+  // A single point is a segment of length 0.
+  let nearest = Math.hypot(x - previous[0], y - previous[1]);
+  for (let i = 1; i < n; i++) {
+    const [bx, by] = hullWorldPoint(hull, i, scratch);
+    nearest = Math.min(nearest, segmentDistance(x, y, previous[0], previous[1], bx, by));
+    previous[0] = bx;
+    previous[1] = by;
+  }
+  return nearest;
+}
+
+/** Distance from (x, y) to the segment from (ax, ay) to (bx, by). */
+function segmentDistance(x: number, y: number, ax: number, ay: number, bx: number, by: number): number {
+  const dx = bx - ax, dy = by - ay;
+  const lengthSquared = dx * dx + dy * dy;
+  // The segment's point nearest (x, y), as a fraction of the way from a to b, kept on the segment.
+  const t = lengthSquared === 0 ? 0 : Math.min(1, Math.max(0, ((x - ax) * dx + (y - ay) * dy) / lengthSquared));
+  return Math.hypot(x - ax - t * dx, y - ay - t * dy);
+}
+
 /** Whether world point (x, y) lies inside the hull's polygon (even-odd rule, so also for invalid hulls). */
 export function hullContains(hull: Hull, x: number, y: number): boolean {
   const n = hull.points.length;

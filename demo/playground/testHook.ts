@@ -5,6 +5,7 @@ import type { ImageTracer } from './ImageTracer';
 import type { Playground } from './Playground';
 import { PRESETS } from './presets';
 import type { OverlayFigures, StatsOverlay } from './StatsOverlay';
+import { compassCentre } from './sunCompass';
 
 /** What the page exposes as `window.playground`, so browser tests can drive it without brittle clicks. */
 export interface PlaygroundTestHook {
@@ -22,6 +23,8 @@ export interface PlaygroundTestHook {
   setAnimation(on: boolean): void;
   /** The canvas point (CSS pixels) of a world point. */
   worldToScreen(x: number, y: number): [number, number];
+  /** The canvas point (CSS pixels) of the centre of the compass of sun `index` (the directional lights in the renderer's order). */
+  sunCompass(index: number): [number, number];
   /** Draws a frame now and returns the canvas colour (0..255 RGB) at a CSS pixel point. */
   readPixel(x: number, y: number): [number, number, number];
   /** `gl.getError()` after a frame: 0 when WebGL reported nothing. */
@@ -78,6 +81,7 @@ export function installTestHook(parts: TestHookParts): void {
     errorMessage: () => (message.hidden ? null : message.textContent),
     setAnimation: (on) => { playground.animate = on; },
     worldToScreen: (x, y) => playground.camera.worldToScreen(x, y, [0, 0]),
+    sunCompass: (index) => compassCentre(index, playground.camera.height, [0, 0]),
     readPixel(x, y) {
       parts.frame();
       const scale = gl.drawingBufferWidth / playground.camera.width;

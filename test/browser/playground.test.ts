@@ -6,7 +6,7 @@ import type { Browser, Page } from 'puppeteer';
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import type { SceneDirectionalLight, SceneDocument, SceneLight } from '../../src/index';
 import { Dithering, ToneMapping } from '../../src/passes/compositeLayout';
-import { ShadowType } from '../../src/scene/lights';
+import { Falloff, falloffAt, ShadowType } from '../../src/scene/lights';
 import { collectPageErrors, launchChromium } from './chromium';
 import { serveDirectory, type StaticServer } from './staticServer';
 
@@ -39,6 +39,11 @@ function testScene(light: [number, number], range = 300): TestScene {
 /** The test scene without its box: painted and traced hulls are then the only ones. */
 function emptyScene(light: [number, number], range = 300): TestScene {
   return { ...testScene(light, range), hulls: [] };
+}
+
+/** The test scene's box with no light: what a sun added to it alone lights. */
+function darkScene(): TestScene {
+  return { ...testScene([100, 200]), lights: [] };
 }
 
 const brightness = ([r, g, b]: [number, number, number]) => r + g + b;
@@ -107,6 +112,24 @@ describe('playground page in Chromium', () => {
     if (input.checked !== value) input.click();
   }, on);
   const isTicked = async (name: string) => (await fieldElement(name)).evaluate((input) => input.checked);
+  /** Ticks or clears the checkbox named `name` in the folder whose title starts with `folder` (layer folders share their checkboxes' names). */
+  const tickIn = (folder: string, name: string, on: boolean) => page.evaluate((title, label, value) => {
+    const gui = [...document.querySelectorAll('.lil-gui')].find((g) => g.querySelector(':scope > .lil-title')?.textContent?.startsWith(title))!;
+    const input = [...gui.querySelectorAll('.lil-controller')].find((c) => c.querySelector('.lil-name')?.textContent === label)!.querySelector('input')!;
+    if (input.checked !== value) input.click();
+  }, folder, name, on);
+  /** Whether the panel has a field named `name`. */
+  const hasField = (name: string) => page.evaluate((label) =>
+    [...document.querySelectorAll('.lil-gui .lil-controller')].some((c) => c.querySelector('.lil-name')?.textContent === label), name);
+  /** The saved scene with any light, directional ones included. */
+  const savedLights = async () => (JSON.parse(await page.evaluate(() => window.playground.sceneText())) as SceneDocument).lights;
+  /** Drags with the mouse from one canvas point (CSS pixels) to another. */
+  const dragOnCanvas = async (from: [number, number], to: [number, number]) => {
+    await page.mouse.move(...from);
+    await page.mouse.down();
+    await page.mouse.move(...to, { steps: 4 });
+    await page.mouse.up();
+  };
   /** The labels of the menu named `name`, in order. */
   const menuLabels = async (name: string) => (await fieldElement(name, 'select')).evaluate((select) =>
     [...(select as unknown as HTMLSelectElement).options].map((option) => option.textContent));
@@ -579,6 +602,118 @@ describe('playground page in Chromium', () => {
 
     await page.evaluate(() => window.playground.selectPreset('Stage'));
     expect(await lookShown()).toEqual(['1', 'None', 'None', '0']);
+  });
+
+  it('adds a sun whose shadow falls along its rotation, turned by its compass and softened by its angular size', async () => {
+    expect(await load(darkScene())).toBe(true);
+    const unlit = brightness(await readPixel(150, 200));
+    await clickButton('add sun');
+    expect(await folderTitles()).toContain('Selected directional light');
+    // A sun has no position, range, radius or origin, and no falloff.
+    for (const name of ['x', 'y', 'range', 'radius', 'originX', 'originY', 'falloff']) expect(await hasField(name)).toBe(false);
+
+    // Travelling along +x: the box (x 200–240, y 140–260) shadows its right.
+    await enter('rotation°', '0');
+    let upstream = brightness(await readPixel(150, 200)), downstream = brightness(await readPixel(300, 200));
+    expect(upstream).toBeGreaterThan(unlit + 100);
+    expect(upstream).toBeGreaterThan(3 * downstream + 30);
+
+    // Its compass's arrow follows a drag: pointing down, the shadow falls below the box instead.
+    const centre = await page.evaluate(() => window.playground.sunCompass(0));
+    await dragOnCanvas(centre, [centre[0], centre[1] + 20]);
+    const [sun] = await savedLights();
+    expect(sun.kind).toBe('directional');
+    expect(sun.rotation).toBeCloseTo(Math.PI / 2, 6);
+    expect(Number(await fieldText('rotation°'))).toBe(90);
+    upstream = brightness(await readPixel(220, 100));
+    downstream = brightness(await readPixel(220, 320));
+    expect(upstream).toBeGreaterThan(3 * downstream + 30);
+    expect(brightness(await readPixel(300, 200))).toBeGreaterThan(3 * downstream + 30);
+
+    // 4 units inside the shadow's edge and 120–240 below the box: in the umbra of the sun's
+    // 0.0093 radians, in a wide penumbra at 0.6 (rays up to 0.3 off the axis clear the box's corner).
+    const nearEdge = brightness(await readPixel(236, 380));
+    expect(nearEdge).toBeLessThan(downstream + 10);
+    await enter('angularSize', '0.6');
+    expect((await savedLights())[0]).toMatchObject({ kind: 'directional', angularSize: 0.6 });
+    expect(brightness(await readPixel(236, 380))).toBeGreaterThan(nearEdge + 60);
+    expect(errors).toEqual([]);
+  });
+
+  it('saves a sun with its rotation and angular size, and a saved file loaded through the picker brings it back', async () => {
+    expect(await load(darkScene())).toBe(true);
+    await clickButton('add sun');
+    await enter('rotation°', '30');
+    await enter('angularSize', '0.25');
+    const saved = await saveThroughPanel();
+    const [sun] = (JSON.parse(saved) as SceneDocument).lights;
+    expect(sun).toMatchObject({ kind: 'directional', angularSize: 0.25 });
+    expect(sun.rotation).toBeCloseTo(Math.PI / 6, 12);
+    expect(sun).not.toHaveProperty('position');
+    const lit = await readPixel(150, 200);
+
+    expect(await load(darkScene())).toBe(true);
+    expect(await savedLights()).toEqual([]);
+    const file = join(mkdtempSync(join(tmpdir(), 'penumbra-playground-')), 'sun.penumbra.json');
+    writeFileSync(file, saved);
+    const [chooser] = await Promise.all([page.waitForFileChooser(), clickButton('load scene')]);
+    await chooser.accept([file]);
+    await page.waitForFunction((text) => window.playground.sceneText() === text, { timeout: 10_000 }, saved);
+    expect(await savedLights()).toEqual([sun]);
+    expect(await readPixel(150, 200)).toEqual(lit);
+    // Its compass is back, and selects it.
+    await page.mouse.click(...await page.evaluate(() => window.playground.sunCompass(0)));
+    expect(await folderTitles()).toContain('Selected directional light');
+    expect(Number(await fieldText('angularSize'))).toBe(0.25);
+  });
+
+  it('offers every falloff the library has for a point light, and the light at a point then follows the curve picked', async () => {
+    // No ambient light, so that a pixel's colour is the floor's times the light's falloff alone.
+    const scene = { ...emptyScene([100, 200]), ambient: [0, 0, 0] as [number, number, number] };
+    scene.lights[0].radius = 60;  // the inverse-square curve's core: 60 / 300 = 0.2 ranges
+    expect(await load(scene)).toBe(true);
+    await page.mouse.click(...await toScreen(100, 200));
+    expect(await menuLabels('falloff')).toEqual(Object.keys(Falloff));
+    expect(await fieldText('falloff')).toBe('Linear');
+    // 0.3 and 0.6 ranges from the light; the same pixels under each curve, so the floor's colour divides out.
+    const distances = [0.3, 0.6];
+    const read = () => Promise.all(distances.map(async (t) => brightness(await readPixel(100 + 300 * t, 200))));
+    const linear = await read();
+    for (const [label, falloff] of [['Smooth', Falloff.Smooth], ['InverseSquare', Falloff.InverseSquare]] as const) {
+      await choose('falloff', label);
+      expect((await savedLights())[0]).toMatchObject({ falloff });
+      const curved = await read();
+      distances.forEach((t, i) => {
+        const expected = falloffAt(falloff, t, 0.2) / falloffAt(Falloff.Linear, t, 0.2);
+        expect(Math.abs(curved[i] / linear[i] - expected)).toBeLessThan(0.06 * expected + 0.02);
+      });
+    }
+  });
+
+  it('sets a light\'s lit layers with their checkboxes, apart from its shadow layers, and saves them', async () => {
+    expect(await load(testScene([100, 200]))).toBe(true);
+    await page.mouse.click(...await toScreen(100, 200));
+    expect(await folderTitles()).toEqual(expect.arrayContaining(['shadow layers: all', 'lit layers: all']));
+    await tickIn('lit layers', 'layer 0', false);
+    await tickIn('lit layers', 'layer 3', false);
+    expect((await sceneDocument()).lights[0]).toMatchObject({ litLayers: 0xfffffff6, shadowLayers: 0xffffffff });
+    expect(await folderTitles()).toEqual(expect.arrayContaining(['shadow layers: all', 'lit layers: 1–2 4–31']));
+    await tickIn('lit layers', 'layer 0', true);
+    expect((await sceneDocument()).lights[0].litLayers).toBe(0xfffffff7);
+  });
+
+  it('selects an open hull by a click near its line, not by one inside its outline', async () => {
+    const scene = testScene([100, 200]);
+    // Open: three sides of the box, (200, 140) → (240, 140) → (240, 260) → (200, 260).
+    scene.hulls[0].closed = false;
+    expect(await load(scene)).toBe(true);
+    await page.mouse.click(...await toScreen(220, 200));  // 20 units from the nearest side
+    expect(await folderTitles()).not.toContain('Selected hull');
+    await page.mouse.click(...await toScreen(243, 200));  // 3 units right of the right side
+    expect(await folderTitles()).toContain('Selected hull');
+    await page.keyboard.press('Escape');
+    await page.mouse.click(...await toScreen(220, 136));  // 4 units above the top side
+    expect(await folderTitles()).toContain('Selected hull');
   });
 
   it('switches presets and keeps the scene across a reload', async () => {
