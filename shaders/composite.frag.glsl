@@ -1,7 +1,9 @@
 #version 300 es
 // Composite pass: writes scene colour × lightmap × exposure, tone-mapped and dithered as the
 // renderer's options say, into the host's framebuffer (alpha from the scene). With the defaults
-// (exposure 1, no curve, no dithering) the result is scene × lightmap exactly.
+// (exposure 1, no curve, no dithering) the result is scene × lightmap exactly. Built with NORMALS
+// for a renderer with normals: (scene × (lightmap + emissive) + highlights) × exposure, the emissive
+// from the material (docs/normal-maps.md).
 precision highp float;
 precision highp sampler2D;
 
@@ -10,6 +12,11 @@ uniform sampler2D u_lightmap;
 uniform float u_exposure;
 uniform int u_toneMapping; // 0 or TONE_REINHARD or TONE_ACES (src/passes/compositeLayout.ts)
 uniform int u_dithering;   // 0 or DITHER_ORDERED or DITHER_NOISE
+#ifdef NORMALS
+uniform sampler2D u_specular; // the light pass's highlights
+uniform sampler2D u_material; // specular, shininess code, emissive, coverage, premultiplied (src/passes/surfaceLayout.ts)
+uniform bool u_flipSurface;   // whether the material's row 0 is the top of the view
+#endif
 
 in vec2 v_uv;
 out vec4 o_color;
@@ -33,7 +40,14 @@ float ditherThreshold() {
 
 void main() {
   vec4 scene = texture(u_scene, v_uv);
+#ifdef NORMALS
+  vec4 material = texture(u_material, u_flipSurface ? vec2(v_uv.x, 1.0 - v_uv.y) : v_uv);
+  float emissive = material.a > 0.0 ? material.b / material.a : 0.0;
+  vec3 lit = scene.rgb * (texture(u_lightmap, v_uv).rgb + emissive) + texture(u_specular, v_uv).rgb;
+  vec3 color = toneMap(lit * u_exposure);
+#else
   vec3 color = toneMap(scene.rgb * texture(u_lightmap, v_uv).rgb * u_exposure);
+#endif
   // Shifts the value by less than half an 8-bit step either way, so rounding to 8 bits moves it
   // by at most one step, and the average over neighbours follows the exact value.
   if (u_dithering != 0) color += (ditherThreshold() - 0.5) / 255.0;

@@ -15,6 +15,10 @@ uniform float u_shadowType; // how the light treats the inside of hulls: SHADOW_
 uniform vec3 u_shadowKept; // the fraction of each channel a pixel in full shadow keeps (Light.writeShadowKept)
 uniform vec3 u_strips; // a directional light's strips: perpBase, width, alongBase (DirectionalStrips)
 uniform vec2 u_falloff; // the falloff's code and inverse-square core (see the chunk light-common)
+#ifdef NORMALS
+uniform vec4 u_towardsLight; // position xy and height, w 0; a directional light's unit vector towards it, w 1
+flat out vec4 v_towardsLight;
+#endif
 
 out vec2 v_fromLight;
 out vec2 v_uv;
@@ -37,6 +41,9 @@ void main() {
   v_shadowKept = u_shadowKept;
   v_strips = u_strips;
   v_falloff = u_falloff;
+#ifdef NORMALS
+  v_towardsLight = u_towardsLight;
+#endif
   gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
   // Depth ½ whatever the view: the quadrature pass tests it against the main pass's marks (LightPass).
   gl_Position.z = 0.0;

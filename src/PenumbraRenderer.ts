@@ -9,12 +9,13 @@ import { BlurPass } from './passes/BlurPass';
 import { CompositePass } from './passes/CompositePass';
 import { Dithering, MAX_BLUR_RADIUS, ToneMapping } from './passes/compositeLayout';
 import { DebugPass } from './passes/DebugPass';
-import { COOKIE_UNIT, LightPass } from './passes/LightPass';
+import { COOKIE_UNIT, LightPass, type Surface } from './passes/LightPass';
 import { ShadowTextures, ShadowUnits } from './passes/ShadowTextures';
+import { LightmapAttachments, SceneAttachments, SurfaceUnits } from './passes/surfaceLayout';
 import { Hull } from './scene/Hull';
 import { IlluminationQuery, type Illumination, type IlluminationOptions } from './scene/illumination';
 import { Light, TexturedLight, type LightOptions } from './scene/lights';
-import { ALL_LAYERS, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, describeValue, frozenColor, type ColorLike } from './scene/validate';
+import { ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, describeValue, frozenColor, type ColorLike } from './scene/validate';
 
 /** Options of a {@link PenumbraRenderer}; every field has the default shown. */
 export interface PenumbraRendererOptions {
@@ -46,6 +47,28 @@ export interface PenumbraRendererOptions {
   dithering?: Dithering;
   /** See {@link PenumbraRenderer.lightmapBlur}. Default `0`. */
   lightmapBlur?: number;
+  /**
+   * Light through the surface's normals, with Blinn-Phong highlights and emissive pixels:
+   * `beginDraw()` binds three colour attachments (colour, normal, material) for the host to write,
+   * and each light's `height` sets where it shines from (docs/normal-maps.md). Fixed for the
+   * renderer's life. Without it (the default) the renderer builds none of this and its output is as
+   * it always was. Default `false`.
+   */
+  normals?: boolean;
+}
+
+/**
+ * The normal and material textures of a host that draws into its own targets (see
+ * {@link PenumbraRenderer.drawInPlace}), for a renderer made with `normals: true`. Both have the
+ * renderer's size and hold the encodings of docs/normal-maps.md for the region lit.
+ */
+export interface SurfaceTextures {
+  /** World-axes normals premultiplied by coverage (location 1 of the scene target). */
+  normals: WebGLTexture;
+  /** Specular, shininess code and emissive premultiplied by coverage (location 2). Default: none (no highlights, no emission). */
+  material?: WebGLTexture | null;
+  /** Whether the textures' row 0 is the top of the image (render textures of PixiJS). Default `false`. */
+  flipY?: boolean;
 }
 
 /** Figures about the last frame, for overlays and benchmarks. */
@@ -81,6 +104,8 @@ const TRANSPARENT = new Float32Array(4);
 
 /** Texture units the passes bind (from 0: the shadow textures' and the cookie's), saved and restored around every draw. */
 const TEXTURE_UNITS = Math.max(COOKIE_UNIT, ...Object.values(ShadowUnits)) + 1;
+/** With normals, the surface's units too. */
+const TEXTURE_UNITS_WITH_NORMALS = Math.max(TEXTURE_UNITS - 1, ...Object.values(SurfaceUnits)) + 1;
 
 /**
  * Real-time 2D lights with soft shadows for an existing WebGL2 context.
@@ -140,6 +165,9 @@ export class PenumbraRenderer {
   /** The largest target side the context allows (MAX_TEXTURE_SIZE and MAX_RENDERBUFFER_SIZE); read again on restore. */
   private maxSize: number;
   private readonly lightmapScale: number;
+  private readonly _normals: boolean;
+  /** The surface the light and composite passes read this frame (with normals), refilled per frame rather than made. */
+  private readonly surface: Surface = { normals: null!, material: null!, flipY: false };
   private drawing = false;
   private contextLost = false;
   private disposed = false;
@@ -147,6 +175,8 @@ export class PenumbraRenderer {
   private compositeDrawFramebuffer: WebGLFramebuffer | null = null;
   private compositeReadFramebuffer: WebGLFramebuffer | null = null;
   private readonly canvas: EventTarget | null;
+  /** The host's surface textures during a `drawInPlace` or `renderLightmap` that was given some. */
+  private externalSurfaces: SurfaceTextures | null = null;
   /** The CPU light query behind {@link PenumbraRenderer.illuminationAt}, made on first use. */
   private illumination: IlluminationQuery | null = null;
 
@@ -165,9 +195,10 @@ export class PenumbraRenderer {
     this.width = checkSize('PenumbraRenderer.width', options.width ?? gl.drawingBufferWidth, this.maxSize);
     this.height = checkSize('PenumbraRenderer.height', options.height ?? gl.drawingBufferHeight, this.maxSize);
     this.lightmapScale = checkScale(options.lightmapScale ?? 1);
+    this._normals = options.normals === undefined ? false : assertBoolean('PenumbraRenderer.normals', options.normals);
     if (options.viewProjection) this.viewProjection = options.viewProjection;
     else this.updateDefaultViewProjection();
-    this.hostState = new HostState(gl, TEXTURE_UNITS);
+    this.hostState = new HostState(gl, this._normals ? TEXTURE_UNITS_WITH_NORMALS : TEXTURE_UNITS);
     // Made in the loss window, it waits for the restored context to build its GL objects.
     if (gl.isContextLost()) this.contextLost = true;
     else this.createResources();
@@ -272,6 +303,37 @@ export class PenumbraRenderer {
   get sceneTexture(): WebGLTexture {
     return this.requireResources().scene.texture;
   }
+  /** Whether the renderer lights through normals (the `normals` option; docs/normal-maps.md). */
+  get normals(): boolean {
+    return this._normals;
+  }
+  /**
+   * With `normals`, the scene target's normal attachment (location 1), for hosts that composite
+   * themselves; RGBA8, the renderer's size.
+   * @throws Error when the renderer has no normals.
+   */
+  get normalTexture(): WebGLTexture {
+    return this.requireResources().scene.textures[this.requireNormals('normalTexture', SceneAttachments.normal)];
+  }
+  /** With `normals`, the scene target's material attachment (location 2). @throws Error when the renderer has no normals. */
+  get materialTexture(): WebGLTexture {
+    return this.requireResources().scene.textures[this.requireNormals('materialTexture', SceneAttachments.material)];
+  }
+  /**
+   * With `normals`, the lights' highlights (the lightmap's second attachment, the lightmap's size
+   * and format), which a host that composites itself adds after scene × lightmap.
+   * @throws Error when the renderer has no normals.
+   */
+  get specularTexture(): WebGLTexture {
+    return this.requireResources().light.lightmap.textures[this.requireNormals('specularTexture', LightmapAttachments.specular)];
+  }
+
+  /** `attachment` when the renderer has normals; else throws naming `property`. */
+  private requireNormals(property: string, attachment: number): number {
+    if (!this._normals) throw new Error(`penumbra: PenumbraRenderer.${property} needs a renderer made with { normals: true }`);
+    return attachment;
+  }
+
   /** Whether the lightmap is a half-float target (overlapping lights can exceed 1). */
   get hasFloatLightmap(): boolean {
     return this.lightmapFormat === 'rgba16f';
@@ -409,7 +471,9 @@ export class PenumbraRenderer {
   /**
    * Starts a frame: remembers the bound framebuffer and viewport, then binds and clears the
    * internal scene target (colour to transparent black, depth to 1, stencil to 0). Draw the lit
-   * scene after this call.
+   * scene after this call. With `normals` the target has three colour attachments, all cleared to
+   * 0, with draw buffers for all three: the host's fragment shaders write colour, normal and
+   * material at locations 0, 1, 2 (docs/normal-maps.md).
    */
   beginDraw(): void {
     if (this.isUnavailable()) return;
@@ -426,7 +490,11 @@ export class PenumbraRenderer {
       gl.depthMask(true);
       gl.stencilMask(0xff);
       // clearBuffer* leaves the clear values alone, so the host's need not be saved.
-      gl.clearBufferfv(gl.COLOR, 0, TRANSPARENT);
+      gl.clearBufferfv(gl.COLOR, SceneAttachments.color, TRANSPARENT);
+      if (this._normals) {
+        gl.clearBufferfv(gl.COLOR, SceneAttachments.normal, TRANSPARENT);
+        gl.clearBufferfv(gl.COLOR, SceneAttachments.material, TRANSPARENT);
+      }
       gl.clearBufferfi(gl.DEPTH_STENCIL, 0, 1, 0);
     } finally {
       this.hostState.restore();
@@ -459,7 +527,7 @@ export class PenumbraRenderer {
     try {
       this.renderLightmapInto(resources, layers);
       this.bindCompositeTarget();
-      resources.composite.render(resources.scene.texture, resources.light.lightmap.texture, this);
+      resources.composite.render(resources.scene.texture, resources.light.lightmap.textures, this, this.surface);
       if (this.debug) {
         resources.debug.render(this.plan.draws, this.plan.drawCount, resources.shadows.records, this.geometry.recordCount, this._viewProjection);
       }
@@ -480,9 +548,12 @@ export class PenumbraRenderer {
    *
    * @param layers - content layers: only the lights whose `litLayers` share a bit with it (see
    *   {@link PenumbraRenderer.draw}). Default every layer.
+   * @param surfaces - with `normals`, the host's normal and material textures for what it drew
+   *   (see {@link SurfaceTextures}). Default: none (lit as without normals).
    */
-  drawInPlace(layers = ALL_LAYERS): void {
+  drawInPlace(layers = ALL_LAYERS, surfaces?: SurfaceTextures): void {
     assertLayerMask('PenumbraRenderer.drawInPlace: layers', layers);
+    this.checkSurfaces('drawInPlace', surfaces);
     if (this.isUnavailable()) return;
     if (this.drawing) throw new Error('penumbra: drawInPlace() called between beginDraw() and draw(): call draw() to end that frame first');
     this.beginDraw();
@@ -492,13 +563,19 @@ export class PenumbraRenderer {
     const v = this.compositeViewport;
     this.enterHostState();
     try {
-      resources.scene.bind();
+      // The colour only: a blit writes every draw buffer.
+      resources.scene.bindFirst();
       gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.compositeDrawFramebuffer);
       gl.blitFramebuffer(v[0], v[1], v[0] + v[2], v[1] + v[3], 0, 0, this.width, this.height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
     } finally {
       this.hostState.restore();
     }
-    this.endFrame(layers | 0);
+    this.externalSurfaces = surfaces ?? null;
+    try {
+      this.endFrame(layers | 0);
+    } finally {
+      this.externalSurfaces = null;
+    }
   }
 
   /**
@@ -506,17 +583,42 @@ export class PenumbraRenderer {
    *
    * @param layers - content layers: only the lights whose `litLayers` share a bit with it (see
    *   {@link PenumbraRenderer.draw}). Default every layer.
+   * @param surfaces - with `normals`, the normal and material textures to light through (see
+   *   {@link SurfaceTextures}). Default: the scene target's, as the host last drew them.
    */
-  renderLightmap(layers = ALL_LAYERS): void {
+  renderLightmap(layers = ALL_LAYERS, surfaces?: SurfaceTextures): void {
     assertLayerMask('PenumbraRenderer.renderLightmap: layers', layers);
+    this.checkSurfaces('renderLightmap', surfaces);
     if (this.isUnavailable()) return;
     const resources = this.requireResources();
+    this.externalSurfaces = surfaces ?? null;
     this.enterHostState();
     try {
       this.renderLightmapInto(resources, layers | 0);
     } finally {
       this.hostState.restore();
+      this.externalSurfaces = null;
     }
+  }
+
+  /** Throws naming the method and field when `surfaces` is given to a renderer without normals or is malformed. */
+  private checkSurfaces(method: string, surfaces: SurfaceTextures | undefined): void {
+    if (surfaces === undefined) return;
+    const name = `PenumbraRenderer.${method}: surfaces`;
+    if (!this._normals) throw new Error(`penumbra: ${name} needs a renderer made with { normals: true }`);
+    if (typeof surfaces !== 'object' || surfaces === null) throw new TypeError(`${name} must be an object, got ${describeValue(surfaces)}`);
+    checkTextureField(`${name}.normals`, surfaces.normals, false);
+    checkTextureField(`${name}.material`, surfaces.material, true);
+    if (surfaces.flipY !== undefined) assertBoolean(`${name}.flipY`, surfaces.flipY);
+  }
+
+  /** Points {@link PenumbraRenderer.surface} at the host's textures of this call, or at the scene target's. */
+  private chooseSurface(resources: Resources): void {
+    const surface = this.surface, scene = resources.scene.textures, external = this.externalSurfaces;
+    surface.normals = external?.normals ?? scene[SceneAttachments.normal];
+    // Without a material of the host's: the scene target's, which drawInPlace's beginDraw cleared.
+    surface.material = external?.material ?? scene[SceneAttachments.material];
+    surface.flipY = external?.flipY ?? false;
   }
 
   /** Frees every GL resource and forgets lights and hulls. Safe to call twice. */
@@ -542,7 +644,8 @@ export class PenumbraRenderer {
     this.geometry.update(this._hulls);
     plan.build(this._lights, this._hulls, this.geometry, viewProjection, this.lightmapWidth, this.lightmapHeight);
     resources.shadows.upload(this.geometry, plan.bins);
-    resources.light.begin(this._ambient, viewProjection);
+    if (this._normals) this.chooseSurface(resources);
+    resources.light.begin(this._ambient, viewProjection, this.surface);
     for (let i = 0; i < plan.drawCount; i++) {
       if ((plan.draws[i].light.litLayers & layers) !== 0) resources.light.render(plan.draws[i]);
     }
@@ -637,9 +740,9 @@ export class PenumbraRenderer {
         this.resources = {
           shapes,
           shadows: keep(new ShadowTextures(gl)),
-          scene: keep(new RenderTarget(gl, { format: 'rgba8', depthStencil: true }, this.width, this.height)),
-          light: keep(new LightPass(gl, shapes, this.lightmapFormat, this.lightmapWidth, this.lightmapHeight)),
-          composite: keep(new CompositePass(gl)),
+          scene: keep(new RenderTarget(gl, { format: 'rgba8', depthStencil: true, colorAttachments: this._normals ? 3 : 1 }, this.width, this.height)),
+          light: keep(new LightPass(gl, shapes, this.lightmapFormat, this.lightmapWidth, this.lightmapHeight, this._normals)),
+          composite: keep(new CompositePass(gl, this._normals)),
           blur: keep(new BlurPass(gl, this.lightmapFormat)),
           debug: keep(new DebugPass(gl, shapes)),
         };
@@ -717,6 +820,11 @@ function checkSize(name: string, value: number, max: number): number {
   if (!Number.isInteger(value) || value <= 0) throw new RangeError(`${name} must be a positive integer, got ${describeValue(value)}`);
   if (value > max) throw new RangeError(`${name} ${value} exceeds this context's largest texture size ${max} (MAX_TEXTURE_SIZE / MAX_RENDERBUFFER_SIZE)`);
   return value;
+}
+
+function checkTextureField(name: string, value: unknown, optional: boolean): void {
+  if (optional && value == null) return;
+  if (typeof value !== 'object' || value === null) throw new TypeError(`${name} must be a WebGLTexture, got ${describeValue(value)}`);
 }
 
 function checkScale(value: number): number {

@@ -1,4 +1,6 @@
-export { PenumbraRenderer, type PenumbraRendererOptions, type FrameStats } from './PenumbraRenderer';
+export { PenumbraRenderer, type PenumbraRendererOptions, type FrameStats, type SurfaceTextures } from './PenumbraRenderer';
+export { SURFACE_GLSL } from './passes/shaders';
+export { encodeShininess } from './passes/surfaceLayout';
 export { ToneMapping, Dithering } from './passes/compositeLayout';
 export type { Illumination, IlluminationOptions, LightIllumination, CookieSampler } from './scene/illumination';
 export { Hull, type HullOptions } from './scene/Hull';

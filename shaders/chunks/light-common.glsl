@@ -1,6 +1,9 @@
 // Shared by the light passes: the light's values and its visible fraction. Built with SHADOWED for
-// lights with hulls in range (see the chunk shadow-visibility). The light's values come from the
-// vertex stage (light.vert.glsl) as flat varyings rather than uniforms read per fragment.
+// lights with hulls in range (see the chunk shadow-visibility), and with NORMALS for a renderer with
+// normals: then it also writes the highlights at location 1 and weights the light by the surface's
+// normal (docs/normal-maps.md). The light's values come from the vertex stage (light.vert.glsl) as
+// flat varyings rather than uniforms read per fragment.
+in vec2 v_world; // the pixel's world position
 #ifdef SHADOWED
 #include "shadow-visibility"
 #endif
@@ -8,7 +11,7 @@
 in vec2 v_fromLight; // from the light's position to the pixel, in ranges
 in vec2 v_uv;
 flat in vec3 v_color;
-out vec4 o_light;
+layout(location = 0) out vec4 o_light;
 
 flat in vec2 v_falloff; // the curve's code (FALLOFF_LINEAR, …: src/passes/lightLayout.ts), the inverse-square core in ranges
 
@@ -32,6 +35,44 @@ float distanceFalloff() {
 flat in vec3 v_shadowKept;
 #endif
 
+#ifdef NORMALS
+layout(location = 1) out vec4 o_specular;
+uniform sampler2D u_normals;  // the scene's normals, premultiplied by coverage (src/passes/surfaceLayout.ts)
+uniform sampler2D u_material; // specular, shininess code, emissive, coverage, premultiplied
+uniform vec3 u_surfaceFrame;  // 1 / lightmap width, 1 / lightmap height, 1 when the surface's row 0 is the top
+// Positional lights: position xy and height, w 0. Directional: the unit vector towards the light, w 1.
+flat in vec4 v_towardsLight;
+
+// The surface's texture coordinates at this lightmap pixel: the surface covers the same view.
+vec2 surfaceCoordinates() {
+  vec2 uv = gl_FragCoord.xy * u_surfaceFrame.xy;
+  return u_surfaceFrame.z > 0.5 ? vec2(uv.x, 1.0 - uv.y) : uv;
+}
+
+// Writes the light, already weighted by what its shadows let pass, through the surface: diffuse
+// mix(1, N·L, coverage) at location 0, the Blinn-Phong highlight (viewer straight above) at 1.
+// Where no normal was written (coverage 0) that is the light as without normals and no highlight.
+void writeThroughSurface(vec3 light) {
+  vec2 uv = surfaceCoordinates();
+  vec4 encodedNormal = texture(u_normals, uv);
+  float coverage = encodedNormal.a;
+  vec3 normal = coverage > 0.0 ? encodedNormal.rgb / coverage * 2.0 - 1.0 : vec3(0.0, 0.0, 1.0);
+  float normalLength = length(normal);
+  normal = normalLength > 1e-4 ? normal / normalLength : vec3(0.0, 0.0, 1.0);
+  vec3 towardsLight = v_towardsLight.w > 0.5 ? v_towardsLight.xyz : normalize(vec3(v_towardsLight.xy - v_world, v_towardsLight.z));
+  float diffuse = max(dot(normal, towardsLight), 0.0);
+  o_light = vec4(light * mix(1.0, diffuse, coverage), 0.0);
+  vec4 material = texture(u_material, uv);
+  float highlight = 0.0;
+  if (material.a > 0.0 && diffuse > 0.0) {
+    float shininess = exp2(material.g / material.a * PENUMBRA_SHININESS_LOG2_MAX);
+    vec3 halfway = normalize(towardsLight + vec3(0.0, 0.0, 1.0));
+    highlight = coverage * material.r / material.a * pow(max(dot(normal, halfway), 0.0), shininess);
+  }
+  o_specular = vec4(light * highlight, 0.0);
+}
+#endif
+
 // Writes colour × strength × what passes: the visible fraction of the disk, and of the rest the
 // fraction the light's shadows keep (0 by default: mix(0, 1, v) is v exactly). Alpha is 0 so
 // additive blending leaves the lightmap's alpha untouched.
@@ -50,6 +91,8 @@ void writeLight(float strength) {
   float visited = 0.0, past = 0.0;
 #endif
   o_light = strength > 0.0 ? vec4(1.0, visited, visited == 0.0 ? 1.0 : 0.0, past) : vec4(0.0);
+#elif defined(NORMALS)
+  writeThroughSurface(v_color * (strength * passes));
 #else
   o_light = vec4(v_color * (strength * passes), 0.0);
 #endif

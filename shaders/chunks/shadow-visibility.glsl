@@ -34,7 +34,6 @@ uniform highp sampler2D u_recordTags;
 uniform highp sampler2D u_entries;
 uniform highp sampler2D u_bins;
 
-in vec2 v_world;
 flat in vec4 v_shadow;
 flat in float v_shadowType;
 #ifdef DIRECTIONAL

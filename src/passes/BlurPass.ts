@@ -21,7 +21,10 @@ export class BlurPass {
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly format: TargetFormat) {}
 
-  /** Blurs `lightmap` in place by `radius` texels (0 < radius ≤ {@link MAX_BLUR_RADIUS}); leaves blending and scissor off. */
+  /**
+   * Blurs the first attachment of `lightmap` in place by `radius` texels (0 < radius ≤
+   * {@link MAX_BLUR_RADIUS}); leaves blending and scissor off.
+   */
   render(lightmap: RenderTarget, radius: number): void {
     const gl = this.gl;
     const taps = Math.min(MAX_BLUR_RADIUS, Math.ceil(radius));
@@ -45,7 +48,7 @@ export class BlurPass {
 
   private pass(program: Program, from: RenderTarget, to: RenderTarget, stepX: number, stepY: number): void {
     const gl = this.gl;
-    to.bind();
+    to.bindFirst();
     gl.bindTexture(gl.TEXTURE_2D, from.texture);
     this.step[0] = stepX;
     this.step[1] = stepY;

@@ -6,11 +6,20 @@ import type { LightShapes } from '../gl/LightShapes';
 import { SHADOW_TYPE_CODES } from '../geometry/shadowLayout';
 import { FALLOFF_CODES } from './lightLayout';
 import { DirectionalLight, Spotlight, TexturedLight, type LightKind } from '../scene/lights';
-import { shaderSources, type LightStages } from './shaders';
+import { lightStages, shaderSources, type LightStages } from './shaders';
 import { ShadowUnits } from './ShadowTextures';
+import { SurfaceUnits } from './surfaceLayout';
 
 /** The texture unit of a textured light's cookie (the shadow textures take the others, see ShadowUnits). */
 export const COOKIE_UNIT = 2;
+
+/** The textures a light pass with normals reads the surface from (see `PenumbraRenderer.drawInPlace`). */
+export interface Surface {
+  normals: WebGLTexture;
+  material: WebGLTexture;
+  /** Whether the textures' row 0 is the top of the view. */
+  flipY: boolean;
+}
 
 /**
  * Light pass: owns the lightmap (RGBA16F where the context can render to it, so overlapping lights
@@ -18,11 +27,14 @@ export const COOKIE_UNIT = 2;
  * fraction of its disk, which each fragment of a light with hulls in range computes from the
  * shadow textures (see the chunk shadow-visibility): one fragment per light pixel. A light
  * confined to its range is drawn as the polygon around its range disk, the others as their quad.
+ *
+ * With normals the lightmap has a second attachment for the highlights, and the programs weight
+ * each light by the surface's normal and material (docs/normal-maps.md); without, neither exists.
  */
 export class LightPass {
   readonly lightmap: RenderTarget;
   /** Per kind of light, its program for a light with no hull in range and for one with some. */
-  private readonly programs: Record<LightKind, Record<keyof LightStages, Program>>;
+  private readonly programs: Record<LightKind, Record<'unshadowed' | 'shadowed', Program>>;
   private readonly programList: readonly Program[];
   private readonly clearValue = new Float32Array(4);
   // Uniform values go through reused typed arrays: doubles passed to a GL call one by one are boxed
@@ -36,17 +48,26 @@ export class LightPass {
   private readonly direction = new Float32Array(2);
   private readonly coneHalfAngle = new Float32Array(1);
   private readonly coneDecay = new Float32Array(1);
+  private readonly towardsLight = new Float32Array(4);
+  private readonly surfaceFrame = new Float32Array(3);
+  private readonly clearZero = new Float32Array(4);
 
-  /** Frees what it made before throwing when a program or the lightmap cannot be made. */
-  constructor(private readonly gl: WebGL2RenderingContext, private readonly shapes: LightShapes, format: TargetFormat, width: number, height: number) {
+  /**
+   * Frees what it made before throwing when a program or the lightmap cannot be made.
+   * @param normals - whether to light through a surface's normals (programs and lightmap of a renderer with normals).
+   */
+  constructor(
+    private readonly gl: WebGL2RenderingContext, private readonly shapes: LightShapes, format: TargetFormat, width: number, height: number,
+    private readonly normals: boolean,
+  ) {
     // Made first: it frees itself when it fails, and nothing else is made yet.
-    this.lightmap = new RenderTarget(gl, { format, linear: true }, width, height);
+    this.lightmap = new RenderTarget(gl, { format, linear: true, colorAttachments: normals ? 2 : 1 }, width, height);
     try {
       const made = createPrograms(gl, {
-        ...sourcesOf('point', 'point light', shaderSources.lightPointFragment),
-        ...sourcesOf('spot', 'spotlight', shaderSources.lightSpotFragment),
-        ...sourcesOf('textured', 'textured light', shaderSources.lightTexturedFragment),
-        ...sourcesOf('directional', 'directional light', shaderSources.lightDirectionalFragment),
+        ...sourcesOf('point', 'point light', lightStages(shaderSources.lightPointFragment, normals)),
+        ...sourcesOf('spot', 'spotlight', lightStages(shaderSources.lightSpotFragment, normals)),
+        ...sourcesOf('textured', 'textured light', lightStages(shaderSources.lightTexturedFragment, normals)),
+        ...sourcesOf('directional', 'directional light', lightStages(shaderSources.lightDirectionalFragment, normals)),
       });
       const programsOf = (kind: LightKind) => ({ unshadowed: made[`${kind} unshadowed`], shadowed: made[`${kind} shadowed`] });
       this.programs = { point: programsOf('point'), spot: programsOf('spot'), textured: programsOf('textured'), directional: programsOf('directional') };
@@ -63,6 +84,8 @@ export class LightPass {
       if (uniforms.u_bins) gl.uniform1i(uniforms.u_bins, ShadowUnits.bins);
       if (uniforms.u_entries) gl.uniform1i(uniforms.u_entries, ShadowUnits.entries);
       if (uniforms.u_cookie) gl.uniform1i(uniforms.u_cookie, COOKIE_UNIT);
+      if (uniforms.u_normals) gl.uniform1i(uniforms.u_normals, SurfaceUnits.normals);
+      if (uniforms.u_material) gl.uniform1i(uniforms.u_material, SurfaceUnits.material);
     }
   }
 
@@ -72,16 +95,19 @@ export class LightPass {
 
   /**
    * Once a frame, before the lights: sets the view-projection, binds the lightmap and clears it to
-   * the ambient colour (alpha 1), and sets additive blending. The shadow textures must be bound on
-   * their units (`ShadowTextures.upload`).
+   * the ambient colour (alpha 1) and its highlights to 0, binds the surface with normals, and sets
+   * additive blending. The shadow textures must be bound on their units (`ShadowTextures.upload`).
+   * @param surface - with normals, the surface to light through; ignored without.
    */
-  begin(ambient: readonly [number, number, number], viewProjection: ReadonlyMat4): void {
+  begin(ambient: readonly [number, number, number], viewProjection: ReadonlyMat4, surface: Surface): void {
     const gl = this.gl;
+    if (this.normals) this.bindSurface(surface);
     // Indexed: a for-of allocates an iterator every frame.
     const programs = this.programList;
     for (let i = 0; i < programs.length; i++) {
       gl.useProgram(programs[i].handle);
       gl.uniformMatrix4fv(programs[i].uniforms.u_viewProjection, false, viewProjection);
+      if (this.normals) gl.uniform3fv(programs[i].uniforms.u_surfaceFrame, this.surfaceFrame);
     }
     gl.enable(gl.BLEND);
     gl.blendEquation(gl.FUNC_ADD);
@@ -94,6 +120,20 @@ export class LightPass {
     clear[3] = 1;
     // clearBufferfv leaves the clear colour alone, so the host's need not be saved.
     gl.clearBufferfv(gl.COLOR, 0, clear);
+    if (this.normals) gl.clearBufferfv(gl.COLOR, 1, this.clearZero);
+  }
+
+  /** Binds the surface's textures on their units and fills the surface frame uniform's array. */
+  private bindSurface(surface: Surface): void {
+    const gl = this.gl;
+    gl.activeTexture(gl.TEXTURE0 + SurfaceUnits.normals);
+    gl.bindTexture(gl.TEXTURE_2D, surface.normals);
+    gl.activeTexture(gl.TEXTURE0 + SurfaceUnits.material);
+    gl.bindTexture(gl.TEXTURE_2D, surface.material);
+    gl.activeTexture(gl.TEXTURE0);
+    this.surfaceFrame[0] = 1 / this.lightmap.width;
+    this.surfaceFrame[1] = 1 / this.lightmap.height;
+    this.surfaceFrame[2] = surface.flipY ? 1 : 0;
   }
 
   /** Adds one light into the lightmap, shadowed by the hulls in its bins when it has any in range. */
@@ -125,6 +165,7 @@ export class LightPass {
     }
     if (uniforms.u_strips) gl.uniform3fv(uniforms.u_strips, this.strips);
     if (uniforms.u_falloff) gl.uniform2fv(uniforms.u_falloff, this.falloff);
+    if (this.normals) gl.uniform4fv(uniforms.u_towardsLight, this.towardsLight);
     if (light instanceof Spotlight) {
       gl.uniform2fv(uniforms.u_direction, this.direction);
       gl.uniform1fv(uniforms.u_coneHalfAngle, this.coneHalfAngle);
@@ -151,6 +192,10 @@ export class LightPass {
     light.writeShadowKept(this.shadowKept);
     this.falloff[0] = FALLOFF_CODES[light.falloff];
     this.falloff[1] = light.inverseSquareCore();
+    this.towardsLight[0] = light.position[0];
+    this.towardsLight[1] = light.position[1];
+    this.towardsLight[2] = light.height;
+    this.towardsLight[3] = 0;
     if (light instanceof DirectionalLight) this.writeDirectionalUniforms(draw, light);
     if (light instanceof Spotlight) {
       this.direction[0] = Math.cos(light.rotation);
@@ -174,6 +219,11 @@ export class LightPass {
     this.strips[0] = strips.perpBase;
     this.strips[1] = strips.width;
     this.strips[2] = strips.alongBase;
+    const cosElevation = Math.cos(light.elevation);
+    this.towardsLight[0] = -strips.travelX * cosElevation;
+    this.towardsLight[1] = -strips.travelY * cosElevation;
+    this.towardsLight[2] = Math.sin(light.elevation);
+    this.towardsLight[3] = 1;
   }
 
   dispose(): void {
@@ -183,9 +233,9 @@ export class LightPass {
 }
 
 /** The sources of a kind's two programs, keyed `<kind> unshadowed` and `<kind> shadowed`. */
-function sourcesOf(kind: LightKind, name: string, fragment: LightStages): Record<string, ProgramSources> {
+function sourcesOf(kind: LightKind, name: string, stages: LightStages): Record<string, ProgramSources> {
   return {
-    [`${kind} unshadowed`]: [name, shaderSources.lightVertex, fragment.unshadowed],
-    [`${kind} shadowed`]: [`${name} with shadows`, shaderSources.lightVertex, fragment.shadowed],
+    [`${kind} unshadowed`]: [name, stages.vertex, stages.unshadowed],
+    [`${kind} shadowed`]: [`${name} with shadows`, stages.vertex, stages.shadowed],
   };
 }

@@ -12,9 +12,11 @@ import lightVertex from '../../shaders/light.vert.glsl?raw';
 import shadowBehind from '../../shaders/chunks/shadow-behind.glsl?raw';
 import shadowQuadrature from '../../shaders/chunks/shadow-quadrature.glsl?raw';
 import shadowVisibility from '../../shaders/chunks/shadow-visibility.glsl?raw';
+import surface from '../../shaders/surface.glsl?raw';
 import { SHADOW_DEFINES } from '../geometry/shadowLayout';
 import { COMPOSITE_DEFINES, MAX_BLUR_RADIUS } from './compositeLayout';
 import { LIGHT_DEFINES } from './lightLayout';
+import { SURFACE_DEFINES } from './surfaceLayout';
 import { resolveIncludes, withDefines } from '../gl/program';
 
 const chunks = { 'light-common': lightCommon, 'shadow-visibility': shadowVisibility, 'shadow-behind': shadowBehind, 'shadow-quadrature': shadowQuadrature };
@@ -26,20 +28,33 @@ function resolveChunks(source: string): string {
   }
 }
 
-/** The fragment stages of a light pass (see the chunk light-common). */
+/** The stages of a light pass (see the chunk light-common). */
 export interface LightStages {
+  vertex: string;
   /** For a light with no hull in range. */
   unshadowed: string;
   /** For a light with hulls in range (`SHADOWED`). */
   shadowed: string;
 }
 
-function lightStage(source: string): LightStages {
-  const resolved = withDefines(resolveChunks(source), LIGHT_DEFINES);
+/** The defines of the light passes of a renderer with normals. */
+const NORMALS_DEFINES = { NORMALS: '', ...SURFACE_DEFINES };
+
+/**
+ * A light pass's stages from its fragment source (one of `shaderSources.light*Fragment`), for a
+ * renderer with or without normals.
+ */
+export function lightStages(fragment: string, normals: boolean): LightStages {
+  const resolved = normals ? withDefines(fragment, NORMALS_DEFINES) : fragment;
   return {
+    vertex: normals ? withDefines(lightVertex, NORMALS_DEFINES) : lightVertex,
     unshadowed: resolved,
     shadowed: withDefines(resolved, { SHADOWED: '', ...SHADOW_DEFINES }),
   };
+}
+
+function lightFragment(source: string): string {
+  return withDefines(resolveChunks(source), LIGHT_DEFINES);
 }
 
 /**
@@ -50,12 +65,16 @@ function lightStage(source: string): LightStages {
 export const shaderSources = {
   blurFragment: /* @__PURE__ */ withDefines(blurFragment, { MAX_BLUR_RADIUS }),
   compositeFragment: /* @__PURE__ */ withDefines(compositeFragment, COMPOSITE_DEFINES),
+  compositeFragmentWithNormals: /* @__PURE__ */ withDefines(compositeFragment, { ...COMPOSITE_DEFINES, ...NORMALS_DEFINES }),
   debugFragment,
   debugRecordsVertex: /* @__PURE__ */ withDefines(debugRecordsVertex, SHADOW_DEFINES),
   fullscreenVertex,
   lightVertex,
-  lightPointFragment: /* @__PURE__ */ lightStage(lightPointFragment),
-  lightSpotFragment: /* @__PURE__ */ lightStage(lightSpotFragment),
-  lightTexturedFragment: /* @__PURE__ */ lightStage(lightTexturedFragment),
-  lightDirectionalFragment: /* @__PURE__ */ lightStage(lightDirectionalFragment),
+  lightPointFragment: /* @__PURE__ */ lightFragment(lightPointFragment),
+  lightSpotFragment: /* @__PURE__ */ lightFragment(lightSpotFragment),
+  lightTexturedFragment: /* @__PURE__ */ lightFragment(lightTexturedFragment),
+  lightDirectionalFragment: /* @__PURE__ */ lightFragment(lightDirectionalFragment),
 };
+
+/** The hosts' surface helpers (docs/normal-maps.md): GLSL ES 3.00 functions to paste after a fragment shader's `#version` line. */
+export const SURFACE_GLSL: string = /* @__PURE__ */ withDefines(surface, SURFACE_DEFINES);

@@ -63,6 +63,13 @@ export interface LightOptions {
   shadowType?: ShadowType;
   /** How the light falls with distance (point lights and spotlights); see {@link Falloff}. Default `Linear`. */
   falloff?: Falloff;
+  /**
+   * Distance of the light above the plane, in world units, for normal-mapped lighting
+   * (`PenumbraRenderer` option `normals`): the light reaches a pixel along `(light − pixel, height)`,
+   * so a low light grazes the relief and a high one lights it from above. Not negative. Default: a
+   * quarter of `range`, following the range until it is set (`null` goes back to that).
+   */
+  height?: number | null;
   /** A disabled light is not drawn. Default `true`. */
   enabled?: boolean;
   /** When false, the light ignores every hull. Default `true`. */
@@ -123,6 +130,7 @@ export abstract class Light {
   private _castsShadows = true;
   private _shadowType: ShadowType = ShadowType.Illuminated;
   private _falloff: Falloff = Falloff.Linear;
+  private _height: number | null = null;
   private _shadowLayers = ALL_LAYERS;
   private _litLayers = ALL_LAYERS;
   private _shadowColor: readonly [number, number, number] = Object.freeze([0, 0, 0] as const);
@@ -141,6 +149,7 @@ export abstract class Light {
     if (options.origin !== undefined) this.origin = options.origin;
     if (options.shadowType !== undefined) this.shadowType = options.shadowType;
     if (options.falloff !== undefined) this.falloff = options.falloff;
+    if (options.height !== undefined) this.height = options.height;
     if (options.enabled !== undefined) this.enabled = options.enabled;
     if (options.castsShadows !== undefined) this.castsShadows = options.castsShadows;
     if (options.ignoredHulls !== undefined) this.ignoreHulls(options.ignoredHulls);
@@ -249,6 +258,17 @@ export abstract class Light {
   }
   set falloff(value: Falloff) {
     this._falloff = assertOneOf(`${this.className}.falloff`, value, FALLOFFS);
+  }
+
+  /**
+   * Distance above the plane in world units; see {@link LightOptions.height}. Reads a quarter of
+   * `range` until a height is set; assign `null` to go back to that.
+   */
+  get height(): number {
+    return this._height ?? this._range * DEFAULT_HEIGHT_PER_RANGE;
+  }
+  set height(value: number | null) {
+    this._height = value === null ? null : assertNonNegative(`${this.className}.height`, value);
   }
 
   /** The hull layers that shadow this light; see {@link LightOptions.shadowLayers}. */
@@ -367,6 +387,8 @@ export abstract class Light {
 }
 
 const CENTRE = [0.5, 0.5] as const;
+/** A light's height while none is set, per unit of range: high enough that flat normals are well lit across most of the range. */
+const DEFAULT_HEIGHT_PER_RANGE = 0.25;
 const SHADOW_TYPES: readonly ShadowType[] = Object.values(ShadowType);
 const FALLOFFS: readonly Falloff[] = Object.values(Falloff);
 
@@ -533,7 +555,13 @@ function checkTexture(value: WebGLTexture): WebGLTexture {
 }
 
 /** Options of a {@link DirectionalLight}: those of every light but the ones about a position and a range. */
-export interface DirectionalLightOptions extends Omit<LightOptions, 'position' | 'range' | 'radius' | 'origin' | 'falloff'> {
+export interface DirectionalLightOptions extends Omit<LightOptions, 'position' | 'range' | 'radius' | 'origin' | 'falloff' | 'height'> {
+  /**
+   * Angle of the light above the plane in radians, in (0, π/2], for normal-mapped lighting
+   * (`PenumbraRenderer` option `normals`): π/2 is straight above, small values graze the relief.
+   * Shadows do not depend on it. Default `π/4`.
+   */
+  elevation?: number;
   /**
    * Apparent diameter of the light's disk in radians, 0..π/2: the sun's is about 0.0093 (0.53°);
    * wider gives the soft shadows of an overcast sky, 0 hard shadows. Default `0.0093`.
@@ -549,14 +577,16 @@ export interface DirectionalLightOptions extends Omit<LightOptions, 'position' |
  * distance from it (by `2 × tan(angularSize / 2)` per unit). Hulls anywhere upstream of the view
  * shadow it, not only those in view.
  *
- * `position`, `range`, `radius` and `origin` (inherited) mean nothing for it and are ignored.
+ * `position`, `range`, `radius`, `origin` and `height` (inherited) mean nothing for it and are ignored.
  */
 export class DirectionalLight extends Light {
   private _angularSize = SUN_ANGULAR_SIZE;
+  private _elevation = Math.PI / 4;
 
   constructor(options: DirectionalLightOptions = {}) {
     super(options);
     if (options.angularSize !== undefined) this.angularSize = options.angularSize;
+    if (options.elevation !== undefined) this.elevation = options.elevation;
   }
 
   get kind(): 'directional' {
@@ -571,6 +601,16 @@ export class DirectionalLight extends Light {
     assertNonNegative('DirectionalLight.angularSize', value);
     if (value > Math.PI / 2) throw new RangeError(`DirectionalLight.angularSize must be at most π/2, got ${value}`);
     this._angularSize = value;
+  }
+
+  /** Angle above the plane in radians, (0, π/2]; see {@link DirectionalLightOptions.elevation}. */
+  get elevation(): number {
+    return this._elevation;
+  }
+  set elevation(value: number) {
+    assertFinite('DirectionalLight.elevation', value);
+    if (!(value > 0 && value <= Math.PI / 2)) throw new RangeError(`DirectionalLight.elevation must be in (0, π/2], got ${value}`);
+    this._elevation = value;
   }
 
   /** Unbounded: it lights the whole view. @internal */

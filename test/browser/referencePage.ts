@@ -9,6 +9,7 @@ import type { ReferenceScene } from '../reference/scenes';
 import { collectPageErrors, launchChromium } from './chromium';
 import { serveDirectory } from './staticServer';
 import type { DirectionalReferenceScene } from '../reference/directionalReference';
+import type { SurfaceFigures } from '../reference/surfaceComparison';
 
 /** What test/browser/reference-page/main.ts puts on `window`. */
 export interface ReferencePageApi {
@@ -18,6 +19,10 @@ export interface ReferencePageApi {
   renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before: number[]; after: number[]; lostFrameError: string | null; windowErrors: string[] }>;
   checkHostState(): HostStateReport;
   compareIllumination(scene: ReferenceScene): IlluminationComparison & { glError: number; floatLightmap: boolean };
+  /** Normal-mapped lighting against its CPU reference (test/reference/surfaceComparison.ts). */
+  compareSurfaces(): SurfaceFigures;
+  /** The messages a renderer with normals throws for malformed `drawInPlace` surfaces. */
+  surfaceMisuse(): string[];
 }
 
 /** The reference page open in headless Chromium. */

@@ -11,7 +11,9 @@ import { readTexture } from '../../gl/readTexture';
 import { callsThrowing } from '../../gl/fixtures';
 import { checkHostStateAcrossPublicCalls, type HostStateReport } from '../../gl/hostParameters';
 import { compareReferenceScene, type IlluminationComparison } from '../../reference/illuminationComparison';
-import type { PenumbraRenderer } from '../../../src/index';
+import { PenumbraRenderer } from '../../../src/index';
+import { compareSurfaceLighting, type SurfaceFigures } from '../../reference/surfaceComparison';
+import { SURFACE_HEIGHT, SURFACE_WIDTH } from '../../reference/surfaceReference';
 
 const canvas = document.getElementById('canvas') as HTMLCanvasElement;
 
@@ -143,4 +145,26 @@ function compareIllumination(scene: ReferenceScene): IlluminationComparison & { 
   return { ...compareReferenceScene(gl, illuminationRenderer, scene), floatLightmap: illuminationRenderer.hasFloatLightmap };
 }
 
-Object.assign(window, { renderScene, renderDirectionalScene, renderAcrossContextLoss, checkHostState, compareIllumination });
+/** Normal-mapped lighting against its CPU reference (test/reference/surfaceComparison.ts). */
+function compareSurfaces(): SurfaceFigures {
+  return compareSurfaceLighting(context(SURFACE_WIDTH, SURFACE_HEIGHT));
+}
+
+/** What a renderer with normals throws for malformed surfaces of `drawInPlace`. */
+function surfaceMisuse(): string[] {
+  const gl = context(SURFACE_WIDTH, SURFACE_HEIGHT);
+  const renderer = new PenumbraRenderer(gl, { normals: true });
+  const thrown: string[] = [];
+  const attempts: unknown[] = [{ normals: 7 }, { normals: renderer.normalTexture, material: 'stone' }, { normals: renderer.normalTexture, flipY: 1 }, null];
+  for (const surfaces of attempts) {
+    try {
+      renderer.drawInPlace(undefined, surfaces as never);
+    } catch (error) {
+      thrown.push(`${(error as Error).name}: ${(error as Error).message}`);
+    }
+  }
+  renderer.dispose();
+  return thrown;
+}
+
+Object.assign(window, { renderScene, renderDirectionalScene, renderAcrossContextLoss, checkHostState, compareIllumination, compareSurfaces, surfaceMisuse });

@@ -1,0 +1,34 @@
+/**
+ * The surface the host writes beside its colour when the renderer has normals (docs/normal-maps.md):
+ * the scene target's attachments, the material encoding, and the texture units the light and
+ * composite passes read them on. The shaders get the encoding's constant as a define
+ * ({@link SURFACE_DEFINES}), in the light passes, the composite and the hosts' helper chunk.
+ */
+
+/** The scene target's colour attachments with normals: the locations the host's fragment shader writes. */
+export const SceneAttachments = { color: 0, normal: 1, material: 2 } as const;
+
+/** The lightmap's attachments with normals: the diffuse light (with the ambient) and the highlights. */
+export const LightmapAttachments = { diffuse: 0, specular: 1 } as const;
+
+/** The material stores log2(shininess) / SHININESS_LOG2_MAX: shininess 1..2^11 in 8 bits, at 4.4 % a step. */
+export const SHININESS_LOG2_MAX = 11;
+
+/** The encoding's constants as `#define`s. */
+export const SURFACE_DEFINES: Readonly<Record<string, string>> = {
+  PENUMBRA_SHININESS_LOG2_MAX: SHININESS_LOG2_MAX.toFixed(1),
+};
+
+/** The texture units the light passes read the normals and the material on (after the shadow textures' and the cookie's). */
+export const SurfaceUnits = { normals: 5, material: 6 } as const;
+
+/**
+ * The material channel that holds a Blinn-Phong exponent: `log2(shininess) / 11`, for hosts that
+ * write the material from JavaScript (a uniform or a vertex attribute); the GLSL helper
+ * `penumbraEncodeMaterial` does the same.
+ * @param shininess - the exponent, clamped to 1..2048.
+ * @returns the channel value, 0..1.
+ */
+export function encodeShininess(shininess: number): number {
+  return Math.log2(Math.min(Math.max(shininess, 1), 2 ** SHININESS_LOG2_MAX)) / SHININESS_LOG2_MAX;
+}
