@@ -91,7 +91,8 @@ export interface SceneHull {
 
 /**
  * Fields of the lights with a position (point, spot, textured), as in `LightOptions`. A
- * {@link SceneDirectionalLight} has all of them but `position`, `range`, `radius`, `origin` and `falloff`.
+ * {@link SceneDirectionalLight} has all of them but `position`, `range`, `radius`, `origin`,
+ * `falloff` and `height`.
  */
 export interface SceneLightBase {
   /** Required. */
@@ -126,6 +127,11 @@ export interface SceneLightBase {
   litLayers: number;
   /** `"linear"`, `"smooth"` or `"inverseSquare"` (see `Falloff`). Optional, default `"linear"`; not in version 1 files, nor for directional lights. */
   falloff: 'linear' | 'smooth' | 'inverseSquare';
+  /**
+   * Height above the plane for normal-mapped lighting, ≥ 0, or `null` for a quarter of the range
+   * (see `Light.height`). Optional, default `null`; not in version 1 files, nor for directional lights.
+   */
+  height: number | null;
 }
 
 /** A `PointLight`. */
@@ -159,11 +165,13 @@ export interface SceneTexturedLight extends SceneLightBase {
  * every field of {@link SceneLightBase} but those about a position and a range (`position`,
  * `range`, `radius`, `origin`), which a file must not have.
  */
-export interface SceneDirectionalLight extends Omit<SceneLightBase, 'position' | 'range' | 'radius' | 'origin' | 'falloff'> {
+export interface SceneDirectionalLight extends Omit<SceneLightBase, 'position' | 'range' | 'radius' | 'origin' | 'falloff' | 'height'> {
   /** Which light class this is. */
   kind: 'directional';
   /** Apparent diameter of the light's disk in radians, 0..π/2. Optional, default `0.0093` (the sun). */
   angularSize: number;
+  /** Angle above the plane in radians for normal-mapped lighting, in (0, π/2]. Optional, default `π / 4`. */
+  elevation: number;
 }
 
 /** Any light of a scene file, told apart by `kind`. */

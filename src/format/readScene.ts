@@ -37,18 +37,18 @@ const VERSION_FIELDS: Readonly<Record<number, VersionFields>> = {
   [SCENE_FORMAT_VERSION]: {
     document: DOCUMENT_FIELDS,
     hull: [...HULL_FIELDS_V1, 'closed', 'layers'],
-    light: [...LIGHT_FIELDS_V1, 'shadowLayers', 'shadowColor', 'shadowStrength', 'litLayers', 'falloff'],
+    light: [...LIGHT_FIELDS_V1, 'shadowLayers', 'shadowColor', 'shadowStrength', 'litLayers', 'falloff', 'height'],
     shadowTypes: [...SHADOW_TYPES_V1, 'occluded'],
     lightKinds: [...LIGHT_KINDS_V1, 'directional'],
   },
 };
 /** The light fields a directional light lacks: it has no position and lights everything alike. */
-const POSITION_FIELDS: readonly string[] = ['position', 'range', 'radius', 'origin', 'falloff'];
-const KIND_FIELDS = { point: [], spot: ['coneAngle', 'coneDecay'], textured: ['cookie', 'size'], directional: ['angularSize'] } as const;
+const POSITION_FIELDS: readonly string[] = ['position', 'range', 'radius', 'origin', 'falloff', 'height'];
+const KIND_FIELDS = { point: [], spot: ['coneAngle', 'coneDecay'], textured: ['cookie', 'size'], directional: ['angularSize', 'elevation'] } as const;
 /** `DirectionalLight`'s default `angularSize`: the sun's apparent diameter, in radians. */
 const SUN_ANGULAR_SIZE = 0.0093;
 /** The fields every light kind has, a directional light included. */
-type SharedLightFields = Omit<SceneDirectionalLight, 'kind' | 'angularSize'>;
+type SharedLightFields = Omit<SceneDirectionalLight, 'kind' | 'angularSize' | 'elevation'>;
 
 /**
  * Reads a scene file (its JSON text, or the already parsed value) and checks every field. Only
@@ -154,6 +154,7 @@ function readLight(value: unknown, path: string, fields: VersionFields, hullCoun
     return {
       kind, ...readSharedLightFields(light, fields.shadowTypes, hullCount),
       angularSize: numberField(light, 'angularSize', SUN_ANGULAR_SIZE, 0, Math.PI / 2),
+      elevation: elevationField(light),
     };
   }
   const base = readLightBase(light, fields.shadowTypes, hullCount);
@@ -182,7 +183,16 @@ function readLightBase(light: Fields, shadowTypes: VersionFields['shadowTypes'],
   const radius = numberField(light, 'radius', 0, 0);
   const { color, intensity, rotation, ...rest } = readSharedLightFields(light, shadowTypes, hullCount);
   const origin = vec2Field(light, 'origin', [0.5, 0.5]);
-  return { position, range, radius, color, intensity, rotation, origin, ...rest, falloff: choiceField(light, 'falloff', FALLOFFS, 'linear') };
+  const falloff = choiceField(light, 'falloff', FALLOFFS, 'linear');
+  const height = light.value.height === undefined || light.value.height === null ? null : numberField(light, 'height', undefined, 0);
+  return { position, range, radius, color, intensity, rotation, origin, ...rest, falloff, height };
+}
+
+/** A directional light's elevation: in (0, π/2], π/4 when absent. */
+function elevationField(light: Fields): number {
+  const elevation = numberField(light, 'elevation', Math.PI / 4, 0, Math.PI / 2);
+  if (elevation === 0) throw new SceneFormatError(childPath(light.path, 'elevation'), 'expected a number > 0, got 0');
+  return elevation;
 }
 
 function readSharedLightFields(light: Fields, shadowTypes: VersionFields['shadowTypes'], hullCount: number): SharedLightFields {

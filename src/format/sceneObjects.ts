@@ -101,7 +101,7 @@ function describeLight(light: Light, hullIndex: ReadonlyMap<Hull, number>, cooki
     litLayers: light.litLayers,
   };
   // Its inherited position, range, radius and origin mean nothing: a file does not keep them.
-  if (light instanceof DirectionalLight) return { kind: 'directional', ...shared, angularSize: light.angularSize };
+  if (light instanceof DirectionalLight) return { kind: 'directional', ...shared, angularSize: light.angularSize, elevation: light.elevation };
   const base = {
     ...shared,
     position: [...light.position] as [number, number],
@@ -109,6 +109,7 @@ function describeLight(light: Light, hullIndex: ReadonlyMap<Hull, number>, cooki
     radius: light.radius,
     origin: [...light.origin] as [number, number],
     falloff: light.falloff,
+    height: light.givenHeight,
   };
   if (light instanceof Spotlight) return { kind: 'spot', ...base, coneAngle: light.coneAngle, coneDecay: light.coneDecay };
   if (light instanceof TexturedLight) {

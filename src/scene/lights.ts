@@ -270,6 +270,10 @@ export abstract class Light {
   set height(value: number | null) {
     this._height = value === null ? null : assertNonNegative(`${this.className}.height`, value);
   }
+  /** The height that was set, or `null` while it follows the range. */
+  get givenHeight(): number | null {
+    return this._height;
+  }
 
   /** The hull layers that shadow this light; see {@link LightOptions.shadowLayers}. */
   get shadowLayers(): number {

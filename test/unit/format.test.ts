@@ -35,7 +35,7 @@ describe('scene format', () => {
     expect(scene.lights[0]).toEqual({
       kind: 'point', position: [1, 2], range: 100, radius: 0, color: [1, 1, 1], intensity: 1, rotation: 0,
       origin: [0.5, 0.5], shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [],
-      shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, falloff: 'linear',
+      shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, falloff: 'linear', height: null,
     });
     expect(scene.lights[1]).toMatchObject({ coneAngle: Math.PI / 2, coneDecay: 1 });
     expect(scene.lights[2]).toMatchObject({ cookie: 'c', size: null });
@@ -64,7 +64,7 @@ describe('scene format', () => {
     const v2 = { format: 'penumbra-scene', version: 2, lights: [{ kind: 'directional' }] };
     expect(readScene(v2).lights[0]).toEqual({
       kind: 'directional', color: [1, 1, 1], intensity: 1, rotation: 0, shadowType: 'illuminated', enabled: true, castsShadows: true,
-      ignoredHulls: [], shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, angularSize: new DirectionalLight().angularSize,
+      ignoredHulls: [], shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, angularSize: new DirectionalLight().angularSize, elevation: Math.PI / 4,
     });
     expect(readScene({ ...v2, lights: [{ kind: 'directional', angularSize: 0 }] }).lights[0]).toMatchObject({ angularSize: 0 });
     expect(readScene({ ...v2, lights: [{ kind: 'directional', angularSize: Math.PI / 2 }] }).lights[0]).toMatchObject({ angularSize: Math.PI / 2 });
@@ -124,6 +124,9 @@ describe('scene format', () => {
     ['look unknown field', ['look', 'gamma'], 2.2, 'look.gamma: unknown field (allowed: exposure, toneMapping, dithering, lightmapBlur)'],
     ['light shadowLayers', ['lights', 0, 'shadowLayers'], -1, 'lights[0].shadowLayers: expected an integer from 0 to 4294967295 (a bit mask), got -1'],
     ['light falloff', ['lights', 0, 'falloff'], 'cubic', 'lights[0].falloff: expected one of "linear", "smooth", "inverseSquare", got "cubic"'],
+    ['light height', ['lights', 0, 'height'], -1, 'lights[0].height: expected a number ≥ 0, got -1'],
+    ['directional elevation', ['lights', 3, 'elevation'], 0, 'lights[3].elevation: expected a number > 0, got 0'],
+    ['directional elevation above the zenith', ['lights', 3, 'elevation'], 2, 'lights[3].elevation: expected a number ≤ 1.5707963267948966, got 2'],
     ['light litLayers', ['lights', 0, 'litLayers'], 1.5, 'lights[0].litLayers: expected an integer from 0 to 4294967295 (a bit mask), got 1.5'],
     ['hull layers', ['hulls', 1, 'layers'], 0.5, 'hulls[1].layers: expected an integer from 0 to 4294967295 (a bit mask), got 0.5'],
     ['light shadowStrength', ['lights', 1, 'shadowStrength'], 2, 'lights[1].shadowStrength: expected a number ≤ 1, got 2'],
@@ -131,7 +134,7 @@ describe('scene format', () => {
     ['ignoredHulls not an array', ['lights', 0, 'ignoredHulls'], 1, 'lights[0].ignoredHulls: expected an array, got 1'],
     ['ignoredHulls out of range', ['lights', 2, 'ignoredHulls', 1], 3, 'lights[2].ignoredHulls[1]: expected a hull index from 0 to 2, got 3'],
     ['ignoredHulls not an integer', ['lights', 2, 'ignoredHulls', 0], 0.5, 'lights[2].ignoredHulls[0]: expected a hull index from 0 to 2, got 0.5'],
-    ['light unknown field', ['lights', 0, 'coneAngle'], 1, 'lights[0].coneAngle: unknown field (allowed: kind, position, range, radius, color, intensity, rotation, origin, shadowType, enabled, castsShadows, ignoredHulls, shadowLayers, shadowColor, shadowStrength, litLayers, falloff)'],
+    ['light unknown field', ['lights', 0, 'coneAngle'], 1, 'lights[0].coneAngle: unknown field (allowed: kind, position, range, radius, color, intensity, rotation, origin, shadowType, enabled, castsShadows, ignoredHulls, shadowLayers, shadowColor, shadowStrength, litLayers, falloff, height)'],
     ['spot coneAngle above π', ['lights', 1, 'coneAngle'], 4, 'lights[1].coneAngle: expected a number ≤ 3.141592653589793, got 4'],
     ['spot coneAngle negative', ['lights', 1, 'coneAngle'], -1, 'lights[1].coneAngle: expected a number ≥ 0, got -1'],
     ['spot coneDecay negative', ['lights', 1, 'coneDecay'], -2, 'lights[1].coneDecay: expected a number ≥ 0, got -2'],
@@ -147,7 +150,7 @@ describe('scene format', () => {
     ['directional ignoredHulls out of range', ['lights', 3, 'ignoredHulls', 0], 5, 'lights[3].ignoredHulls[0]: expected a hull index from 0 to 2, got 5'],
     ...['position', 'range', 'radius', 'origin', 'coneAngle'].map((field): [string, (string | number)[], unknown, string] => [
       `directional ${field}, a field it does not have`, ['lights', 3, field], field === 'position' || field === 'origin' ? [0, 0] : 1,
-      `lights[3].${field}: unknown field (allowed: kind, color, intensity, rotation, shadowType, enabled, castsShadows, ignoredHulls, shadowLayers, shadowColor, shadowStrength, litLayers, angularSize)`,
+      `lights[3].${field}: unknown field (allowed: kind, color, intensity, rotation, shadowType, enabled, castsShadows, ignoredHulls, shadowLayers, shadowColor, shadowStrength, litLayers, angularSize, elevation)`,
     ]),
   ];
   it.each(cases)('names the path of a bad field: %s', (_name, path, value, message) => {
@@ -211,7 +214,7 @@ describe('scene objects', () => {
     const described = describeScene({ hulls: [], lights: [moved], ambient: [0, 0, 0], camera: { center: [0, 0], zoom: 1 }, cookieName: () => 'flame' });
     expect(described.lights[0]).toEqual({
       kind: 'directional', color: [1, 1, 1], intensity: 1, rotation: 0, shadowType: 'illuminated', enabled: true, castsShadows: true,
-      ignoredHulls: [], shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, angularSize: 0,
+      ignoredHulls: [], shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, angularSize: 0, elevation: Math.PI / 4,
     });
     expect(readScene(writeScene(described))).toEqual(described);
   });

@@ -47,21 +47,21 @@ export function fullScene(): SceneDocument {
       {
         kind: 'point', position: [10, 20], range: 300, radius: 12, color: [1, 0.8, 0.6], intensity: 1.5, rotation: 0,
         origin: [0.5, 0.5], shadowType: 'solid', enabled: true, castsShadows: false, ignoredHulls: [1],
-        shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, falloff: 'linear',
+        shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, falloff: 'linear', height: null,
       },
       {
         kind: 'spot', position: [50, 60], range: 250, radius: 4, color: [0.5, 0.5, 1], intensity: 1, rotation: 1.2,
         origin: [0.5, 0.5], shadowType: 'illuminated', enabled: false, castsShadows: true, ignoredHulls: [],
-        shadowLayers: 2, shadowColor: [0.2, 0.3, 0.6], shadowStrength: 0.75, litLayers: 6, falloff: 'smooth', coneAngle: 0.9, coneDecay: 2,
+        shadowLayers: 2, shadowColor: [0.2, 0.3, 0.6], shadowStrength: 0.75, litLayers: 6, falloff: 'smooth', height: 40, coneAngle: 0.9, coneDecay: 2,
       },
       {
         kind: 'textured', position: [70, 80], range: 200, radius: 8, color: [1, 0.6, 0.2], intensity: 2, rotation: -0.4,
         origin: [0.25, 0.75], shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [0, 1],
-        shadowLayers: 0, shadowColor: [1, 1, 1], shadowStrength: 0, litLayers: 0, falloff: 'inverseSquare', cookie: 'flame', size: [160, 120],
+        shadowLayers: 0, shadowColor: [1, 1, 1], shadowStrength: 0, litLayers: 0, falloff: 'inverseSquare', height: null, cookie: 'flame', size: [160, 120],
       },
       {
         kind: 'directional', color: [1, 0.95, 0.8], intensity: 0.7, rotation: 2.1, shadowType: 'occluded', enabled: true,
-        castsShadows: true, ignoredHulls: [2], shadowLayers: 5, shadowColor: [0.1, 0.1, 0.2], shadowStrength: 0.9, litLayers: 1, angularSize: 0.2,
+        castsShadows: true, ignoredHulls: [2], shadowLayers: 5, shadowColor: [0.1, 0.1, 0.2], shadowStrength: 0.9, litLayers: 1, angularSize: 0.2, elevation: 0.6,
       },
     ],
   };
