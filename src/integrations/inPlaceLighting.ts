@@ -1,5 +1,5 @@
 import { mat4 } from 'gl-matrix';
-import type { PenumbraRenderer } from '../index';
+import type { PenumbraRenderer, SurfaceTextures } from '../index';
 import { setViewProjection, type Affine2D } from './viewProjection';
 
 /** The bound framebuffer's viewport as an engine sees it: its size in pixels and in engine units. */
@@ -33,9 +33,10 @@ export class InPlaceLighting {
 
   /**
    * Lights the bound framebuffer's viewport `view` in place with the lights of content `layers`,
-   * through `camera` (world → engine units, or none). The context state is left as it was.
+   * through `camera` (world → engine units, or none), and through the normals and materials of
+   * `surfaces` when given (a renderer with normals). The context state is left as it was.
    */
-  draw(view: InPlaceView, camera: Affine2D | null, layers: number): void {
+  draw(view: InPlaceView, camera: Affine2D | null, layers: number, surfaces: SurfaceTextures | null = null): void {
     const renderer = this.renderer;
     if (view.pixelWidth !== this.pixelWidth || view.pixelHeight !== this.pixelHeight) {
       this.pixelWidth = view.pixelWidth;
@@ -43,6 +44,7 @@ export class InPlaceLighting {
       renderer.resize(view.pixelWidth, view.pixelHeight);
     }
     renderer.viewProjection = setViewProjection(this.viewProjection, view.width, view.height, view.flipY, camera);
-    renderer.drawInPlace(layers);
+    if (surfaces) renderer.drawInPlace(layers, surfaces);
+    else renderer.drawInPlace(layers);
   }
 }

@@ -91,7 +91,7 @@ export class PenumbraGroup extends Phaser.GameObjects.Layer {
     const nodes = renderer.renderNodes;
     nodes.getNode('YieldContext')!.run(target);
     // Drawn into a framebuffer, the children took the camera's framebuffer view (its position left out).
-    this.plugin.lightContext(target, camera.getViewMatrix(true), this._layers);
+    this.plugin.lightContext(target, camera.getViewMatrix(true), this._layers, this.list, null);
     nodes.getNode('RebindContext')!.run(target);
     this.drawTarget(renderer, context, target);
   };

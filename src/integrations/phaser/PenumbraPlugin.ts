@@ -5,6 +5,7 @@ import { InPlaceLighting, type InPlaceView } from '../inPlaceLighting';
 import type { Affine2D } from '../viewProjection';
 import { PenumbraGroup, type PenumbraGroupOptions } from './PenumbraGroup';
 import { SpriteHulls, type FrameObject, type SpriteHullsOptions } from './SpriteHulls';
+import { PhaserSurfaces, type MaterialOptions } from './surfaces';
 import { TilemapLayerHulls, type TilemapLayerHullsOptions } from './TilemapLayerHulls';
 
 /** Depth of the lighting layer unless changed: objects above it (the HUD) stay unlit. */
@@ -46,6 +47,8 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   /** The drawing context's viewport and its world → context map, filled before each lighting. */
   private readonly view: InPlaceView = { pixelWidth: 0, pixelHeight: 0, width: 0, height: 0, flipY: false };
   private readonly camera: Affine2D = { a: 1, b: 0, c: 0, d: 1, tx: 0, ty: 0 };
+  /** The materials and the normal pass, made with the first renderer that has normals; kept across `configure`. */
+  private surfaces: PhaserSurfaces | null = null;
   /** The tilemap layers and sprites added, with their hulls. */
   private readonly occluders = new Map<Phaser.GameObjects.GameObject, TilemapLayerHulls | SpriteHulls>();
 
@@ -102,6 +105,29 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     this.inPlace = lighting;
     this.options = merged;
     return this;
+  }
+
+  /**
+   * Sets the material of normal-mapped images and sprites: of one game object, or of every object
+   * showing a texture (by key); `null` takes it away. An object's own material wins over its
+   * texture's; without either, a map has no highlight and no emission.
+   *
+   * With a renderer made with `normals: true` (in the plugin entry's `data`, or {@link PenumbraPlugin.configure}),
+   * the lighting layer lights images and sprites through the normal maps Phaser loaded with their
+   * textures: each frame it draws the objects drawn before it, in Phaser's order, from their normal
+   * maps turned by their rotation and flips, into textures the renderer reads (docs/normal-maps.md).
+   * Objects without a normal map are lit as without normals. Images and sprites of the scene and of
+   * its layers are drawn so; those inside a `Container`, and other kinds of objects, are lit as
+   * without normals.
+   *
+   * ```ts
+   * this.load.image('wall', ['wall.png', 'wall_n.png']);                        // in preload
+   * this.penumbra.setMaterial('wall', { specular: 0.4, shininess: 24 });        // in create
+   * ```
+   * @throws TypeError or RangeError for a target or option that does not fit.
+   */
+  setMaterial(target: Phaser.GameObjects.GameObject | string, material: MaterialOptions | null): void {
+    this.ownSurfaces().setMaterial(target, material);
   }
 
   /** Adds a light in world units; see {@link PenumbraRenderer.addLight}. */
@@ -210,7 +236,13 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     this.extern = null;
     this.inPlace?.renderer.dispose();
     this.inPlace = null;
+    this.surfaces?.dispose();
+    this.surfaces = null;
     super.destroy();
+  }
+
+  private ownSurfaces(): PhaserSurfaces {
+    return (this.surfaces ??= new PhaserSurfaces((this.game!.renderer as Phaser.Renderer.WebGL.WebGLRenderer).gl as WebGL2RenderingContext));
   }
 
   private track<T extends TilemapLayerHulls | SpriteHulls>(object: Phaser.GameObjects.GameObject, occluder: T): T {
@@ -279,7 +311,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     context: Phaser.Renderer.WebGL.DrawingContext,
     calcMatrix: Phaser.GameObjects.Components.TransformMatrix,
   ): void => {
-    this.lightContext(context, calcMatrix, this._layers);
+    this.lightContext(context, calcMatrix, this._layers, this.systems!.displayList.list, this.extern);
   };
 
   /** Whether the plugin has a renderer to light with: booted and not destroyed. @internal */
@@ -289,10 +321,14 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
 
   /**
    * Lights what is drawn in `context` in place with the lights of content `layers`,
-   * `worldToContext` mapping world units to the context's. Call it between Phaser's YieldContext and
-   * RebindContext nodes, which the Extern's renderer runs around the layer's render. @internal
+   * `worldToContext` mapping world units to the context's; with normals, through the normal maps of
+   * the objects of `content` drawn before `stop` (all when null). Call it between Phaser's
+   * YieldContext and RebindContext nodes, which the Extern's renderer runs around the layer's render. @internal
    */
-  lightContext(context: Phaser.Renderer.WebGL.DrawingContext, worldToContext: Phaser.GameObjects.Components.TransformMatrix, layers: number): void {
+  lightContext(
+    context: Phaser.Renderer.WebGL.DrawingContext, worldToContext: Phaser.GameObjects.Components.TransformMatrix, layers: number,
+    content: readonly Phaser.GameObjects.GameObject[], stop: Phaser.GameObjects.GameObject | null,
+  ): void {
     const lighting = this.inPlace;
     if (!lighting) return;
     // Binds the context's framebuffer and viewport, which the lighting reads and writes.
@@ -309,6 +345,10 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     camera.d = worldToContext.d;
     camera.tx = worldToContext.e;
     camera.ty = worldToContext.f;
-    lighting.draw(view, camera, layers);
+    let surfaces = null;
+    if (lighting.renderer.normals) {
+      surfaces = this.ownSurfaces().render(context, content, stop, view);
+    }
+    lighting.draw(view, camera, layers, surfaces);
   }
 }

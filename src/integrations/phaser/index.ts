@@ -4,6 +4,7 @@
  */
 export { PenumbraPlugin, DEFAULT_LAYER_DEPTH, type PenumbraPluginOptions } from './PenumbraPlugin';
 export { PenumbraGroup, type PenumbraGroupOptions } from './PenumbraGroup';
+export type { MaterialOptions } from './surfaces';
 export { TilemapLayerHulls, type TilemapLayerHullsOptions } from './TilemapLayerHulls';
 export { SpriteHulls, type SpriteHullsOptions, type FrameObject } from './SpriteHulls';
 export type { HullTarget } from './shared';

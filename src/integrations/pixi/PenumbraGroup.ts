@@ -129,7 +129,7 @@ class GroupLightingFilter extends Filter {
       const pixi = filters.renderer as WebGLRenderer;
       this.bindInput.target = input;
       pixi.renderTarget.bind(this.bindInput);
-      lighting.lightBoundTarget(pixi, this.owner.layers);
+      lighting.lightBoundTarget(pixi, this.owner.layers, this.owner, null);
       // A multisampled input was resolved into its texture before apply: resolve the lit colour again.
       pixi.renderTarget.finishRenderPass();
     }

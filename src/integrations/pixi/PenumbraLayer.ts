@@ -1,10 +1,11 @@
-import { Graphics, RenderContainer, Sprite, type Container, type Renderer, type WebGLRenderer } from 'pixi.js';
+import { Graphics, RenderContainer, Sprite, type Container, type Renderer, type TextureSource, type WebGLRenderer } from 'pixi.js';
 import { Hull, PenumbraRenderer, type Light, type LightOptions, type PenumbraRendererOptions } from '../../index';
 import { ALL_LAYERS, assertLayerMask } from '../../scene/validate';
 import { InPlaceLighting, type InPlaceView } from '../inPlaceLighting';
 import { GraphicsOccluder, type GraphicsHullsOptions } from './graphicsHulls';
 import { Occluder, prepareSpace, type OccluderSpace } from './Occluder';
 import { gpuReads, SpriteOccluder, type SpriteHullsOptions } from './spriteHulls';
+import { PixiSurfaces, type SurfaceOptions } from './surfaces';
 
 /** Options of a {@link PenumbraLayer}: the core renderer's options plus the camera. */
 export interface PenumbraLayerOptions extends Omit<PenumbraRendererOptions, 'viewProjection' | 'width' | 'height'> {
@@ -67,6 +68,8 @@ export class PenumbraLayer extends RenderContainer {
   /** The bound target's viewport, filled before each lighting. */
   private readonly view: InPlaceView = { pixelWidth: 0, pixelHeight: 0, width: 0, height: 0, flipY: false };
   private _layers = ALL_LAYERS;
+  /** The sprites' surfaces and the normal pass, with a renderer made with `normals: true`. */
+  private readonly surfaces: PixiSurfaces | null;
 
   constructor(renderer: Renderer, options: PenumbraLayerOptions = {}) {
     super({ label: 'PenumbraLayer' });
@@ -84,6 +87,7 @@ export class PenumbraLayer extends RenderContainer {
       height: gl.drawingBufferHeight,
     });
     this.inPlace = new InPlaceLighting(this.penumbra, gl.drawingBufferWidth, gl.drawingBufferHeight);
+    this.surfaces = this.penumbra.normals ? new PixiSurfaces(gl) : null;
   }
 
   /** The content layers this layer lights; see {@link PenumbraLayerOptions.layers}. */
@@ -109,6 +113,28 @@ export class PenumbraLayer extends RenderContainer {
   /** Removes a hull; returns whether it was there. */
   removeHull(hull: Hull): boolean {
     return this.penumbra.removeHull(hull);
+  }
+
+  /**
+   * Gives a sprite, or every sprite drawn from a texture source, a normal map and a material
+   * (see {@link SurfaceOptions}); `null` takes it away. The layer then lights such sprites through
+   * their normals: each frame it draws the sprites drawn before it, in Pixi's order, from their normal
+   * maps turned by their world transform (a rotated or mirrored sprite lights correctly), into textures
+   * the renderer reads (docs/normal-maps.md). A sprite's own surface wins over its texture source's.
+   * Sprites without a surface are lit as without normals. Only `Sprite`s (and subclasses) take a
+   * surface; other display objects drawn over a sprite with one do not hide its relief.
+   *
+   * ```ts
+   * const lighting = new PenumbraLayer(app.renderer, { camera: world, normals: true });
+   * lighting.setSurface(wall, { normalMap: await Assets.load('wall_n.png'), specular: 0.3, shininess: 24 });
+   * lighting.setSurface(sheet.textureSource, { normalMap: sheetNormals });   // every frame of a sheet
+   * ```
+   * @throws Error when the layer was not made with `normals: true`; TypeError or RangeError for a
+   * target or option that does not fit.
+   */
+  setSurface(target: Sprite | TextureSource, surface: SurfaceOptions | null): void {
+    if (!this.surfaces) throw new Error('penumbra: PenumbraLayer.setSurface needs a layer made with { normals: true }');
+    this.surfaces.set(target, surface);
   }
 
   /** The occluders: hulls following display objects, in the order they were added. */
@@ -203,14 +229,17 @@ export class PenumbraLayer extends RenderContainer {
       pixi.resetState();
       targets.bind(this.bindState);
     }
-    this.lightBoundTarget(pixi, this._layers);
+    let root: Container = this;
+    while (root.parent) root = root.parent;
+    this.lightBoundTarget(pixi, this._layers, root, this);
   }
 
   /**
    * Lights the viewport of Pixi's bound target in place with the lights of content `layers`, seen
-   * through the camera, then hands Pixi back its state with the target still bound. @internal
+   * through the camera, then hands Pixi back its state with the target still bound. With normals,
+   * through the surfaces of the sprites under `content` drawn before `stop` (all when null). @internal
    */
-  lightBoundTarget(pixi: WebGLRenderer, layers: number): void {
+  lightBoundTarget(pixi: WebGLRenderer, layers: number, content: Container, stop: Container | null): void {
     const targets = pixi.renderTarget;
     targets.getBindState(this.bindState);
     const target = targets.renderTarget;
@@ -223,7 +252,8 @@ export class PenumbraLayer extends RenderContainer {
     // As Pixi's own projection: render textures upside down (row 0 at the top), the screen right
     // side up, and either way round again when bound with flipY.
     view.flipY = !target.isRoot !== Boolean(target.flipY);
-    this.inPlace.draw(view, this.camera?.worldTransform ?? null, layers);
+    const surfaces = this.surfaces?.render(pixi, content, stop, this.camera, view) ?? null;
+    this.inPlace.draw(view, this.camera?.worldTransform ?? null, layers, surfaces);
     // The engine's own mechanism for foreign GL code; it forgets the bound target too, so bind it back.
     pixi.resetState();
     // resetState takes Pixi's cached clear colour to transparent black without setting GL's, which
@@ -238,6 +268,7 @@ export class PenumbraLayer extends RenderContainer {
     for (const occluder of this._occluders) occluder.detach();
     this._occluders.length = 0;
     this.penumbra.dispose();
+    this.surfaces?.dispose();
     super.destroy(options);
   }
 }

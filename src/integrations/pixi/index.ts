@@ -4,6 +4,7 @@
  */
 export { PenumbraLayer, type PenumbraLayerOptions } from './PenumbraLayer';
 export { PenumbraGroup, type PenumbraGroupOptions } from './PenumbraGroup';
+export type { SurfaceOptions } from './surfaces';
 export { hullFromBounds, hullFromPolygon } from './hulls';
 export { Occluder } from './Occluder';
 export { SpriteOccluder, hullsFromTexture, forgetTextureHulls, type SpriteHullsOptions, type TextureHullsOptions } from './spriteHulls';

@@ -1,0 +1,274 @@
+import { SURFACE_GLSL, type SurfaceTextures } from '../index';
+import { HostState } from '../gl/HostState';
+import { createProgram, type Program } from '../gl/program';
+import { RenderTarget } from '../gl/RenderTarget';
+
+/**
+ * One sprite of an engine's display list for the surface pass: a quad, the textures it is drawn
+ * from, its turn and its material. The engines fill one scratch object per pass and hand it to
+ * {@link SurfacePass.add}, which copies it.
+ */
+export interface SurfaceQuad {
+  /** The texture the sprite's colour is drawn from: its alpha is the coverage. */
+  color: WebGLTexture | null;
+  /** The sprite's normal map, laid out as `color`; null for a sprite without one, which erases what it covers. */
+  normals: WebGLTexture | null;
+  /** Corners in target units (y down from the top of the target): top-left, top-right, bottom-left, bottom-right of the image. */
+  readonly corners: Float32Array;
+  /** Texture coordinates of the same corners. */
+  readonly uvs: Float32Array;
+  /** The sprite's linear map from image axes to world axes, `[a, b, c, d]` as x' = a·x + c·y, y' = b·x + d·y. */
+  readonly worldFromImage: Float32Array;
+  /** Green points up the image (OpenGL-style maps) rather than down (DirectX-style). */
+  greenUp: boolean;
+  specular: number;
+  shininess: number;
+  emissive: number;
+  /** The sprite's alpha, multiplying its texture's. */
+  alpha: number;
+}
+
+/** A zeroed {@link SurfaceQuad}, to fill. */
+export function createSurfaceQuad(): SurfaceQuad {
+  return {
+    color: null, normals: null, corners: new Float32Array(8), uvs: new Float32Array(8), worldFromImage: Float32Array.of(1, 0, 0, 1),
+    greenUp: true, specular: 0, shininess: 1, emissive: 0, alpha: 1,
+  };
+}
+
+/** Floats per quad in the instance buffer: corners 8, uvs 8, worldFromImage 4, material 4, greenUp 1. */
+const STRIDE = 25;
+/** Sizes of the attributes at locations 0, 1, …, and their offsets (floats) in an instance. */
+const ATTRIBUTE_SIZES = Int32Array.of(4, 4, 4, 4, 4, 4, 1);
+const ATTRIBUTE_OFFSETS = Int32Array.of(0, 4, 8, 12, 16, 20, 24);
+/** Texture units of the pass: the colour (coverage) and the normal map. */
+const COLOR_UNIT = 0;
+const NORMAL_UNIT = 1;
+
+const VERTEX = `#version 300 es
+layout(location = 0) in vec4 a_corners01;
+layout(location = 1) in vec4 a_corners23;
+layout(location = 2) in vec4 a_uvs01;
+layout(location = 3) in vec4 a_uvs23;
+layout(location = 4) in vec4 a_worldFromImage;
+layout(location = 5) in vec4 a_material;
+layout(location = 6) in float a_greenUp;
+// 2 / width, 2 / height (target units), and 1, or -1 for a target drawn upside down (its top in row 0).
+uniform vec3 u_frame;
+out vec2 v_uv;
+flat out vec4 v_worldFromImage;
+flat out vec4 v_material;
+flat out float v_greenUp;
+void main() {
+  // A strip of the quad's corners: top-left, top-right, bottom-left, bottom-right.
+  int corner = gl_VertexID;
+  vec2 p = corner == 0 ? a_corners01.xy : corner == 1 ? a_corners01.zw : corner == 2 ? a_corners23.xy : a_corners23.zw;
+  v_uv = corner == 0 ? a_uvs01.xy : corner == 1 ? a_uvs01.zw : corner == 2 ? a_uvs23.xy : a_uvs23.zw;
+  v_worldFromImage = a_worldFromImage;
+  v_material = a_material;
+  v_greenUp = a_greenUp;
+  gl_Position = vec4(p.x * u_frame.x - 1.0, (1.0 - p.y * u_frame.y) * u_frame.z, 0.0, 1.0);
+}
+`;
+
+const FRAGMENT = `#version 300 es
+precision highp float;
+${SURFACE_GLSL}
+uniform sampler2D u_color;
+uniform sampler2D u_normals;
+// Drawing sprites without a normal map: they write their coverage only, blended to erase what they cover.
+uniform bool u_erase;
+in vec2 v_uv;
+flat in vec4 v_worldFromImage;
+flat in vec4 v_material;
+flat in float v_greenUp;
+layout(location = 0) out vec4 o_normal;
+layout(location = 1) out vec4 o_material;
+void main() {
+  float coverage = texture(u_color, v_uv).a * v_material.w;
+  if (u_erase) {
+    o_normal = vec4(coverage);
+    o_material = vec4(coverage);
+    return;
+  }
+  vec3 normal = penumbraWorldNormal(texture(u_normals, v_uv).rgb, mat2(v_worldFromImage), v_greenUp > 0.5);
+  o_normal = penumbraEncodeNormal(normal, coverage);
+  o_material = penumbraEncodeMaterial(v_material.x, v_material.y, v_material.z, coverage);
+}
+`;
+
+/**
+ * The normal pass of an engine integration: the sprites of a display list drawn, in its order,
+ * from their normal maps into a normal and a material texture with the encodings of
+ * docs/normal-maps.md, for `drawInPlace(layers, surfaces)`. Sprites with a normal map write their
+ * normal turned to world axes and their material, premultiplied by their coverage (texture alpha ×
+ * alpha); sprites without one, once one with a normal map was drawn, erase what they cover by their
+ * coverage, so that they are lit as without normals where they are on top.
+ *
+ * Each frame: {@link SurfacePass.begin}, {@link SurfacePass.add} per sprite, then
+ * {@link SurfacePass.render}. Its GL objects (program, buffer, vertex array, targets) are made on the
+ * first frame that has a normal-mapped sprite; the instance array grows (doubling) only past the
+ * most sprites seen; the targets are resized only when the viewport's size changes.
+ */
+export class SurfacePass {
+  private program: Program | null = null;
+  private buffer: WebGLBuffer | null = null;
+  private vertexArray: WebGLVertexArrayObject | null = null;
+  private target: RenderTarget | null = null;
+  private readonly hostState: HostState;
+  private instances = new Float32Array(64 * STRIDE);
+  /** Batches: runs of quads drawn from the same textures, erasing or not. */
+  private batchStarts = new Int32Array(16);
+  private batchColors: (WebGLTexture | null)[] = [];
+  private batchNormals: (WebGLTexture | null)[] = [];
+  private count = 0;
+  private batches = 0;
+  /** Whether a quad with a normal map was added this frame: without one, nothing needs drawing. */
+  private hasNormals = false;
+  private readonly surfaces: SurfaceTextures = { normals: null!, material: null, flipY: false };
+  private readonly frame = new Float32Array(3);
+
+  constructor(private readonly gl: WebGL2RenderingContext) {
+    this.hostState = new HostState(gl, NORMAL_UNIT + 1);
+  }
+
+  /** Starts a frame's list of quads. */
+  begin(): void {
+    this.count = 0;
+    this.batches = 0;
+    this.hasNormals = false;
+  }
+
+  /** Adds a quad, copied from `quad`: a sprite without a normal map is skipped until one with a normal map was added. */
+  add(quad: SurfaceQuad): void {
+    const erase = quad.normals === null;
+    if (erase && !this.hasNormals) return;
+    this.hasNormals = true;
+    if (this.batches === 0 || this.batchColors[this.batches - 1] !== quad.color || this.batchNormals[this.batches - 1] !== quad.normals) {
+      this.startBatch(quad.color, quad.normals);
+    }
+    if ((this.count + 1) * STRIDE > this.instances.length) {
+      const grown = new Float32Array(this.instances.length * 2);
+      grown.set(this.instances);
+      this.instances = grown;
+    }
+    const out = this.instances, o = this.count * STRIDE;
+    out.set(quad.corners, o);
+    out.set(quad.uvs, o + 8);
+    out.set(quad.worldFromImage, o + 16);
+    out[o + 20] = quad.specular;
+    out[o + 21] = quad.shininess;
+    out[o + 22] = quad.emissive;
+    out[o + 23] = quad.alpha;
+    out[o + 24] = quad.greenUp ? 1 : 0;
+    this.count++;
+  }
+
+  /**
+   * Draws the quads added since {@link SurfacePass.begin} into the pass's normal and material
+   * textures, `pixelWidth` × `pixelHeight` pixels covering a target of `width` × `height` units, in
+   * the same rows as the host's target (`flipY`: the host draws it upside down). Leaves the context
+   * state as it was. Returns the textures for `drawInPlace`, or null when no quad had a normal map:
+   * then the frame is lit as without normals, and nothing was drawn.
+   */
+  render(width: number, height: number, pixelWidth: number, pixelHeight: number, flipY: boolean): SurfaceTextures | null {
+    if (!this.hasNormals) return null;
+    const gl = this.gl;
+    const host = this.hostState;
+    host.save();
+    try {
+      host.prepareForRenderer();
+      const target = this.prepare(pixelWidth, pixelHeight);
+      const program = this.program!;
+      target.bind();
+      gl.clearBufferfv(gl.COLOR, 0, CLEAR);
+      gl.clearBufferfv(gl.COLOR, 1, CLEAR);
+      gl.useProgram(program.handle);
+      this.frame[0] = 2 / width;
+      this.frame[1] = 2 / height;
+      this.frame[2] = flipY ? -1 : 1;
+      gl.uniform3fv(program.uniforms.u_frame, this.frame);
+      gl.bindVertexArray(this.vertexArray);
+      gl.bindBuffer(gl.ARRAY_BUFFER, this.buffer);
+      gl.bufferData(gl.ARRAY_BUFFER, this.instances, gl.STREAM_DRAW, 0, this.count * STRIDE);
+      gl.enable(gl.BLEND);
+      gl.blendEquation(gl.FUNC_ADD);
+      for (let i = 0; i < this.batches; i++) {
+        const start = this.batchStarts[i];
+        const end = i + 1 < this.batches ? this.batchStarts[i + 1] : this.count;
+        const normals = this.batchNormals[i];
+        // Premultiplied "over" for normals; an eraser keeps dst × (1 − coverage) in every channel.
+        if (normals) gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA);
+        else gl.blendFunc(gl.ZERO, gl.ONE_MINUS_SRC_ALPHA);
+        gl.uniform1i(program.uniforms.u_erase, normals ? 0 : 1);
+        gl.activeTexture(gl.TEXTURE0 + COLOR_UNIT);
+        gl.bindTexture(gl.TEXTURE_2D, this.batchColors[i]);
+        gl.activeTexture(gl.TEXTURE0 + NORMAL_UNIT);
+        gl.bindTexture(gl.TEXTURE_2D, normals);
+        // WebGL2 has no base instance: the attributes start at the batch's first quad instead.
+        for (let location = 0; location < ATTRIBUTE_SIZES.length; location++) {
+          gl.vertexAttribPointer(location, ATTRIBUTE_SIZES[location], gl.FLOAT, false, STRIDE * 4, (start * STRIDE + ATTRIBUTE_OFFSETS[location]) * 4);
+        }
+        gl.drawArraysInstanced(gl.TRIANGLE_STRIP, 0, 4, end - start);
+      }
+    } finally {
+      host.restore();
+    }
+    const surfaces = this.surfaces;
+    surfaces.normals = this.target!.textures[0];
+    surfaces.material = this.target!.textures[1];
+    // Drawn in the host target's rows: its row 0 is the host's row 0.
+    surfaces.flipY = false;
+    return surfaces;
+  }
+
+  /** Frees the GL objects; safe to call twice. */
+  dispose(): void {
+    const gl = this.gl;
+    if (this.program) gl.deleteProgram(this.program.handle);
+    gl.deleteBuffer(this.buffer);
+    gl.deleteVertexArray(this.vertexArray);
+    this.target?.dispose();
+    this.program = null;
+    this.buffer = null;
+    this.vertexArray = null;
+    this.target = null;
+  }
+
+  private startBatch(color: WebGLTexture | null, normals: WebGLTexture | null): void {
+    if (this.batches === this.batchStarts.length) {
+      const grown = new Int32Array(this.batchStarts.length * 2);
+      grown.set(this.batchStarts);
+      this.batchStarts = grown;
+    }
+    this.batchStarts[this.batches] = this.count;
+    this.batchColors[this.batches] = color;
+    this.batchNormals[this.batches] = normals;
+    this.batches++;
+  }
+
+  /** The GL objects, made on first use, and the target at the viewport's size. Inside the saved host state. */
+  private prepare(width: number, height: number): RenderTarget {
+    const gl = this.gl;
+    if (!this.program) {
+      this.program = createProgram(gl, 'engine surface', VERTEX, FRAGMENT);
+      gl.useProgram(this.program.handle);
+      gl.uniform1i(this.program.uniforms.u_color, COLOR_UNIT);
+      gl.uniform1i(this.program.uniforms.u_normals, NORMAL_UNIT);
+      this.buffer = gl.createBuffer();
+      this.vertexArray = gl.createVertexArray();
+      gl.bindVertexArray(this.vertexArray);
+      gl.bindBuffer(gl.ARRAY_BUFFER, this.buffer);
+      for (let location = 0; location < ATTRIBUTE_SIZES.length; location++) {
+        gl.enableVertexAttribArray(location);
+        gl.vertexAttribDivisor(location, 1);
+      }
+    }
+    // Linear: the light passes read the normals at the lightmap's resolution, filtered.
+    if (!this.target) this.target = new RenderTarget(gl, { format: 'rgba8', linear: true, colorAttachments: 2 }, width, height);
+    else this.target.resize(width, height);
+    return this.target;
+  }
+}
+
+const CLEAR = new Float32Array(4);

@@ -1,0 +1,151 @@
+import Phaser from 'phaser';
+import type { SurfaceTextures } from '../../index';
+import { assertBoolean, assertFinite, assertUnit, describeValue } from '../../scene/validate';
+import type { InPlaceView } from '../inPlaceLighting';
+import { SurfacePass, createSurfaceQuad } from '../SurfacePass';
+
+/**
+ * The material of normal-mapped images and sprites, for a plugin made with `normals: true`
+ * (docs/normal-maps.md); give it with {@link PenumbraPlugin.setMaterial}. The normal map itself is
+ * Phaser's: the one loaded with the texture (`this.load.image(key, [url, normalUrl])`).
+ */
+export interface MaterialOptions {
+  /** Green points up the image (OpenGL-style maps, as Phaser's own lights read them) rather than down. Default `true`. */
+  greenUp?: boolean;
+  /** Strength of the Blinn-Phong highlight, 0..1. Default `0` (no highlight). */
+  specular?: number;
+  /** Blinn-Phong exponent, 1..2048: higher is a smaller, sharper highlight. Default `32`. */
+  shininess?: number;
+  /** 0..1: adds `emissive` × the object's colour whatever the light. Default `0`. */
+  emissive?: number;
+}
+
+type Material = Readonly<Required<MaterialOptions>>;
+
+const DEFAULT_MATERIAL: Material = { greenUp: true, specular: 0, shininess: 32, emissive: 0 };
+
+/** A game object's render nodes by role. */
+type RenderNodes = Partial<Record<string, Phaser.Renderer.WebGL.RenderNodes.RenderNode>>;
+/** Texture coordinates of a frame's corners: (u0, v0) at its top-left, (u1, v1) at its bottom-right. */
+interface UvRect { u0: number; v0: number; u1: number; v1: number }
+
+/** A game object the normal pass draws: an image or a sprite. */
+type Drawn = Phaser.GameObjects.Image | Phaser.GameObjects.Sprite;
+
+/**
+ * The plugin's materials and normal pass: the images and sprites drawn before the lighting layer
+ * (or a lit group's children), in Phaser's order, from the normal maps of their textures (see
+ * {@link SurfacePass}). Phaser's own texturer and transformer nodes place each quad, as Phaser draws it.
+ */
+export class PhaserSurfaces {
+  private readonly objectMaterials = new WeakMap<Phaser.GameObjects.GameObject, Material>();
+  private readonly textureMaterials = new Map<string, Material>();
+  private readonly pass: SurfacePass;
+  private readonly quad = createSurfaceQuad();
+  private context: Phaser.Renderer.WebGL.DrawingContext | null = null;
+
+  constructor(gl: WebGL2RenderingContext) {
+    this.pass = new SurfacePass(gl);
+  }
+
+  /** Sets or (with null) removes the material of a game object or of a texture (by key). */
+  setMaterial(target: Phaser.GameObjects.GameObject | string, options: MaterialOptions | null): void {
+    if (typeof target === 'string') {
+      if (options === null) this.textureMaterials.delete(target);
+      else this.textureMaterials.set(target, checkMaterial(options));
+    } else if (target instanceof Phaser.GameObjects.GameObject) {
+      if (options === null) this.objectMaterials.delete(target);
+      else this.objectMaterials.set(target, checkMaterial(options));
+    } else {
+      throw new TypeError(`penumbra: setMaterial takes a game object or a texture key, got ${describeValue(target)}`);
+    }
+  }
+
+  /**
+   * Draws the normal pass of the objects of `list` drawn before `stop` (all when null) into
+   * `context`'s size. Returns the textures for `drawInPlace`, or null when none has a normal map.
+   */
+  render(context: Phaser.Renderer.WebGL.DrawingContext, list: readonly Phaser.GameObjects.GameObject[], stop: Phaser.GameObjects.GameObject | null, view: InPlaceView): SurfaceTextures | null {
+    this.context = context;
+    this.pass.begin();
+    this.collect(list, stop);
+    this.context = null;
+    return this.pass.render(view.width, view.height, view.pixelWidth, view.pixelHeight, false);
+  }
+
+  /** Frees the normal pass's GL objects. */
+  dispose(): void {
+    this.pass.dispose();
+  }
+
+  /** Adds the images and sprites of `list`, and of the layers in it, in order; returns true once `stop` is reached. */
+  private collect(list: readonly Phaser.GameObjects.GameObject[], stop: Phaser.GameObjects.GameObject | null): boolean {
+    const camera = this.context!.camera!;
+    for (let i = 0; i < list.length; i++) {
+      const object = list[i];
+      if (object === stop) return true;
+      if (!object.willRender(camera)) continue;
+      if (object instanceof Phaser.GameObjects.Image || object instanceof Phaser.GameObjects.Sprite) this.addObject(object);
+      else if (object instanceof Phaser.GameObjects.Layer && this.collect(object.list, stop)) return true;
+    }
+    return false;
+  }
+
+  private addObject(object: Drawn): void {
+    const context = this.context!;
+    // The nodes Phaser draws the object with (ImageWebGLRenderer): the custom ones, else the defaults.
+    const nodes = object.customRenderNodes as RenderNodes, defaults = object.defaultRenderNodes as RenderNodes;
+    const texturer = (nodes.Texturer ?? defaults.Texturer) as Phaser.Renderer.WebGL.RenderNodes.TexturerImage;
+    const transformer = (nodes.Transformer ?? defaults.Transformer) as Phaser.Renderer.WebGL.RenderNodes.TransformerImage;
+    texturer.run(context, object);
+    transformer.run(context, object, texturer);
+    const quad = this.quad;
+    const frame = texturer.frame;
+    quad.color = frame.source.glTexture!.webGLTexture;
+    // Phaser's normal map of the frame's source (Texture.setDataSource, the loader's [url, normalUrl]).
+    const normalSource = object.texture.dataSource[frame.sourceIndex] as Phaser.Textures.TextureSource | undefined;
+    quad.normals = normalSource?.glTexture?.webGLTexture ?? null;
+    quad.alpha = object.alpha;
+    // Phaser's quad is top-left, bottom-left, bottom-right, top-right (SubmitterQuad); the pass takes a strip.
+    const q = transformer.quad, corners = quad.corners;
+    corners[0] = q[0]; corners[1] = q[1];
+    corners[2] = q[6]; corners[3] = q[7];
+    corners[4] = q[2]; corners[5] = q[3];
+    corners[6] = q[4]; corners[7] = q[5];
+    // A frame, or a crop, which Phaser gives the same texture coordinates (its typings leave them out).
+    const uv = texturer.uvSource as UvRect, uvs = quad.uvs;
+    uvs[0] = uv.u0; uvs[1] = uv.v0;
+    uvs[2] = uv.u1; uvs[3] = uv.v0;
+    uvs[4] = uv.u0; uvs[5] = uv.v1;
+    uvs[6] = uv.u1; uvs[7] = uv.v1;
+    // Image axes → world axes: the object's rotation, scale and flips (the transformer's sprite matrix without the camera).
+    const cos = Math.cos(object.rotation), sin = Math.sin(object.rotation);
+    const sx = object.flipX ? -object.scaleX : object.scaleX, sy = object.flipY ? -object.scaleY : object.scaleY;
+    const w = quad.worldFromImage;
+    w[0] = cos * sx;
+    w[1] = sin * sx;
+    w[2] = -sin * sy;
+    w[3] = cos * sy;
+    if (quad.normals) {
+      const material = this.objectMaterials.get(object) ?? this.textureMaterials.get(object.texture.key) ?? DEFAULT_MATERIAL;
+      quad.greenUp = material.greenUp;
+      quad.specular = material.specular;
+      quad.shininess = material.shininess;
+      quad.emissive = material.emissive;
+    }
+    this.pass.add(quad);
+  }
+}
+
+function checkMaterial(options: MaterialOptions): Material {
+  if (typeof options !== 'object' || options === null) throw new TypeError(`penumbra: a material must be an object, got ${describeValue(options)}`);
+  const { greenUp = true, specular = 0, shininess = 32, emissive = 0 } = options;
+  assertFinite('material.shininess', shininess);
+  if (shininess < 1 || shininess > 2048) throw new RangeError(`material.shininess must be from 1 to 2048, got ${shininess}`);
+  return {
+    greenUp: assertBoolean('material.greenUp', greenUp),
+    specular: assertUnit('material.specular', specular),
+    shininess,
+    emissive: assertUnit('material.emissive', emissive),
+  };
+}

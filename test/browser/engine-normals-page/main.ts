@@ -1,0 +1,149 @@
+// Real PixiJS and Phaser in Chromium, lighting sprites through their normal maps with their
+// integrations: a sprite with a uniform normal map (N), one without (P), and one with a normal map
+// under a plain sprite (E), lit by a directional light (test/browser/engineNormals.test.ts).
+import { Application, Container, Sprite, Texture } from 'pixi.js';
+import Phaser from 'phaser';
+import { PenumbraLayer } from '../../../src/integrations/pixi/index';
+import { PenumbraPlugin } from '../../../src/integrations/phaser/index';
+import { DirectionalLight } from '../../../src/index';
+import { ALBEDO, AMBIENT, CANVAS, ELEVATION, NORMAL_TEXEL, SPRITES, SPRITE_SIZE, type Engine, type NormalsState } from './contract';
+
+const AMBIENT_COLOR: [number, number, number] = [AMBIENT, AMBIENT, AMBIENT];
+
+function solid(rgb: readonly [number, number, number]): HTMLCanvasElement {
+  const canvas = Object.assign(document.createElement('canvas'), { width: SPRITE_SIZE, height: SPRITE_SIZE });
+  const context = canvas.getContext('2d')!;
+  const image = context.createImageData(SPRITE_SIZE, SPRITE_SIZE);
+  for (let i = 0; i < image.data.length; i += 4) image.data.set([rgb[0], rgb[1], rgb[2], 255], i);
+  context.putImageData(image, 0, 0);
+  return canvas;
+}
+
+function nextFrame(): Promise<void> {
+  return new Promise((done) => requestAnimationFrame(() => done()));
+}
+
+/** RGBA at canvas pixels (top-left origin), read right after drawing. */
+function readPixels(gl: WebGL2RenderingContext, points: [number, number][]): [number, number, number, number][] {
+  const pixel = new Uint8Array(4);
+  return points.map(([x, y]) => {
+    gl.readPixels(x, gl.drawingBufferHeight - 1 - y, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    return [pixel[0], pixel[1], pixel[2], pixel[3]];
+  });
+}
+
+/** Counts the GL objects made while `draw` runs. */
+function countCreated(gl: WebGL2RenderingContext, draw: () => void): number {
+  const names = ['createTexture', 'createFramebuffer', 'createBuffer', 'createVertexArray', 'createProgram', 'createRenderbuffer'] as const;
+  const saved = names.map((name) => gl[name]);
+  let count = 0;
+  names.forEach((name, i) => {
+    (gl as unknown as Record<string, unknown>)[name] = (...args: unknown[]) => (count++, (saved[i] as (...a: unknown[]) => unknown).apply(gl, args));
+  });
+  try {
+    draw();
+  } finally {
+    names.forEach((name, i) => ((gl as unknown as Record<string, unknown>)[name] = saved[i]));
+  }
+  return count;
+}
+
+interface Scene {
+  gl: WebGL2RenderingContext;
+  apply(state: NormalsState): void;
+  render(): void;
+}
+
+async function pixiScene(): Promise<Scene> {
+  const app = new Application();
+  await app.init({ width: CANVAS[0], height: CANVAS[1], preference: 'webgl', antialias: false, autoStart: false, background: '#000000' });
+  document.body.appendChild(app.canvas);
+  const gl = (app.renderer as unknown as { gl: WebGL2RenderingContext }).gl;
+  const color = Texture.from(solid([ALBEDO, ALBEDO, ALBEDO]));
+  const normals = Texture.from(solid(NORMAL_TEXEL));
+  const world = new Container();
+  const lighting = new PenumbraLayer(app.renderer, { camera: world, normals: true, ambientColor: AMBIENT_COLOR });
+  const sprite = (at: readonly [number, number], texture = color) => world.addChild(new Sprite({ texture, anchor: 0.5, position: { x: at[0], y: at[1] } }));
+  // The normal map given per sprite for N, per texture source for E's lower sprite (a texture of its own): both ways in use.
+  const normal = sprite(SPRITES.normal);
+  lighting.setSurface(normal, { normalMap: normals });
+  sprite(SPRITES.plain);
+  const under = sprite(SPRITES.erased, Texture.from(solid([ALBEDO, ALBEDO, ALBEDO])));
+  lighting.setSurface(under.texture.source, { normalMap: normals.source });
+  sprite(SPRITES.erased);
+  world.addChild(lighting);
+  app.stage.addChild(world);
+  const light = lighting.addLight(new DirectionalLight({ elevation: ELEVATION }));
+  return {
+    gl,
+    apply(state) {
+      normal.rotation = state.rotation;
+      normal.scale.set(state.mirrored ? -1 : 1, 1);
+      light.rotation = state.lightRotation;
+      world.scale.set(state.zoom);
+      world.position.set(-state.scroll[0] * state.zoom, -state.scroll[1] * state.zoom);
+    },
+    render: () => app.render(),
+  };
+}
+
+async function phaserScene(): Promise<Scene> {
+  const canvas = document.createElement('canvas');
+  document.body.appendChild(canvas);
+  const gl = canvas.getContext('webgl2', { antialias: false })!;
+  let scene: Normals | null = null;
+  class Normals extends Phaser.Scene {
+    declare penumbra: PenumbraPlugin;
+    normal!: Phaser.GameObjects.Image;
+    light!: DirectionalLight;
+    create(): void {
+      // Phaser's way: the normal map as the texture's data source, as the loader's [url, normalUrl] leaves it.
+      this.textures.addCanvas('lit', solid([ALBEDO, ALBEDO, ALBEDO]))!.setDataSource(solid(NORMAL_TEXEL));
+      this.textures.addCanvas('plain', solid([ALBEDO, ALBEDO, ALBEDO]));
+      this.normal = this.add.image(SPRITES.normal[0], SPRITES.normal[1], 'lit');
+      this.add.image(SPRITES.plain[0], SPRITES.plain[1], 'plain');
+      this.add.image(SPRITES.erased[0], SPRITES.erased[1], 'lit');
+      this.add.image(SPRITES.erased[0], SPRITES.erased[1], 'plain');
+      this.light = this.penumbra.addLight(new DirectionalLight({ elevation: ELEVATION }));
+      this.cameras.main.setOrigin(0, 0);
+      scene = this;
+    }
+  }
+  const game = new Phaser.Game({
+    type: Phaser.WEBGL, canvas, context: gl as unknown as CanvasRenderingContext2D, width: CANVAS[0], height: CANVAS[1],
+    banner: false, audio: { noAudio: true }, backgroundColor: '#000000', scene: Normals,
+    plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra', data: { normals: true, ambientColor: AMBIENT_COLOR } }] },
+  });
+  while (!scene) await nextFrame();
+  const s = scene as Normals;
+  return {
+    gl,
+    apply(state) {
+      s.normal.setRotation(state.rotation).setFlipX(state.mirrored);
+      s.light.rotation = state.lightRotation;
+      s.cameras.main.setZoom(state.zoom).setScroll(state.scroll[0], state.scroll[1]);
+    },
+    render: () => game.step(performance.now(), 0),
+  };
+}
+
+const scenes: Partial<Record<Engine, Promise<Scene>>> = {};
+function sceneOf(engine: Engine): Promise<Scene> {
+  return (scenes[engine] ??= engine === 'pixi' ? pixiScene() : phaserScene());
+}
+
+window.engineNormals = {
+  async read(engine, state, points) {
+    const scene = await sceneOf(engine);
+    scene.apply(state);
+    scene.render();
+    return readPixels(scene.gl, points);
+  },
+  async created(engine, frames) {
+    const scene = await sceneOf(engine);
+    scene.render();
+    return countCreated(scene.gl, () => {
+      for (let i = 0; i < frames; i++) scene.render();
+    });
+  },
+};

@@ -1,0 +1,162 @@
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import type { Browser, Page } from 'puppeteer';
+import { build } from 'vite';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { collectPageErrors, launchChromium } from './chromium';
+import { ALBEDO, AMBIENT, ELEVATION, NORMAL_TEXEL, SPRITES, type Engine, type NormalsState } from './engine-normals-page/contract';
+import { serveDirectory, type StaticServer } from './staticServer';
+
+// Normal maps in the real PixiJS and Phaser integrations, against the formula of docs/normal-maps.md
+// computed here: a sprite of uniform normal (N) lit by a directional light shows
+//   255 × albedo × (ambient + max(0, N·L))                       (coverage 1, no highlight)
+// with N its map's normal turned by the sprite's rotation and mirroring, L the light's direction;
+// a sprite without a normal map (P), and one drawn over a normal-mapped one (E), show
+//   255 × albedo × (ambient + 1)                                 (lit as without normals).
+//
+// Tolerance, 3 steps of 8 bits: the normal target stores the turned normal in 8 bits a channel
+// (½ step each, N·L within 0.006), which the albedo (200) turns into at most 1.2 steps; the lightmap
+// is half float (a relative error under 2⁻¹⁰, ¼ step here) and the product is rounded once (½ step).
+// The expected N uses the map's texel as stored (8 bits), so the map's own quantization is not an error.
+// Lit from the other side, the values differ by 100 to 140 steps: far beyond the tolerance.
+
+const TOLERANCE = 3;
+const LIT_FLAT = 255 * (ALBEDO / 255) * (AMBIENT + 1);
+
+let outDir: string;
+let server: StaticServer;
+let browser: Browser;
+let page: Page;
+let errors: string[];
+
+type Vec = readonly [number, number];
+const BASE: NormalsState = { rotation: 0, mirrored: false, lightRotation: Math.PI, scroll: [0, 0], zoom: 1 };
+/** Light travelling west (from the east), east, south (from the north) and north (from the south). */
+const FROM_EAST = Math.PI, FROM_WEST = 0, FROM_NORTH = Math.PI / 2, FROM_SOUTH = -Math.PI / 2;
+
+/** The map's normal in image axes (x right, y down), decoded from its texel as the surface helper does (green up). */
+const IMAGE_NORMAL = (() => {
+  const [x, y, z] = NORMAL_TEXEL.map((byte) => (byte / 255) * 2 - 1);
+  const length = Math.hypot(x, y, z);
+  return [x / length, -y / length, z / length] as const;
+})();
+
+/** N·L for the map's normal on a sprite turned by `rotation`, mirrored left–right or not, lit by a light travelling along `lightRotation`. */
+function nDotL(rotation: number, mirrored: boolean, lightRotation: number): number {
+  const ix = mirrored ? -IMAGE_NORMAL[0] : IMAGE_NORMAL[0], iy = IMAGE_NORMAL[1];
+  const nx = Math.cos(rotation) * ix - Math.sin(rotation) * iy;
+  const ny = Math.sin(rotation) * ix + Math.cos(rotation) * iy;
+  const l = [-Math.cos(lightRotation) * Math.cos(ELEVATION), -Math.sin(lightRotation) * Math.cos(ELEVATION), Math.sin(ELEVATION)];
+  return nx * l[0] + ny * l[1] + IMAGE_NORMAL[2] * l[2];
+}
+
+function expectedLit(state: NormalsState): number {
+  return 255 * (ALBEDO / 255) * (AMBIENT + Math.max(0, nDotL(state.rotation, state.mirrored, state.lightRotation)));
+}
+
+/** Canvas pixels of a sprite's middle: its centre and 6 world units around it (inside its 24 units). */
+function around(state: NormalsState, [x, y]: Vec): [number, number][] {
+  return [[0, 0], [-6, -6], [6, -6], [-6, 6], [6, 6]].map(([dx, dy]) => [
+    Math.floor((x + dx - state.scroll[0]) * state.zoom), Math.floor((y + dy - state.scroll[1]) * state.zoom),
+  ]);
+}
+
+/** Reads the three sprites' middles under `state`: the red channel of each point (grey light on grey sprites). */
+async function read(engine: Engine, state: NormalsState): Promise<{ normal: number[]; plain: number[]; erased: number[] }> {
+  const points = [...around(state, SPRITES.normal), ...around(state, SPRITES.plain), ...around(state, SPRITES.erased)];
+  const pixels = await page.evaluate((e, s, p) => window.engineNormals!.read(e, s, p), engine, state, points);
+  const red = pixels.map((pixel) => pixel[0]);
+  return { normal: red.slice(0, 5), plain: red.slice(5, 10), erased: red.slice(10, 15) };
+}
+
+function expectNear(values: number[], expected: number, what: string): void {
+  for (const value of values) expect(Math.abs(value - expected), `${what}: ${values.join(', ')} vs ${expected.toFixed(1)}`).toBeLessThanOrEqual(TOLERANCE);
+}
+
+beforeAll(async () => {
+  outDir = mkdtempSync(join(tmpdir(), 'penumbra-engine-normals-'));
+  await build({
+    configFile: false,
+    root: resolve(import.meta.dirname, 'engine-normals-page'),
+    base: './',
+    logLevel: 'warn',
+    build: { outDir, emptyOutDir: true, chunkSizeWarningLimit: 4000 },
+  });
+  server = await serveDirectory(outDir);
+  browser = await launchChromium();
+  page = await browser.newPage();
+  errors = collectPageErrors(page);
+  await page.goto(server.url, { waitUntil: 'load', timeout: 120_000 });
+  await page.waitForFunction(() => window.engineNormals !== undefined, { timeout: 60_000 });
+}, 300_000);  // a Vite build and Chromium on a shared machine
+
+afterAll(async () => {
+  await browser?.close();
+  await server?.close();
+  if (outDir) rmSync(outDir, { recursive: true, force: true });
+});
+
+for (const engine of ['pixi', 'phaser'] as const) {
+  describe(`normal maps in the ${engine === 'pixi' ? 'PixiJS layer' : 'Phaser plugin'}`, () => {
+    it('lights a normal-mapped sprite through its normal: brighter from the side it faces, as the formula says', async () => {
+      const east = { ...BASE, lightRotation: FROM_EAST }, west = { ...BASE, lightRotation: FROM_WEST };
+      const fromEast = await read(engine, east);
+      const fromWest = await read(engine, west);
+      expectNear(fromEast.normal, expectedLit(east), 'from the east');
+      expectNear(fromWest.normal, expectedLit(west), 'from the west');
+      // The map faces east: lit from the east it is brighter, in the formula's ratio.
+      expect(expectedLit(east) - expectedLit(west)).toBeGreaterThan(100);
+      expect(fromEast.normal[0] / fromWest.normal[0]).toBeCloseTo(expectedLit(east) / expectedLit(west), 1);
+    });
+
+    it('turns the normal with a rotated sprite', async () => {
+      // Turned a quarter clockwise (y down), the map faces south instead of east.
+      for (const lightRotation of [FROM_EAST, FROM_SOUTH, FROM_NORTH]) {
+        const state = { ...BASE, rotation: Math.PI / 2, lightRotation };
+        expectNear((await read(engine, state)).normal, expectedLit(state), `rotated, light ${lightRotation.toFixed(2)}`);
+      }
+      const south = expectedLit({ ...BASE, rotation: Math.PI / 2, lightRotation: FROM_SOUTH });
+      expect(south - expectedLit({ ...BASE, rotation: Math.PI / 2, lightRotation: FROM_NORTH })).toBeGreaterThan(100);
+    });
+
+    it('mirrors the normal with a mirrored sprite', async () => {
+      // Mirrored, the map faces west.
+      for (const lightRotation of [FROM_EAST, FROM_WEST]) {
+        const state = { ...BASE, mirrored: true, lightRotation };
+        expectNear((await read(engine, state)).normal, expectedLit(state), `mirrored, light ${lightRotation.toFixed(2)}`);
+      }
+      expect(expectedLit({ ...BASE, mirrored: true, lightRotation: FROM_WEST }) - expectedLit({ ...BASE, mirrored: true, lightRotation: FROM_EAST })).toBeGreaterThan(100);
+    });
+
+    it('lights a sprite without a normal map, and one drawn over a normal-mapped sprite, exactly as without normals', async () => {
+      const fromEast = await read(engine, { ...BASE, lightRotation: FROM_EAST });
+      const fromWest = await read(engine, { ...BASE, lightRotation: FROM_WEST });
+      expectNear(fromEast.plain, LIT_FLAT, 'plain');
+      // Exactly: the same pixels whichever way the light comes, and the covered sprite's as the plain one's.
+      expect(fromWest.plain).toEqual(fromEast.plain);
+      expect(fromEast.erased).toEqual(fromEast.plain);
+      expect(fromWest.erased).toEqual(fromWest.plain);
+    });
+
+    it('keeps the normal pass on the sprites as the camera pans and zooms', async () => {
+      for (const view of [{ scroll: [-20, 10] as [number, number], zoom: 1 }, { scroll: [10, 15] as [number, number], zoom: 1.5 }]) {
+        for (const lightRotation of [FROM_EAST, FROM_WEST]) {
+          const state = { ...BASE, ...view, lightRotation };
+          const pixels = await read(engine, state);
+          expectNear(pixels.normal, expectedLit(state), `scroll ${view.scroll}, zoom ${view.zoom}`);
+          expectNear(pixels.plain, LIT_FLAT, `plain, scroll ${view.scroll}, zoom ${view.zoom}`);
+        }
+      }
+    });
+
+    it('makes no GL object per frame', async () => {
+      await read(engine, BASE);
+      expect(await page.evaluate((e) => window.engineNormals!.created(e, 4), engine)).toBe(0);
+    });
+  });
+}
+
+it('logs no console errors', () => {
+  expect(errors).toEqual([]);
+});
