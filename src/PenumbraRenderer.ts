@@ -601,15 +601,22 @@ export class PenumbraRenderer {
     }
   }
 
-  /** Throws naming the method and field when `surfaces` is given to a renderer without normals or is malformed. */
+  /**
+   * Throws naming the method and field when `surfaces` is given to a renderer without normals or is
+   * malformed. Per frame: the messages are built only on failure.
+   */
   private checkSurfaces(method: string, surfaces: SurfaceTextures | undefined): void {
     if (surfaces === undefined) return;
+    if (this._normals && isObject(surfaces) && isObject(surfaces.normals) && (surfaces.material == null || isObject(surfaces.material))
+      && (surfaces.flipY === undefined || typeof surfaces.flipY === 'boolean')) return;
     const name = `PenumbraRenderer.${method}: surfaces`;
     if (!this._normals) throw new Error(`penumbra: ${name} needs a renderer made with { normals: true }`);
-    if (typeof surfaces !== 'object' || surfaces === null) throw new TypeError(`${name} must be an object, got ${describeValue(surfaces)}`);
-    checkTextureField(`${name}.normals`, surfaces.normals, false);
-    checkTextureField(`${name}.material`, surfaces.material, true);
-    if (surfaces.flipY !== undefined) assertBoolean(`${name}.flipY`, surfaces.flipY);
+    if (!isObject(surfaces)) throw new TypeError(`${name} must be an object, got ${describeValue(surfaces)}`);
+    if (!isObject(surfaces.normals)) throw new TypeError(`${name}.normals must be a WebGLTexture, got ${describeValue(surfaces.normals)}`);
+    if (surfaces.material != null && !isObject(surfaces.material)) {
+      throw new TypeError(`${name}.material must be a WebGLTexture, got ${describeValue(surfaces.material)}`);
+    }
+    assertBoolean(`${name}.flipY`, surfaces.flipY as boolean);
   }
 
   /** Points {@link PenumbraRenderer.surface} at the host's textures of this call, or at the scene target's. */
@@ -822,9 +829,9 @@ function checkSize(name: string, value: number, max: number): number {
   return value;
 }
 
-function checkTextureField(name: string, value: unknown, optional: boolean): void {
-  if (optional && value == null) return;
-  if (typeof value !== 'object' || value === null) throw new TypeError(`${name} must be a WebGLTexture, got ${describeValue(value)}`);
+/** Whether `value` is a non-null object (a WebGL texture is an opaque one). */
+function isObject(value: unknown): value is object {
+  return typeof value === 'object' && value !== null;
 }
 
 function checkScale(value: number): number {

@@ -57,6 +57,12 @@ describe('normal-mapped lighting in Chromium', () => {
     expect(figures.colorOnlyDiffers).toBe(0);
   });
 
+  it('leaves every host parameter as the host set it after each public call of a renderer with normals', async () => {
+    const report = await referencePage.page.evaluate(() => (window as unknown as ReferencePageApi).checkHostState(true));
+    expect(report.calls).toContain('drawInPlace with surfaces');
+    expect(report.failures).toEqual([]);
+  });
+
   it('names the field and the value of malformed drawInPlace surfaces', async () => {
     const thrown = await referencePage.page.evaluate(() => (window as unknown as ReferencePageApi).surfaceMisuse());
     expect(thrown).toEqual([

@@ -17,7 +17,8 @@ export interface ReferencePageApi {
   /** The lightmap of a directional light's scene (test/reference/directionalReference.ts). */
   renderDirectionalScene(scene: DirectionalReferenceScene): number[];
   renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before: number[]; after: number[]; lostFrameError: string | null; windowErrors: string[] }>;
-  checkHostState(): HostStateReport;
+  /** The host-parameter check (test/gl/hostParameters.ts), of a renderer with normals when `normals`. */
+  checkHostState(normals?: boolean): HostStateReport;
   compareIllumination(scene: ReferenceScene): IlluminationComparison & { glError: number; floatLightmap: boolean };
   /** Normal-mapped lighting against its CPU reference (test/reference/surfaceComparison.ts). */
   compareSurfaces(): SurfaceFigures;

@@ -271,8 +271,9 @@ export interface HostStateReport {
  * Sets a hostile host state, then runs every public call of the renderer (constructor, frames with
  * shadows, a textured light and the debug overlay, in place, lightmap only, resize, scene changes
  * that upload geometry, dispose), comparing every parameter after each with what the host set.
+ * With `normals`, a renderer with normals, and the calls that take the host's surfaces.
  */
-export function checkHostStateAcrossPublicCalls(gl: GL, width: number, height: number): HostStateReport {
+export function checkHostStateAcrossPublicCalls(gl: GL, width: number, height: number, normals = false): HostStateReport {
   const cookie = gl.createTexture()!;
   gl.bindTexture(gl.TEXTURE_2D, cookie);
   gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array([255, 255, 255, 255]));
@@ -300,7 +301,7 @@ export function checkHostStateAcrossPublicCalls(gl: GL, width: number, height: n
   };
   let renderer!: PenumbraRenderer;
   const hull = new Hull([[36, 18], [42, 18], [42, 30], [36, 30]]);
-  check('constructor', () => { renderer = new PenumbraRenderer(gl, { width, height }); });
+  check('constructor', () => { renderer = new PenumbraRenderer(gl, { width, height, normals }); });
   check('addLight/addHull', () => {
     renderer.addLight(new PointLight({ position: [20, 24], range: 50, radius: 3 }));
     renderer.addLight(new TexturedLight({ position: [40, 10], range: 30, texture: cookie }));
@@ -316,6 +317,10 @@ export function checkHostStateAcrossPublicCalls(gl: GL, width: number, height: n
     renderer.debug = true;
     renderer.drawInPlace();
   });
+  if (normals) {
+    check('drawInPlace with surfaces', () => renderer.drawInPlace(undefined, { normals: renderer.normalTexture, material: renderer.materialTexture, flipY: true }));
+    check('renderLightmap with surfaces', () => renderer.renderLightmap(undefined, { normals: renderer.normalTexture }));
+  }
   check('resize', () => renderer.resize(width + 2, height + 1));
   check('frame after resize', () => {
     renderer.beginDraw();

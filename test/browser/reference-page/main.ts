@@ -119,10 +119,10 @@ async function renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before:
 }
 
 /** The host-parameter check of test/gl/hostParameters.ts on a canvas of its own (its state would disturb the scenes). */
-function checkHostState(): HostStateReport {
+function checkHostState(normals = false): HostStateReport {
   const gl = document.createElement('canvas').getContext('webgl2');
   if (!gl) throw new Error('WebGL2 is not available');
-  return checkHostStateAcrossPublicCalls(gl, 64, 48);
+  return checkHostStateAcrossPublicCalls(gl, 64, 48, normals);
 }
 
 /** The renderer `compareIllumination` reuses from scene to scene (SwiftShader takes seconds to link a new one's programs). */
