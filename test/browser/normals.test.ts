@@ -63,6 +63,12 @@ describe('normal-mapped lighting in Chromium', () => {
     expect(report.failures).toEqual([]);
   });
 
+  it('draws the same frame after the context is lost and restored', async () => {
+    const { differingBytes, litBytes } = await referencePage.page.evaluate(() => (window as unknown as ReferencePageApi).surfacesAcrossContextLoss());
+    expect(litBytes).toBeGreaterThan(1000);
+    expect(differingBytes).toBe(0);
+  });
+
   it('names the field and the value of malformed drawInPlace surfaces', async () => {
     const thrown = await referencePage.page.evaluate(() => (window as unknown as ReferencePageApi).surfaceMisuse());
     expect(thrown).toEqual([

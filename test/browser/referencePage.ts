@@ -24,6 +24,8 @@ export interface ReferencePageApi {
   compareSurfaces(): SurfaceFigures;
   /** The messages a renderer with normals throws for malformed `drawInPlace` surfaces. */
   surfaceMisuse(): string[];
+  /** A frame of a renderer with normals before a context loss and after the restore: the output bytes that differ. */
+  surfacesAcrossContextLoss(): Promise<{ differingBytes: number; litBytes: number }>;
 }
 
 /** The reference page open in headless Chromium. */

@@ -37,17 +37,29 @@ void main() {
   gl_Position = vec4(corner, 0.0, 1.0);
 }`;
 
+/** The host of the band scene: `draw` writes colour, normal and material of every pixel into the bound target. */
+export function createSurfaceHost(gl: WebGL2RenderingContext): { draw(): void; dispose(): void } {
+  const program = createProgram(gl, 'surface host', FULL_SCREEN_VERTEX, surfaceHostFragment(SURFACE_GLSL)).handle;
+  const vertexArray = gl.createVertexArray()!;
+  return {
+    draw() {
+      gl.useProgram(program);
+      gl.bindVertexArray(vertexArray);
+      gl.drawArrays(gl.TRIANGLES, 0, 3);
+    },
+    dispose() {
+      gl.deleteProgram(program);
+      gl.deleteVertexArray(vertexArray);
+    },
+  };
+}
+
 /** Renders the band scene under every case on `gl` (WIDTH × HEIGHT) and measures it against the reference. */
 export function compareSurfaceLighting(gl: WebGL2RenderingContext): SurfaceFigures {
   const withNormals = new PenumbraRenderer(gl, { ambientColor: SURFACE_AMBIENT, normals: true });
   const without = new PenumbraRenderer(gl, { ambientColor: SURFACE_AMBIENT });
-  const host = createProgram(gl, 'surface host', FULL_SCREEN_VERTEX, surfaceHostFragment(SURFACE_GLSL)).handle;
-  const vertexArray = gl.createVertexArray()!;
-  const drawSurfaceScene = () => {
-    gl.useProgram(host);
-    gl.bindVertexArray(vertexArray);
-    gl.drawArrays(gl.TRIANGLES, 0, 3);
-  };
+  const host = createSurfaceHost(gl);
+  const drawSurfaceScene = () => host.draw();
 
   /** A frame of `renderer` lit by `lights` and shadowed by `hulls`; the output bytes, rows bottom-up. */
   const frame = (renderer: PenumbraRenderer, lights: readonly Light[], hulls: readonly Hull[], drawHost = drawSurfaceScene): Uint8Array => {
@@ -116,8 +128,7 @@ export function compareSurfaceLighting(gl: WebGL2RenderingContext): SurfaceFigur
   const glError = gl.getError();
   withNormals.dispose();
   without.dispose();
-  gl.deleteProgram(host);
-  gl.deleteVertexArray(vertexArray);
+  host.dispose();
   return { normalStorage, cases, composite, emissiveUnlit, bandWithoutNormalDiffers, colorOnlyDiffers, glError };
 }
 

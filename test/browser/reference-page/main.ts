@@ -12,8 +12,8 @@ import { callsThrowing } from '../../gl/fixtures';
 import { checkHostStateAcrossPublicCalls, type HostStateReport } from '../../gl/hostParameters';
 import { compareReferenceScene, type IlluminationComparison } from '../../reference/illuminationComparison';
 import { PenumbraRenderer } from '../../../src/index';
-import { compareSurfaceLighting, type SurfaceFigures } from '../../reference/surfaceComparison';
-import { SURFACE_HEIGHT, SURFACE_WIDTH } from '../../reference/surfaceReference';
+import { compareSurfaceLighting, createSurfaceHost, type SurfaceFigures } from '../../reference/surfaceComparison';
+import { SURFACE_AMBIENT, SURFACE_CASES, SURFACE_HEIGHT, SURFACE_WIDTH } from '../../reference/surfaceReference';
 
 const canvas = document.getElementById('canvas') as HTMLCanvasElement;
 
@@ -150,6 +150,45 @@ function compareSurfaces(): SurfaceFigures {
   return compareSurfaceLighting(context(SURFACE_WIDTH, SURFACE_HEIGHT));
 }
 
+/**
+ * A frame of the band scene by a renderer with normals, before a context loss and after the
+ * restore (the host rebuilds its program, the renderer itself): how many output bytes differ.
+ */
+async function surfacesAcrossContextLoss(): Promise<{ differingBytes: number; litBytes: number }> {
+  const gl = context(SURFACE_WIDTH, SURFACE_HEIGHT);
+  const loseContext = gl.getExtension('WEBGL_lose_context')!;
+  const renderer = new PenumbraRenderer(gl, { ambientColor: SURFACE_AMBIENT, normals: true });
+  const scene = SURFACE_CASES[0];
+  renderer.addLight(scene.light());
+  for (const hull of scene.hulls()) renderer.addHull(hull);
+  const frame = () => {
+    const host = createSurfaceHost(gl);
+    renderer.beginDraw();
+    host.draw();
+    renderer.draw();
+    host.dispose();
+    const bytes = new Uint8Array(SURFACE_WIDTH * SURFACE_HEIGHT * 4);
+    gl.readPixels(0, 0, SURFACE_WIDTH, SURFACE_HEIGHT, gl.RGBA, gl.UNSIGNED_BYTE, bytes);
+    return bytes;
+  };
+  const before = frame();
+  const lost = nextEvent('webglcontextlost');
+  loseContext.loseContext();
+  await lost;
+  await afterDispatch();
+  const restored = nextEvent('webglcontextrestored');
+  loseContext.restoreContext();
+  await restored;
+  const after = frame();
+  renderer.dispose();
+  let differingBytes = 0, litBytes = 0;
+  for (let i = 0; i < before.length; i++) {
+    if (before[i] !== after[i]) differingBytes++;
+    if (i % 4 !== 3 && after[i] > 100) litBytes++;
+  }
+  return { differingBytes, litBytes };
+}
+
 /** What a renderer with normals throws for malformed surfaces of `drawInPlace`. */
 function surfaceMisuse(): string[] {
   const gl = context(SURFACE_WIDTH, SURFACE_HEIGHT);
@@ -167,4 +206,4 @@ function surfaceMisuse(): string[] {
   return thrown;
 }
 
-Object.assign(window, { renderScene, renderDirectionalScene, renderAcrossContextLoss, checkHostState, compareIllumination, compareSurfaces, surfaceMisuse });
+Object.assign(window, { renderScene, renderDirectionalScene, renderAcrossContextLoss, checkHostState, compareIllumination, compareSurfaces, surfaceMisuse, surfacesAcrossContextLoss });
