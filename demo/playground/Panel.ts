@@ -116,6 +116,7 @@ export class Panel {
     scene.add(playground, 'animate').name('animate');
     scene.add(actions, 'save').name('save scene (download)');
     scene.add(actions, 'load').name('load scene… (or drop a file)');
+    this.showcaseControls();
     this.lookControls();
 
     const edit = this.gui.addFolder('Add / delete');
@@ -147,6 +148,22 @@ export class Panel {
     this.gui.onOpenClose(() => this.measureCovered());
     window.addEventListener('resize', () => this.measureCovered());
     this.measureCovered();
+  }
+
+  /**
+   * The showcase level's own controls, shown while it is the scene: its daylight (night's ambient
+   * and cold moon through the windows to noon's warm ambient and high sun). Its torches flicker
+   * while `animate` is on.
+   */
+  private showcaseControls(): void {
+    const { playground } = this;
+    const folder = this.gui.addFolder('Showcase');
+    const m: Record<string, unknown> = {};
+    this.field(m, 'daylight', () => playground.showcase.daylight, (v: number) => { playground.showcase.daylight = v; });
+    hint(folder.add(m, 'daylight', 0, 1, 0.01).listen(), 'Night (0): dim ambient and a cold moon through the windows; noon (1): a warm ambient and a high sun.');
+    const show = () => folder.show(playground.showcaseActive);
+    playground.addEventListener('art', show);
+    show();
   }
 
   /**

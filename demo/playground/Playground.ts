@@ -5,6 +5,7 @@ import {
 import { Camera } from './Camera';
 import { Cookies } from './Cookies';
 import { SceneArt, type ImageSprite, type Sprite } from './SceneArt';
+import { Showcase } from './showcase/Showcase';
 import { createTexture } from './textures';
 
 /** What can be selected and edited. */
@@ -34,6 +35,9 @@ export class Playground extends EventTarget {
   animate = true;
   private _selection: Selectable | null = null;
   private readonly art: SceneArt;
+  /** The showcase level's art and animation; drawn instead of the generic art while {@link showcaseActive}. */
+  readonly showcase: Showcase;
+  private _showcaseActive = false;
   private readonly sprites: Sprite[] = [
     { texture: 'barrel', x: 560, y: 560, size: 44, rotation: 0 },
     { texture: 'barrel', x: 1240, y: 880, size: 40, rotation: 1 },
@@ -53,9 +57,16 @@ export class Playground extends EventTarget {
 
   constructor(readonly gl: WebGL2RenderingContext) {
     super();
-    this.renderer = new PenumbraRenderer(gl, { measureCpuTime: true });
+    // Normals: the showcase's art writes normals and materials; the generic art writes none (coverage 0), lit as without.
+    this.renderer = new PenumbraRenderer(gl, { measureCpuTime: true, normals: true });
     this.cookies = new Cookies(gl);
     this.art = new SceneArt(gl);
+    this.showcase = new Showcase(gl);
+  }
+
+  /** Whether the scene is the showcase level, drawn with its own art (fires `art` when this changes). */
+  get showcaseActive(): boolean {
+    return this._showcaseActive;
   }
 
   get selection(): Selectable | null {
@@ -75,8 +86,10 @@ export class Playground extends EventTarget {
   /**
    * Replaces the scene with a scene file's contents. Validates everything and builds every object
    * before touching the current scene, so on an error (thrown, naming the bad field) nothing changes.
+   * `showcase`: the scene is the showcase level (its document, or a save of it): its hulls and
+   * lights get the showcase's art, heights and flicker, by their order.
    */
-  load(source: string | SceneDocument): void {
+  load(source: string | SceneDocument, { showcase = false } = {}): void {
     const document = readScene(source);
     const objects = createSceneObjects(document, this.cookies.resolve);
     const renderer = this.renderer;
@@ -90,6 +103,12 @@ export class Playground extends EventTarget {
     this.camera.center[0] = document.camera.center[0];
     this.camera.center[1] = document.camera.center[1];
     this.camera.zoom = document.camera.zoom;
+    if (showcase) this.showcase.attach(renderer);
+    else this.showcase.detach();
+    if (showcase !== this._showcaseActive) {
+      this._showcaseActive = showcase;
+      this.dispatchEvent(new Event('art'));
+    }
     this.selection = null;
     this.changed();
   }
@@ -237,7 +256,14 @@ export class Playground extends EventTarget {
     renderer.viewProjection = viewProjection;
     renderer.beginDraw();
     if (this.images.length > 0) this.forgetRemovedImages();
-    this.art.draw(viewProjection, camera.visibleWorld(this.view), renderer.hulls, this.sprites, this.images);
+    const view = camera.visibleWorld(this.view);
+    if (this._showcaseActive) {
+      this.showcase.draw(viewProjection, view, renderer.hulls, renderer.lights);
+      // Hulls added in the editor, and traced images, in the generic stone over the showcase's floor.
+      this.art.draw(viewProjection, view, renderer.hulls.filter((hull) => !this.showcase.draws(hull)), [], this.images, false);
+    } else {
+      this.art.draw(viewProjection, view, renderer.hulls, this.sprites, this.images);
+    }
     renderer.draw();
   }
 
@@ -253,6 +279,10 @@ export class Playground extends EventTarget {
 
   /** Sweeps spotlights back and forth and walks the walkers round their loops. */
   private step(dt: number): void {
+    if (this._showcaseActive) {
+      this.showcase.step(dt);
+      return;
+    }
     const t = this.time;
     // Adding the derivative of a sine keeps each spotlight swinging around its own rotation.
     const turn = SWEEP * 0.6 * Math.cos(t * 0.6) * dt;

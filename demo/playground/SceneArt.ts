@@ -17,9 +17,15 @@ const FRAGMENT_SHADER = `#version 300 es
 precision mediump float;
 in vec2 v_uv;
 uniform sampler2D u_texture;
-out vec4 outColor;
+// With a renderer made with { normals: true }, the scene target also has a normal and a material
+// attachment: zeros there (coverage 0) light these pixels as without normals. Without, they are dropped.
+layout(location = 0) out vec4 outColor;
+layout(location = 1) out vec4 outNormal;
+layout(location = 2) out vec4 outMaterial;
 void main() {
   outColor = texture(u_texture, v_uv);
+  outNormal = vec4(0.0);
+  outMaterial = vec4(0.0);
 }`;
 
 /** World units per repetition of the floor and stone textures. */
@@ -95,16 +101,19 @@ export class SceneArt {
   /**
    * Draws the scene into the bound framebuffer, which must have a stencil buffer (the renderer's
    * scene target has one and clears it in `beginDraw`). `view` is the visible world rectangle.
+   * `floor`: false to draw over a floor already drawn (the showcase's).
    */
-  draw(viewProjection: mat4, view: Float32Array, hulls: readonly Hull[], sprites: readonly Sprite[], images: readonly ImageSprite[] = []): void {
+  draw(viewProjection: mat4, view: Float32Array, hulls: readonly Hull[], sprites: readonly Sprite[], images: readonly ImageSprite[] = [], floor = true): void {
     const gl = this.gl;
     gl.useProgram(this.program);
     gl.uniformMatrix4fv(this.viewProjectionLocation, false, viewProjection);
     gl.bindVertexArray(this.vao);
     gl.activeTexture(gl.TEXTURE0);
 
-    this.pushWorldRect(view, FLOOR_TILE);
-    this.flush(this.textures.floor);
+    if (floor) {
+      this.pushWorldRect(view, FLOOR_TILE);
+      this.flush(this.textures.floor);
+    }
 
     // Hull tops: every hull's triangle fan inverts the stencil (even-odd), then one stone quad
     // over the view is drawn where the stencil is odd.

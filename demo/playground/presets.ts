@@ -1,4 +1,5 @@
 import type { SceneDocument, SceneHull, SceneLight, SceneLightBase } from 'penumbra-gl';
+import { buildLevel } from './showcase/level';
 import { seededRandom } from './textures';
 
 type Point = [number, number];
@@ -30,7 +31,7 @@ function light(position: Point, fields: Partial<SceneLightBase> = {}): SceneLigh
   return {
     position, range: 300, radius: 10, color: [1, 1, 1], intensity: 1, rotation: 0, origin: [0.5, 0.5],
     shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [],
-    shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, falloff: 'linear', ...fields,
+    shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, falloff: 'linear', height: null, ...fields,
   };
 }
 
@@ -101,8 +102,12 @@ function stress(): SceneDocument {
   return scene([0.05, 0.05, 0.05], [width / 2, height / 2], 0.25, hulls, lights);
 }
 
+/** The preset drawn with the showcase's own art (normal-mapped level, flicker, day and night): the first view. */
+export const SHOWCASE_PRESET = 'Showcase';
+
 /** The presets by name, in menu order; the first is the default level. */
 export const PRESETS: Readonly<Record<string, () => SceneDocument>> = {
+  [SHOWCASE_PRESET]: () => buildLevel().document,
   Dungeon: dungeon,
   'Penumbra lab': penumbraLab,
   Stage: stage,

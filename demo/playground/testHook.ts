@@ -45,6 +45,12 @@ export interface PlaygroundTestHook {
   traceStatus(): string;
   /** Draws a frame now and returns the gizmo overlay's alpha (0..255) at a CSS pixel point. */
   overlayAlpha(x: number, y: number): number;
+  /** Puts the view's centre on a world point at a zoom (CSS pixels per world unit). */
+  setCamera(x: number, y: number, zoom: number): void;
+  /** Changes light `index` (the renderer's order): enabled, position (lights with one), intensity. */
+  setLight(index: number, fields: { enabled?: boolean; position?: [number, number]; intensity?: number }): void;
+  /** Whether the scene is the showcase level, and its daylight (0 night, 1 noon). */
+  showcase(): { active: boolean; daylight: number };
 }
 
 /** Dependencies of the test hook. */
@@ -110,5 +116,17 @@ export function installTestHook(parts: TestHookParts): void {
       const scale = parts.gizmos.width / playground.camera.width;
       return parts.gizmos.getContext('2d')!.getImageData(Math.floor(x * scale), Math.floor(y * scale), 1, 1).data[3];
     },
+    setCamera(x, y, zoom) {
+      playground.camera.center[0] = x;
+      playground.camera.center[1] = y;
+      playground.camera.zoom = zoom;
+    },
+    setLight(index, { enabled, position, intensity }) {
+      const light = playground.renderer.lights[index];
+      if (enabled !== undefined) light.enabled = enabled;
+      if (position) light.setPosition(...position);
+      if (intensity !== undefined) light.intensity = intensity;
+    },
+    showcase: () => ({ active: playground.showcaseActive, daylight: playground.showcase.daylight }),
   };
 }
