@@ -3,6 +3,7 @@
 // and the prop's frame beside it.
 import type { SpotlightOptions } from 'penumbra-gl';
 import { PROP_SIZE, TILE_SIZE, propImage } from '../examples/level';
+import { brickNormals, propNormals } from '../examples/normalMaps';
 
 /** The player's flashlight (placed and aimed every frame). */
 export const FLASHLIGHT: Readonly<SpotlightOptions> = {
@@ -42,5 +43,19 @@ export function drawArt(): HTMLCanvasElement {
     context.fillRect(x, y, w, half - 2);
   }
   context.putImageData(propImage(), PROP_CUT[0], PROP_CUT[1]);
+  return canvas;
+}
+
+/** The art's normal map, laid out as the art: the wall tile's bevelled bricks and the prop's dome (its data source in Phaser). */
+export function drawArtNormals(): HTMLCanvasElement {
+  const canvas = document.createElement('canvas');
+  canvas.width = PROP_CUT[0] + PROP_SIZE;
+  canvas.height = PROP_SIZE;
+  const context = canvas.getContext('2d')!;
+  // Flat (facing the viewer) where nothing is drawn.
+  context.fillStyle = 'rgb(128, 128, 255)';
+  context.fillRect(0, 0, canvas.width, canvas.height);
+  context.putImageData(brickNormals(), 0, 0);
+  context.putImageData(propNormals(), PROP_CUT[0], PROP_CUT[1]);
   return canvas;
 }

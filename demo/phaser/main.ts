@@ -2,7 +2,8 @@
 // through a tilemap's walls that cast soft shadows, past a spinning prop whose shadow is traced
 // from its sprite's alpha, with a few lamps; the wheel zooms. The player is in a lit group of its
 // own, lit by its own torch only; the lamps' bulbs and a sign glow above the lighting layer (unlit,
-// following the camera); the HUD is above it all.
+// following the camera); the HUD is above it all. The prop is lit through its normal map (a dome, made in code),
+// Phaser's own: its texture's data source.
 import Phaser from 'phaser';
 import { DEFAULT_LAYER_DEPTH, PenumbraPlugin, PointLight, Spotlight } from 'penumbra-gl/phaser';
 import {
@@ -12,7 +13,7 @@ import {
 } from '../examples/level';
 import { installGroupCheck } from './groupCheck';
 import { installOccluderCheck } from './occluderCheck';
-import { ART_KEY, FLASHLIGHT, PROP_CUT, PROP_FRAME, PROP_TRIMMED_WIDTH, WALL_TILE, drawArt } from './content';
+import { ART_KEY, FLASHLIGHT, PROP_CUT, PROP_FRAME, PROP_TRIMMED_WIDTH, WALL_TILE, drawArt, drawArtNormals } from './content';
 
 class LevelScene extends Phaser.Scene {
   declare penumbra: PenumbraPlugin;
@@ -38,7 +39,9 @@ class LevelScene extends Phaser.Scene {
       }
     }
     // The art: one texture drawn in code, the wall tile and the prop's frame (a trimmed crop of it).
+    // Its normal map goes in as Phaser keeps one (what this.load.image(key, [url, normalUrl]) does).
     const art = this.textures.addCanvas(ART_KEY, drawArt())!;
+    art.setDataSource(drawArtNormals());
     const [propWidth, propHeight] = [art.source[0].width - PROP_CUT[0], art.source[0].height - PROP_CUT[1]];
     art.add(PROP_FRAME, 0, PROP_CUT[0], PROP_CUT[1], propWidth, propHeight)!.setTrim(PROP_TRIMMED_WIDTH, propHeight, 0, 0, propWidth, propHeight);
 
@@ -51,6 +54,7 @@ class LevelScene extends Phaser.Scene {
     // The prop: its shadow is traced from its frame's alpha and follows it (turning about the frame's centre).
     this.prop = this.add.sprite(PROP_POSITION[0], PROP_POSITION[1], ART_KEY, PROP_FRAME);
     this.penumbra.addSprite(this.prop);
+    this.penumbra.setMaterial(this.prop, { specular: 0.6, shininess: 40 });
     // The level is lit by the lights of WORLD_LAYER.
     this.penumbra.layers = WORLD_LAYER;
     for (const lamp of LAMPS) {
@@ -153,5 +157,5 @@ new Phaser.Game({
   backgroundColor: '#000000',
   scene: LevelScene,
   // Renderer options go in the plugin entry's data (or to this.penumbra.configure() in a scene).
-  plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra', data: { ambientColor: AMBIENT_COLOR } }] },
+  plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra', data: { ambientColor: AMBIENT_COLOR, normals: true } }] },
 });

@@ -3,6 +3,7 @@
 // from its sprite's alpha, with a few lamps; the wheel zooms. The player is drawn in a lit group
 // of its own, lit by its own torch only; the lamps' bulbs and a sign glow, drawn after the
 // lighting in the camera's container (unlit, following the camera); the HUD is drawn after it all.
+// The wall tiles (bevelled bricks) and the prop (a dome) are lit through normal maps made in code.
 import { Application, Container, Graphics, Rectangle, Sprite, Text, Texture, type WebGLRenderer } from 'pixi.js';
 import { PenumbraGroup, PenumbraLayer, PointLight, Spotlight, TileHulls } from 'penumbra-gl/pixi';
 import {
@@ -10,6 +11,7 @@ import {
   PROP_SIZE, PROP_SPIN, SIGN, SIGN_COLOR, TILE_SIZE, WORLD_HEIGHT, WORLD_LAYER, WORLD_WIDTH, canvasSize, followPlayer,
   levelTiles, moveWithCollisions, propImage, readPixels, waitFrames, zoomFactorAfterWheel,
 } from '../examples/level';
+import { bricks, brickNormals, propNormals } from '../examples/normalMaps';
 import { exposeGroupCheck } from './groupCheck';
 import { exposeOccluderCheck } from './occluderCheck';
 
@@ -22,18 +24,24 @@ document.body.appendChild(app.canvas);
 // lighting layer inside it lights what is drawn before it (the level) with the lights of WORLD_LAYER.
 const world = new Container();
 world.addChild(drawFloor());
-const lighting = new PenumbraLayer(app.renderer, { camera: world, ambientColor: AMBIENT_COLOR, layers: WORLD_LAYER });
+// normals: true lets it light sprites through the normal maps given with setSurface.
+const lighting = new PenumbraLayer(app.renderer, { camera: world, ambientColor: AMBIENT_COLOR, layers: WORLD_LAYER, normals: true });
 
-// The walls: a tile map, drawn as rectangles, whose hulls cover its solid tiles (a few large hulls).
+// The walls: a tile map, drawn as brick sprites, whose hulls cover its solid tiles (a few large hulls).
+// Every sprite drawn from the brick texture's source is lit through the bricks' normal map.
 const tiles = new TileHulls(levelTiles(), { tileSize: TILE_SIZE });
 for (const hull of tiles.hulls) lighting.addHull(hull);
-const walls = world.addChild(new Graphics());
+const brickTexture = Texture.from(brickCanvas());
+lighting.setSurface(brickTexture.source, { normalMap: Texture.from(canvasOf(brickNormals())), specular: 0.15, shininess: 16 });
+const walls = world.addChild(new Container());
 drawWalls();
 
 // The prop: a sprite whose shadow is traced from its texture's alpha, and follows it as it turns.
-const prop = world.addChild(new Sprite({ texture: propTexture(), anchor: 0.5 }));
+const prop = world.addChild(new Sprite({ texture: propTexture(propImage()), anchor: 0.5 }));
 prop.position.set(PROP_POSITION[0], PROP_POSITION[1]);
 lighting.addOccluder(prop);
+// Its normal map, laid out as its atlas: a dome, with a glossy highlight.
+lighting.setSurface(prop, { normalMap: propTexture(propNormals()), specular: 0.6, shininess: 40 });
 let propSpinning = true;
 
 for (const lamp of LAMPS) {
@@ -89,32 +97,46 @@ function update(seconds: number): void {
 }
 app.ticker.add((ticker) => update(Math.min(ticker.deltaMS, 50) / 1000));
 
-/** Redraws the wall tiles, one rectangle per run of solid tiles in a row. */
+/** Redraws the wall tiles, one brick sprite per solid tile. */
 function drawWalls(): void {
-  walls.clear();
+  walls.removeChildren().forEach((sprite) => sprite.destroy());
   for (let y = 0; y < tiles.height; y++) {
     for (let x = 0; x < tiles.width; x++) {
-      if (!tiles.isSolid(x, y)) continue;
-      const start = x;
-      while (x + 1 < tiles.width && tiles.isSolid(x + 1, y)) x++;
-      walls.rect(start * TILE_SIZE, y * TILE_SIZE, (x + 1 - start) * TILE_SIZE, TILE_SIZE);
+      if (tiles.isSolid(x, y)) walls.addChild(new Sprite({ texture: brickTexture, position: { x: x * TILE_SIZE, y: y * TILE_SIZE } }));
     }
   }
-  walls.fill(0x8a7f72);
+}
+
+/** The wall tile: mortar, then the bricks. */
+function brickCanvas(): HTMLCanvasElement {
+  const canvas = Object.assign(document.createElement('canvas'), { width: TILE_SIZE, height: TILE_SIZE });
+  const context = canvas.getContext('2d')!;
+  context.fillStyle = '#5f574e';
+  context.fillRect(0, 0, TILE_SIZE, TILE_SIZE);
+  context.fillStyle = '#8a7f72';
+  for (const [x, y, w, h] of bricks()) context.fillRect(x, y, w, h);
+  return canvas;
+}
+
+function canvasOf(image: ImageData): HTMLCanvasElement {
+  const canvas = Object.assign(document.createElement('canvas'), { width: image.width, height: image.height });
+  canvas.getContext('2d')!.putImageData(image, 0, 0);
+  return canvas;
 }
 
 /**
  * The prop's texture: a frame of a small atlas canvas, as a sprite sheet would give it, trimmed of
  * the image's transparent border (`trim` places it within the image's original size, so the
  * anchor is still the image's centre). The atlas holds other pixels beside it that must not cast.
+ * Made from the prop's image, or from its normal map, which is laid out as the image.
  */
-function propTexture(): Texture {
+function propTexture(image: ImageData): Texture {
   const [left, top, width, height] = [2, 1, 44, 42];  // the opaque part of the prop's image
   const atlas = Object.assign(document.createElement('canvas'), { width: 64, height: 64 });
   const context = atlas.getContext('2d')!;
   context.fillStyle = '#5a4a3a';
   context.fillRect(0, 0, 12, 64);  // another sprite's pixels
-  context.putImageData(propImage(), 16 - left, 8 - top, left, top, width, height);
+  context.putImageData(image, 16 - left, 8 - top, left, top, width, height);
   return new Texture({
     source: Texture.from(atlas).source,
     frame: new Rectangle(16, 8, width, height),
