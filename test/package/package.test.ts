@@ -15,7 +15,7 @@ import { serveDirectory, type StaticServer } from '../browser/staticServer';
 import { REPO, createApp, indexHtml, pack, readmeSnippets, run, runAsync, viteTsconfig, type Packed } from './scratchProject';
 
 /** The README's snippets that run in a browser, each built as its own page. */
-const PAGES = ['plain', 'occluders', 'pixi', 'phaser'] as const;
+const PAGES = ['plain', 'occluders', 'normals', 'pixi', 'phaser'] as const;
 
 /** Imports bundled on their own, with the most each may weigh (minified, gl-matrix included where used). */
 const IMPORTS = [
