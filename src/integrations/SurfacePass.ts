@@ -109,6 +109,11 @@ void main() {
  * {@link SurfacePass.render}. Its GL objects (program, buffer, vertex array, targets) are made on the
  * first frame that has a normal-mapped sprite; the instance array grows (doubling) only past the
  * most sprites seen; the targets are resized only when the viewport's size changes.
+ *
+ * Context loss, as the core renderer: while `gl.isContextLost()` is true (also in the window before
+ * the `webglcontextlost` event) {@link SurfacePass.render} draws nothing and returns null; the lost
+ * event drops the GL objects, which were the lost context's, and the first frame with a
+ * normal-mapped sprite after the restore makes them again. The engines restore their own textures.
  */
 export class SurfacePass {
   private program: Program | null = null;
@@ -127,9 +132,13 @@ export class SurfacePass {
   private hasNormals = false;
   private readonly surfaces: SurfaceTextures = { normals: null!, material: null, flipY: false };
   private readonly frame = new Float32Array(3);
+  private readonly canvas: EventTarget | null;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
     this.hostState = new HostState(gl, NORMAL_UNIT + 1);
+    const canvas = (gl as { canvas?: unknown }).canvas as EventTarget | undefined;
+    this.canvas = canvas && typeof canvas.addEventListener === 'function' ? canvas : null;
+    this.canvas?.addEventListener('webglcontextlost', this.onContextLost);
   }
 
   /** Starts a frame's list of quads. */
@@ -172,8 +181,8 @@ export class SurfacePass {
    * then the frame is lit as without normals, and nothing was drawn.
    */
   render(width: number, height: number, pixelWidth: number, pixelHeight: number, flipY: boolean): SurfaceTextures | null {
-    if (!this.hasNormals) return null;
     const gl = this.gl;
+    if (!this.hasNormals || gl.isContextLost()) return null;
     const host = this.hostState;
     host.save();
     try {
@@ -222,17 +231,32 @@ export class SurfacePass {
     return surfaces;
   }
 
-  /** Frees the GL objects; safe to call twice. */
+  /** Frees the GL objects; safe to call twice, and while the context is lost. */
   dispose(): void {
+    this.canvas?.removeEventListener('webglcontextlost', this.onContextLost);
     const gl = this.gl;
-    if (this.program) gl.deleteProgram(this.program.handle);
-    gl.deleteBuffer(this.buffer);
-    gl.deleteVertexArray(this.vertexArray);
-    this.target?.dispose();
+    if (!gl.isContextLost()) {
+      if (this.program) gl.deleteProgram(this.program.handle);
+      gl.deleteBuffer(this.buffer);
+      gl.deleteVertexArray(this.vertexArray);
+      this.target?.dispose();
+    }
+    this.forgetObjects();
+  }
+
+  /** The lost context took the GL objects with it: forget them, to be made again on the restored context. */
+  private readonly onContextLost = (): void => {
+    this.forgetObjects();
+  };
+
+  private forgetObjects(): void {
     this.program = null;
     this.buffer = null;
     this.vertexArray = null;
     this.target = null;
+    // The last frame's batches name textures of the lost context.
+    this.begin();
+    this.batchColors.length = this.batchNormals.length = 0;
   }
 
   private startBatch(color: WebGLTexture | null, normals: WebGLTexture | null): void {

@@ -44,6 +44,21 @@ export interface EngineNormalsPage {
   read(engine: Engine, state: NormalsState, points: [number, number][]): Promise<[number, number, number, number][]>;
   /** GL objects made while rendering `frames` frames of the current state. */
   created(engine: Engine, frames: number): Promise<Created>;
+  /**
+   * Renders `state` and reads `points`, loses the context (WEBGL_lose_context), renders frames in
+   * the window before the lost event and while lost, restores it, renders and reads again.
+   */
+  acrossContextLoss(engine: Engine, state: NormalsState, points: [number, number][]): Promise<ContextLossReport>;
+}
+
+/** What {@link EngineNormalsPage.acrossContextLoss} saw. */
+export interface ContextLossReport {
+  before: [number, number, number, number][];
+  after: [number, number, number, number][];
+  /** Errors thrown by frames rendered while the context was lost, each with when. */
+  lostFrameErrors: string[];
+  /** GL errors (getError) after the first frame of the restored context, other than none. */
+  glErrors: number[];
 }
 
 declare global {

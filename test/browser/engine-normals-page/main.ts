@@ -127,6 +127,22 @@ async function phaserScene(): Promise<Scene> {
   };
 }
 
+/** The next `type` event of `canvas`; fails after 10 s. */
+function nextEvent(canvas: HTMLCanvasElement, type: string): Promise<void> {
+  return new Promise((done, fail) => {
+    const timer = setTimeout(() => fail(new Error(`no ${type} event within 10 s`)), 10_000);
+    canvas.addEventListener(type, () => {
+      clearTimeout(timer);
+      done();
+    }, { once: true });
+  });
+}
+
+/** Resolves after the event being dispatched has reached every listener (a promise continuation runs inside the dispatch). */
+function afterDispatch(): Promise<void> {
+  return new Promise((done) => setTimeout(done, 0));
+}
+
 const scenes: Partial<Record<Engine, Promise<Scene>>> = {};
 function sceneOf(engine: Engine): Promise<Scene> {
   return (scenes[engine] ??= engine === 'pixi' ? pixiScene() : phaserScene());
@@ -145,5 +161,39 @@ window.engineNormals = {
     return countCreated(scene.gl, () => {
       for (let i = 0; i < frames; i++) scene.render();
     });
+  },
+  async acrossContextLoss(engine, state, points) {
+    const scene = await sceneOf(engine);
+    const gl = scene.gl, canvas = gl.canvas as HTMLCanvasElement;
+    const loseContext = gl.getExtension('WEBGL_lose_context');
+    if (!loseContext) throw new Error('WEBGL_lose_context is not available');
+    scene.apply(state);
+    scene.render();
+    const before = readPixels(gl, points);
+    const lostFrameErrors: string[] = [];
+    const frame = (when: string): void => {
+      try {
+        scene.render();
+      } catch (error) {
+        lostFrameErrors.push(`${when}: ${String(error)}`);
+      }
+    };
+    const lost = nextEvent(canvas, 'webglcontextlost');
+    loseContext.loseContext();
+    frame('before the lost event');
+    await lost;
+    await afterDispatch();
+    frame('lost');
+    frame('lost, again');
+    const restored = nextEvent(canvas, 'webglcontextrestored');
+    loseContext.restoreContext();
+    await restored;
+    await afterDispatch();
+    while (gl.getError() !== gl.NO_ERROR);
+    scene.render();
+    const glErrors: number[] = [];
+    for (let error = gl.getError(); error !== gl.NO_ERROR; error = gl.getError()) glErrors.push(error);
+    const after = readPixels(gl, points);
+    return { before, after, lostFrameErrors, glErrors };
   },
 };
