@@ -4,7 +4,7 @@ import { hullLocalToWorld, hullWorldPoint } from '../hullShape';
 import { ATLAS_SIZE, CELLS, FLAME_FRAMES, flameCell, floorImage, grassImage, propsImage, wallFaceImage, wallImage, type Cell } from './art';
 import { buildLevel, DAY, FLOOR_TOP, LEVEL_HEIGHT, LEVEL_WIDTH, NIGHT, type Decor, type HullRole, type LightRole } from './level';
 import { SurfaceBatch, type SurfaceTextures } from './SurfaceBatch';
-import { noise } from './surfaceImage';
+import { hash, noise } from './surfaceImage';
 
 /** World units per repetition of the tiling textures. */
 const FLOOR_REPEAT = 256, WALL_REPEAT = 96, GRASS_REPEAT = 192;
@@ -12,6 +12,8 @@ const FLOOR_REPEAT = 256, WALL_REPEAT = 96, GRASS_REPEAT = 192;
 const WALL_SHADE = 30;
 /** How far a wall's south face reaches down the view (the 3/4 view's depth), world units; and its texture's repeat across. */
 const FACE = 26, FACE_REPEAT = 96;
+/** Stains scattered on the floor (shadow decals), which break up the floor texture's repeats: count, from a fixed seed. */
+const STAINS = 26;
 /** Embers around the brazier: count, and how far out they drift. */
 const EMBERS = 14, EMBER_REACH = 34;
 
@@ -152,11 +154,17 @@ export class Showcase {
     const batch = this.batch;
     batch.begin(viewProjection);
     const [x0, y0, x1, y1] = view;
-    this.tiled(x0, y0, x1, y1, GRASS_REPEAT);
+    // Grass around the level (not under it: SwiftShader pays for every layer), the floor inside.
+    const fx0 = Math.max(x0, 0), fy0 = Math.max(y0, FLOOR_TOP), fx1 = Math.min(x1, LEVEL_WIDTH), fy1 = Math.min(y1, LEVEL_HEIGHT);
+    this.tiled(x0, y0, x1, Math.min(y1, fy0), GRASS_REPEAT);
+    this.tiled(x0, Math.max(y0, fy1), x1, y1, GRASS_REPEAT);
+    this.tiled(x0, fy0, Math.min(x1, fx0), fy1, GRASS_REPEAT);
+    this.tiled(Math.max(x0, fx1), fy0, x1, fy1, GRASS_REPEAT);
     batch.flush(this.textures.grass);
-    this.tiled(Math.max(x0, 0), Math.max(y0, FLOOR_TOP), Math.min(x1, LEVEL_WIDTH), Math.min(y1, LEVEL_HEIGHT), FLOOR_REPEAT);
+    this.tiled(fx0, fy0, fx1, fy1, FLOOR_REPEAT);
     batch.flush(this.textures.floor);
 
+    this.stains();
     for (const decor of this.level.decor) if (decor.kind === 'rug') this.decor(decor);
     for (const light of lights) if (this.lightRoles.get(light)?.kind === 'runes') this.sprite(CELLS.runes, light.position[0], light.position[1], 0, 1, 0.6 + 0.4 * this.flickerOf(light));
     for (const hull of hulls) {
@@ -181,7 +189,7 @@ export class Showcase {
       if (!role) continue;
       const [x, y] = light.position;
       if (role.kind === 'brazier') this.sprite(CELLS.brazier, x, y, 0);
-      else if (role.kind === 'lantern') this.sprite(CELLS.lantern, x, y, 0.2);
+      else if (role.kind === 'lantern') this.sprite(CELLS.lantern, x, y, 0);
       else if (role.kind === 'torch') {
         // The sconce's bracket reaches back to the wall.
         this.sprite(CELLS.sconce, x + Math.cos(role.facing) * 4, y + Math.sin(role.facing) * 4, role.facing + Math.PI / 2, 1.5);
@@ -309,6 +317,14 @@ export class Showcase {
 
   private decor(decor: Decor): void {
     this.sprite(decor.kind === 'rug' ? CELLS.rug : CELLS.books, decor.x, decor.y, decor.rotation, 1);
+  }
+
+  /** Faint dark stains of several sizes over the floor, the same on every frame. */
+  private stains(): void {
+    for (let i = 0; i < STAINS; i++) {
+      const x = 80 + hash(i, 1, 211) * (LEVEL_WIDTH - 160), y = FLOOR_TOP + 80 + hash(i, 2, 211) * (LEVEL_HEIGHT - FLOOR_TOP - 160);
+      this.sprite(CELLS.blob, x, y, hash(i, 3, 211) * 6.28, 1.5 + hash(i, 4, 211) * 3, 0.18 + hash(i, 5, 211) * 0.2, true);
+    }
   }
 
   /** A flame over a light, growing and shrinking with its flicker, its frame cycling. */

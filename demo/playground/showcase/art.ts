@@ -73,12 +73,14 @@ export function floorImage(): SurfaceImage {
     while (start + row.widths[index] <= rx) start += row.widths[index++];
     const w = row.widths[index];
     const lx = rx - start, ly = y - r * rowHeight;
-    const edge = Math.min(lx, w - lx, ly, rowHeight - ly);
-    const seed = r * 31 + index;
+    // Some stones are two half-height ones.
+    const split = hash(r * 31 + index, 9, 5) < 0.3;
+    const edge = Math.min(lx, w - lx, ly, rowHeight - ly, split ? Math.abs(ly - rowHeight / 2) : Infinity);
+    const seed = r * 31 + index + (split && ly > rowHeight / 2 ? 500 : 0);
     const tone = hash(seed, 3, 5), tiltX = hash(seed, 1, 7) - 0.5, tiltY = hash(seed, 2, 7) - 0.5;
     const grain = fbm(x / 16, y / 16, 16, 3);
     const pits = noise(x / 2, y / 2, 128, 9);
-    const crack = Math.abs(fbm(x / 40, y / 40, 256 / 40 | 0, 11 + seed, 3) - 0.5) < 0.008 && hash(seed, 4, 1) < 0.35;
+    const crack = Math.abs(fbm(x / 40, y / 40, 256 / 40 | 0, 11 + seed, 3) - 0.5) < 0.008 && hash(seed, 4, 1) < 0.15;
     if (edge < 2.5) {
       // Mortar: low, dark, rough.
       t.height = -1 + grain;
@@ -88,7 +90,7 @@ export function floorImage(): SurfaceImage {
     }
     const bevel = smoothstep(2, 10, edge);
     t.height = 5 * bevel + tiltX * lx * 0.04 + tiltY * ly * 0.04 + grain * 1.4 - (pits > 0.9 ? 0.8 : 0) - (crack ? 1.5 : 0);
-    const v = (0.34 + tone * 0.18) * (0.8 + grain * 0.4) * (0.78 + 0.22 * bevel) * (crack ? 0.65 : 1) * (pits > 0.9 ? 0.85 : 1);
+    const v = (0.3 + tone * 0.2) * (0.8 + grain * 0.4) * (0.78 + 0.22 * bevel) * (crack ? 0.65 : 1) * (pits > 0.9 ? 0.85 : 1);
     const warm = hash(seed, 6, 2);
     set(t, v * (1.02 + warm * 0.06), v * 0.96, v * (0.86 - warm * 0.06));
     const polished = hash(seed, 8, 3) < 0.3;
@@ -142,9 +144,9 @@ export function wallFaceImage(): SurfaceImage {
     const grain = fbm(x / 8, y / 8, 16, 29, 3);
     const joint = edge < 1.5;
     // A steep fall down the image leans every normal south; bricks stand out of the joints.
-    t.height = -2.6 * y + (joint ? -1.5 : smoothstep(1, 4, edge) * 1.5) + grain;
+    t.height = -1.5 * y + (joint ? -1.5 : smoothstep(1, 4, edge) * 1.5) + grain;
     const tone = hash(Math.floor((x + (row % 2) * (brick / 2)) / brick), row, 27);
-    const v = joint ? 0.08 : (0.17 + tone * 0.08) * (0.75 + grain * 0.5) * (1 - (y / h) * 0.35);
+    const v = joint ? 0.1 : (0.26 + tone * 0.1) * (0.75 + grain * 0.5) * (1 - (y / h) * 0.3);
     set(t, v * 1.04, v, v * 0.94);
     t.specular = 0.08;
     t.shininess = 10;

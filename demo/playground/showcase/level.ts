@@ -173,14 +173,14 @@ export function buildLevel(): Level {
   });
   lightRoles.push({ kind: 'sky' });
   for (const { at, facing } of TORCHES) {
-    lights.push({ kind: 'point', ...light(at, { range: 460, radius: 7, color: [1, 0.62, 0.3], intensity: 1.5, height: 70 }) });
+    lights.push({ kind: 'point', ...light(at, { range: 380, radius: 7, color: [1, 0.62, 0.3], intensity: 1.5, height: 70 }) });
     lightRoles.push({ kind: 'torch', facing });
   }
-  lights.push({ kind: 'point', ...light(BRAZIER, { range: 560, radius: 20, color: [1, 0.5, 0.2], intensity: 12, falloff: 'inverseSquare', height: 46 }) });
+  lights.push({ kind: 'point', ...light(BRAZIER, { range: 460, radius: 20, color: [1, 0.5, 0.2], intensity: 12, falloff: 'inverseSquare', height: 46 }) });
   lightRoles.push({ kind: 'brazier' });
-  lights.push({ kind: 'point', ...light(RUNES, { range: 300, radius: 30, color: [0.3, 0.75, 1], intensity: 0.9, height: 16 }) });
+  lights.push({ kind: 'point', ...light(RUNES, { range: 240, radius: 30, color: [0.3, 0.75, 1], intensity: 0.9, height: 16 }) });
   lightRoles.push({ kind: 'runes' });
-  lights.push({ kind: 'point', ...light(LANTERN, { range: 240, radius: 4, color: [1, 0.8, 0.45], intensity: 1, ignoredHulls: [table], height: 40 }) });
+  lights.push({ kind: 'point', ...light(LANTERN, { range: 200, radius: 4, color: [1, 0.8, 0.45], intensity: 1, ignoredHulls: [table], height: 40 }) });
   lightRoles.push({ kind: 'lantern' });
 
   const document: SceneDocument = {
