@@ -4,7 +4,7 @@ import * as current from '../src/index';
 /**
  * The part of penumbra-gl's public API the bench uses, and that every renderer it compares has
  * (the working tree's and the baseline built from a git ref, see bench/build.mjs). Kept to
- * PenumbraRenderer, PointLight, Spotlight, TexturedLight, Hull (and DirectionalLight where it exists) and the members below, so that
+ * PenumbraRenderer, PointLight, Spotlight, TexturedLight, Hull (and DirectionalLight and SURFACE_GLSL where they exist) and the members below, so that
  * an older or newer core fits without the bench knowing its internals.
  */
 export interface RendererLibrary {
@@ -15,6 +15,8 @@ export interface RendererLibrary {
   Hull: new (points: readonly (readonly [number, number])[], options?: { position?: readonly [number, number]; rotation?: number }) => BenchHull;
   /** Absent before the directional light existed: the scenes with a sun then leave that library out. */
   DirectionalLight?: new (options: { rotation?: number; angularSize?: number; color?: readonly [number, number, number]; intensity?: number }) => BenchLight;
+  /** The host's surface helpers, absent before normal-mapped lighting: the scenes with normals then leave that library out. */
+  SURFACE_GLSL?: string;
 }
 
 export interface BenchRendererOptions {
@@ -23,6 +25,8 @@ export interface BenchRendererOptions {
   height?: number;
   viewProjection?: ReadonlyMat4 | null;
   lightmapScale?: number;
+  /** Light through the scene's normals (absent before normal-mapped lighting; see `SURFACE_GLSL`). */
+  normals?: boolean;
 }
 
 export interface BenchRenderer {

@@ -1,7 +1,9 @@
 // The benchmark runner (built and started by bench/run.mjs): Node CPU figures on headless-gl, then
 // whole-frame and fill-floor times in Chromium, each for the working tree's renderer ("new") and the
 // baseline built from a git ref ("old", bench/build.mjs) in the same run; prints a table with a
-// new ÷ old row per scene and writes bench/results/latest.json.
+// new ÷ old row per scene (and for each normal-mapped scene a row comparing it with the same scene
+// without normals, timed in turns with it) and writes bench/results/latest.json. Normal-mapped
+// scenes run in Chromium only (headless-gl cannot draw into several attachments).
 import { library as baselineLibrary, baseline } from 'virtual:penumbra-baseline';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { cpus } from 'node:os';
@@ -11,7 +13,7 @@ import { serveDirectory } from '../test/browser/staticServer';
 import { runCpu, type CpuResult } from './cpu';
 import { EXTRA_STATS, extraStatCells, type ExtraStats } from './extraStats';
 import { CURRENT } from './library';
-import { runsOn, SCENES } from './scenes';
+import { runsOn, runsOnHeadlessGl, SCENES } from './scenes';
 import { summarize, type Summary } from './stats';
 import { printTable, ratioCell } from './table';
 import type { BenchPage } from './page/main';
@@ -29,6 +31,10 @@ interface BrowserSide {
 
 interface BrowserResult {
   floor: Summary;
+  /** In a normal-mapped scene: the working tree renderer's frames on the same scene without normals, timed in turns with its own. */
+  withoutNormals?: Summary;
+  /** Median over the frames of frame ÷ the frame without normals timed in the same turn (robust to the load drifting between turns). */
+  normalsRatio?: number;
   current: BrowserSide;
   baseline?: BrowserSide;
   /** With --bounds: median frames with trivial shadow shading (null: no such stages) and with no hulls, ÷ median floor (see bench/page/bounds.ts). */
@@ -59,10 +65,16 @@ const root = process.cwd();
 /** Frames run in Chromium before the measured ones. */
 const BROWSER_WARMUP = 2;
 const oldName = baseline ? `old ${baseline.ref}` : 'old';
+/** What a normal-mapped scene may cost against the same scene without normals (issue 17). */
+const NORMALS_TARGET = 1.3;
 
 const results: SceneResult[] = scenes.map((spec) => ({ scene: spec.name, lights: spec.lights, hulls: spec.hulls + spec.farHulls }));
 if (!args.has('no-node')) {
   for (const [i, spec] of scenes.entries()) {
+    if (!runsOnHeadlessGl(spec)) {
+      process.stderr.write(`node ${spec.name}: skipped (normals need several colour attachments, which headless-gl cannot draw into)\n`);
+      continue;
+    }
     const contenders = [['new', CURRENT], ...(baselineLibrary && runsOn(spec, baselineLibrary) ? [[oldName, baselineLibrary] as const] : [])] as const;
     const measured: CpuResult[] = [];
     for (const [name, library] of contenders) {
@@ -87,13 +99,18 @@ if (!args.has('no-browser')) {
       await page.waitForFunction('window.penumbraBench');
       // Evaluated in the page: each function must name the page's API itself.
       await page.evaluate((name, scale, bounds) => (window as unknown as Window).penumbraBench.setup(name, scale, bounds), spec.name, lightmapScale, withBounds);
-      const times = { frame: [] as number[], baseline: [] as number[], floor: [] as number[], trivialShading: [] as number[], noHulls: [] as number[] };
+      const normalsRatios: number[] = [];
+      const times = { frame: [] as number[], baseline: [] as number[], withoutNormals: [] as number[], floor: [] as number[], trivialShading: [] as number[], noHulls: [] as number[] };
       for (let frame = 0; frame < BROWSER_WARMUP + browserFrames; frame++) {
         const measured = await page.evaluate(() => (window as unknown as Window).penumbraBench.frame());
         if (frame < BROWSER_WARMUP) continue;
         times.frame.push(measured.frame);
         times.floor.push(measured.floor);
         if (measured.baseline !== undefined) times.baseline.push(measured.baseline);
+        if (measured.withoutNormals !== undefined) {
+          times.withoutNormals.push(measured.withoutNormals);
+          normalsRatios.push(measured.frame / measured.withoutNormals);
+        }
         if (measured.trivialShading !== undefined) times.trivialShading.push(measured.trivialShading);
         if (measured.noHulls !== undefined) times.noHulls.push(measured.noHulls);
       }
@@ -107,12 +124,17 @@ if (!args.has('no-browser')) {
       };
       const result: BrowserResult = { floor, current: side(times.frame), extra };
       if (times.baseline.length > 0) result.baseline = side(times.baseline);
+      if (times.withoutNormals.length > 0) {
+        result.withoutNormals = summarize(times.withoutNormals);
+        result.normalsRatio = summarize(normalsRatios).median;
+      }
       if (withBounds) {
         const ofFloor = (samples: number[]) => summarize(samples).median / floor.median;
         result.bounds = { trivialShading: times.trivialShading.length > 0 ? ofFloor(times.trivialShading) : null, noHulls: ofFloor(times.noHulls) };
       }
       results[i].browser = result;
-      const oldFrame = result.baseline ? `, ${oldName} ${result.baseline.frame.median.toFixed(1)} ms` : '';
+      const oldFrame = (result.baseline ? `, ${oldName} ${result.baseline.frame.median.toFixed(1)} ms` : '')
+        + (result.withoutNormals ? `, without normals ${result.withoutNormals.median.toFixed(1)} ms` : '');
       process.stderr.write(`  frame ${result.current.frame.median.toFixed(1)} ms${oldFrame}, floor ${floor.median.toFixed(1)} ms\n`);
     }
   } finally {
@@ -161,6 +183,7 @@ function report(rows: SceneResult[], machine: string): void {
   const bounds = (row: SceneResult) => (withBounds ? [row.browser?.bounds?.trivialShading?.toFixed(2) ?? '–', row.browser?.bounds?.noHulls.toFixed(2) ?? '–'] : []);
   const blankBounds = withBounds ? ['', ''] : [];
   const verdicts: string[] = [];
+  const normalsVerdicts: string[] = [];
   for (const row of rows) {
     const node = row.node?.current, oldNode = row.node?.baseline;
     const browser = row.browser?.current, oldBrowser = row.browser?.baseline;
@@ -176,6 +199,19 @@ function report(rows: SceneResult[], machine: string): void {
       pair(browser?.frame), pair(row.browser?.floor), browser ? browser.ratio.toFixed(2) : '–', ...bounds(row),
       ...extraStatCells(extra),
     ]);
+    const plain = row.browser?.withoutNormals;
+    if (plain && browser) {
+      // The same scene without normals, timed in turns with this one: what lighting through normals costs on top.
+      const plainName = SCENES.find((spec) => spec.name === row.scene)?.normalsOf ?? '';
+      table.push([row.scene, `${plainName} (no normals)`, String(row.lights), String(row.hulls), '–', '–', '–', '–', '–', '–',
+        pair(plain), pair(row.browser?.floor), ratioCell(plain.median, row.browser?.floor.median), ...blankBounds, ...EXTRA_STATS.map(() => '')]);
+      table.push([
+        row.scene, `normals ÷ none`, '', '', '', '', '', '', '', '',
+        ratioCell(browser.frame.median, plain.median), '', '', ...blankBounds,
+        ...EXTRA_STATS.map(() => ''),
+      ]);
+      normalsVerdicts.push(`${row.scene} ${row.browser?.normalsRatio?.toFixed(2)} (ratio of medians ${ratioCell(browser.frame.median, plain.median)})`);
+    }
     if (!baselineLibrary) continue;
     table.push([
       row.scene, oldName, String(row.lights), String(row.hulls), ...nodeCells(oldNode),
@@ -195,6 +231,9 @@ function report(rows: SceneResult[], machine: string): void {
   if (verdicts.length > 0) {
     const slower = rows.filter((row) => row.browser?.baseline && row.browser.current.frame.median > row.browser.baseline.frame.median).map((row) => row.scene);
     console.log(`\nchromium frame new ÷ old (median): ${verdicts.join(', ')}; ${slower.length === 0 ? 'no scene slower' : `slower: ${slower.join(', ')}`}`);
+  }
+  if (normalsVerdicts.length > 0) {
+    console.log(`\nchromium frame with normals ÷ without, each frame against the one timed in its turn (median, target ≤ ${NORMALS_TARGET}): ${normalsVerdicts.join(', ')}`);
   }
 }
 

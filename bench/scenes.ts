@@ -13,21 +13,46 @@ export interface SceneSpec {
   farHulls: number;
   /** Adds a low sun (a `DirectionalLight`) over the whole world: what it costs on top of the lights. */
   sun?: boolean;
+  /**
+   * Set on a normal-mapped variant: the name of the same scene without normals, which the table
+   * compares it to. The renderer is made with `normals: true` and the page's scene writes a normal
+   * and a material (specular on) for every pixel (bench/page/surface.ts). Chromium only: headless-gl
+   * cannot draw into several attachments.
+   */
+  normalsOf?: string;
 }
+
+/** `spec` lit through normals: the same lights and hulls, every pixel of the floor normal-mapped. */
+function withNormals(spec: SceneSpec): SceneSpec {
+  return { ...spec, name: `${spec.name}-normals`, normalsOf: spec.name };
+}
+
+const S2: SceneSpec = { name: 'S2', lights: 32, hulls: 200, farHulls: 0 };
+const S3: SceneSpec = { name: 'S3', lights: 128, hulls: 1000, farHulls: 0 };
 
 export const SCENES: readonly SceneSpec[] = [
   { name: 'S1', lights: 8, hulls: 40, farHulls: 0 },
-  { name: 'S2', lights: 32, hulls: 200, farHulls: 0 },
-  { name: 'S3', lights: 128, hulls: 1000, farHulls: 0 },
+  S2,
+  S3,
   { name: 'S3-sparse', lights: 128, hulls: 1000, farHulls: 10000 },
   { name: 'S4', lights: 512, hulls: 4000, farHulls: 0 },
   { name: 'S2-sun', lights: 32, hulls: 200, farHulls: 0, sun: true },
   { name: 'S3-sun', lights: 128, hulls: 1000, farHulls: 0, sun: true },
+  withNormals(S2),
+  withNormals(S3),
 ];
 
-/** Whether `library` can build `spec` (a sun needs its `DirectionalLight`). */
+/**
+ * Whether `library` can build `spec`: a sun needs its `DirectionalLight`, normals its
+ * `SURFACE_GLSL` (a renderer from before normals would take `normals: true` and ignore it).
+ */
 export function runsOn(spec: SceneSpec, library: RendererLibrary): boolean {
-  return !spec.sun || library.DirectionalLight !== undefined;
+  return (!spec.sun || library.DirectionalLight !== undefined) && (spec.normalsOf === undefined || library.SURFACE_GLSL !== undefined);
+}
+
+/** Whether `spec` runs on headless-gl (the Node and GPU modes): not with normals, which need several colour attachments. */
+export function runsOnHeadlessGl(spec: SceneSpec): boolean {
+  return spec.normalsOf === undefined;
 }
 
 /** Every hull whose index is a multiple of this moves or rotates each frame ("one hull in ten"). */

@@ -6,12 +6,15 @@ import { createScene, runsOn, SCENES, WORLD_HEIGHT, WORLD_WIDTH, type BenchScene
 import { createFrameBounds, disposeFrameBounds, type FrameBounds } from './bounds';
 import { measureMicroRow, type MicroRow } from './micro';
 import { measureShadowStatistics } from './statistics';
+import { SurfaceFloor } from './surface';
 
 /** Times of one frame in ms, each ended by a 1-pixel readPixels so the GPU work is included. */
 export interface FrameTimes {
   frame: number;
   /** The baseline renderer's frame on the same scene (absent without a baseline). */
   baseline?: number;
+  /** In a normal-mapped scene: the working tree renderer's frame on the same scene without normals (see BenchPage.frame). */
+  withoutNormals?: number;
   floor: number;
   /** With bounds set up: the frame with trivial shadow shading, and with no hulls (see FrameBounds). */
   trivialShading?: number;
@@ -29,24 +32,43 @@ export interface BenchPage {
   teardown(): void;
 }
 
-/** One renderer with its own copy of the scene (lights and hulls are its version's classes). */
+/**
+ * One renderer with its own copy of the scene (lights and hulls are its version's classes), and in
+ * a normal-mapped scene the floor it draws (through its version's SURFACE_GLSL).
+ */
 interface Contender {
   scene: BenchScene;
   renderer: BenchRenderer;
+  surface: SurfaceFloor | null;
 }
 
 const canvas = document.getElementById('canvas') as HTMLCanvasElement;
 const gl = canvas.getContext('webgl2', { antialias: false, preserveDrawingBuffer: false })!;
 const pixel = new Uint8Array(4);
 const floatPixel = new Float32Array(4);
-let current: { now: Contender; old: Contender | null; floor: FillFloor; bounds: FrameBounds | null; frame: number } | null = null;
+let current: {
+  now: Contender;
+  old: Contender | null;
+  /** In a normal-mapped scene: the working tree's renderer on the same scene without normals. */
+  plain: Contender | null;
+  floor: FillFloor;
+  bounds: FrameBounds | null;
+  frame: number;
+} | null = null;
 
-/** One whole frame of `renderer` (scene cleared white, lightmap, composite), in ms. */
-function timeFrame(renderer: BenchRenderer): number {
+/**
+ * One whole frame of `renderer` (scene cleared white, lightmap, composite), in ms. With `surface`
+ * (a renderer with normals) the scene is that normal-mapped floor, drawn white, instead of the clear.
+ */
+function timeFrame(renderer: BenchRenderer, surface: SurfaceFloor | null = null): number {
   const start = performance.now();
   renderer.beginDraw();
-  gl.clearColor(1, 1, 1, 1);
-  gl.clear(gl.COLOR_BUFFER_BIT);
+  if (surface) {
+    surface.render();
+  } else {
+    gl.clearColor(1, 1, 1, 1);
+    gl.clear(gl.COLOR_BUFFER_BIT);
+  }
   renderer.draw();
   gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   return performance.now() - start;
@@ -55,50 +77,58 @@ function timeFrame(renderer: BenchRenderer): number {
 function contender(library: RendererLibrary, name: string, lightmapScale: number): Contender {
   const spec = SCENES.find((scene) => scene.name === name);
   if (!spec) throw new Error(`no scene ${name}`);
+  if (spec.normalsOf !== undefined && !library.SURFACE_GLSL) throw new Error(`scene ${name} needs a renderer with normals`);
   const scene = createScene(spec, library);
-  const renderer = new library.PenumbraRenderer(gl, { ambientColor: [0.05, 0.05, 0.05], lightmapScale });
+  const normals = spec.normalsOf !== undefined;
+  const renderer = new library.PenumbraRenderer(gl, { ambientColor: [0.05, 0.05, 0.05], lightmapScale, ...(normals ? { normals } : {}) });
   for (const light of scene.lights) renderer.addLight(light);
   for (const hull of scene.hulls) renderer.addHull(hull);
-  return { scene, renderer };
+  return { scene, renderer, surface: normals ? new SurfaceFloor(gl, library.SURFACE_GLSL!) : null };
 }
 
 const page: BenchPage = {
   setup(name, lightmapScale, withBounds) {
     const now = contender(CURRENT, name, lightmapScale);
-    const old = baselineLibrary && runsOn(SCENES.find((scene) => scene.name === name)!, baselineLibrary) ? contender(baselineLibrary, name, lightmapScale) : null;
-    const bounds = withBounds ? createFrameBounds(gl, { ambientColor: [0.05, 0.05, 0.05], lightmapScale }, now.scene.lights, now.scene.hulls) : null;
-    current = { now, old, floor: new FillFloor(gl, WORLD_WIDTH, WORLD_HEIGHT), bounds, frame: 0 };
+    const spec = SCENES.find((scene) => scene.name === name)!;
+    const old = baselineLibrary && runsOn(spec, baselineLibrary) ? contender(baselineLibrary, name, lightmapScale) : null;
+    const plain = spec.normalsOf !== undefined ? contender(CURRENT, spec.normalsOf, lightmapScale) : null;
+    // The bounds' renderers light the same surface as the frame's (drawn by now.surface).
+    const options = { ambientColor: [0.05, 0.05, 0.05] as const, lightmapScale, ...(now.surface ? { normals: true } : {}) };
+    const bounds = withBounds ? createFrameBounds(gl, options, now.scene.lights, now.scene.hulls) : null;
+    current = { now, old, plain, floor: new FillFloor(gl, WORLD_WIDTH, WORLD_HEIGHT), bounds, frame: 0 };
   },
 
   /**
    * Both renderers' whole frames on the same moving scene (which goes first alternates from frame
-   * to frame), then the fill floor (and the bounds' frames).
+   * to frame), then the fill floor (and the bounds' frames). A normal-mapped scene also times the
+   * same scene without normals in the same turns, so that their ratio shares the machine's load.
    */
   frame() {
     if (!current) throw new Error('setup() first');
-    const { now, old, floor, bounds } = current;
+    const { now, old, plain, floor, bounds } = current;
     const number = current.frame++;
-    now.scene.step(number);
-    old?.scene.step(number);
-    let frame: number, baseline: number | undefined;
-    if (old && number % 2 === 1) {
-      baseline = timeFrame(old.renderer);
-      frame = timeFrame(now.renderer);
-    } else {
-      frame = timeFrame(now.renderer);
-      baseline = old ? timeFrame(old.renderer) : undefined;
+    const turns = [now, old, plain].filter((entry): entry is Contender => entry !== null);
+    for (const entry of turns) entry.scene.step(number);
+    // Which renderer goes first turns round from frame to frame.
+    const times = new Map<Contender, number>();
+    for (let k = 0; k < turns.length; k++) {
+      const entry = turns[(number + k) % turns.length];
+      times.set(entry, timeFrame(entry.renderer, entry.surface));
     }
+    const frame = times.get(now)!;
+    const baseline = old ? times.get(old) : undefined;
     const start = performance.now();
     floor.render(now.scene.lights);
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.FLOAT, floatPixel);
     const floorTime = performance.now() - start;
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    const times: FrameTimes = { frame, baseline, floor: floorTime };
+    const result: FrameTimes = { frame, baseline, floor: floorTime };
+    if (plain) result.withoutNormals = times.get(plain);
     if (bounds) {
-      times.trivialShading = bounds.trivialShading ? timeFrame(bounds.trivialShading) : undefined;
-      times.noHulls = timeFrame(bounds.noHulls);
+      result.trivialShading = bounds.trivialShading ? timeFrame(bounds.trivialShading, now.surface) : undefined;
+      result.noHulls = timeFrame(bounds.noHulls, now.surface);
     }
-    return times;
+    return result;
   },
 
   extraStats() {
@@ -116,7 +146,10 @@ const page: BenchPage = {
 
   teardown() {
     current?.now.renderer.dispose();
+    current?.now.surface?.dispose();
     current?.old?.renderer.dispose();
+    current?.old?.surface?.dispose();
+    current?.plain?.renderer.dispose();
     current?.floor.dispose();
     if (current?.bounds) disposeFrameBounds(current.bounds);
     current = null;
