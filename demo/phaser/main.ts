@@ -2,8 +2,9 @@
 // through a tilemap's walls that cast soft shadows, past a spinning prop whose shadow is traced
 // from its sprite's alpha, with a few lamps; the wheel zooms. The player is in a lit group of its
 // own, lit by its own torch only; the lamps' bulbs and a sign glow above the lighting layer (unlit,
-// following the camera); the HUD is above it all. The prop is lit through its normal map (a dome, made in code),
-// Phaser's own: its texture's data source.
+// following the camera); the HUD is above it all. The walls and the prop are lit through their normal maps
+// (bevelled bricks and a dome, made in code), Phaser's own: the art texture's data source, which the
+// tileset shares.
 import Phaser from 'phaser';
 import { DEFAULT_LAYER_DEPTH, PenumbraPlugin, PointLight, Spotlight } from 'penumbra-gl/phaser';
 import {
@@ -45,7 +46,8 @@ class LevelScene extends Phaser.Scene {
     const [propWidth, propHeight] = [art.source[0].width - PROP_CUT[0], art.source[0].height - PROP_CUT[1]];
     art.add(PROP_FRAME, 0, PROP_CUT[0], PROP_CUT[1], propWidth, propHeight)!.setTrim(PROP_TRIMMED_WIDTH, propHeight, 0, 0, propWidth, propHeight);
 
-    // The walls: a tilemap layer, whose colliding tiles cast shadows and follow putTileAt / removeTileAt.
+    // The walls: a tilemap layer, whose colliding tiles cast shadows and follow putTileAt / removeTileAt,
+    // lit through the bricks of the art's normal map (the tileset's texture).
     const map = this.make.tilemap({ data: levelTiles().map((row) => row.map((wall) => (wall ? WALL_TILE : -1))), tileWidth: TILE_SIZE, tileHeight: TILE_SIZE });
     const tileset = map.addTilesetImage(ART_KEY, ART_KEY, TILE_SIZE, TILE_SIZE)!;
     this.walls = (map.createLayer(0, tileset, 0, 0) as Phaser.Tilemaps.TilemapLayer).setCollision(WALL_TILE);

@@ -5,7 +5,7 @@ import type { Browser, Page } from 'puppeteer';
 import { build } from 'vite';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { collectPageErrors, launchChromium } from './chromium';
-import { ALBEDO, AMBIENT, ELEVATION, NORMAL_TEXEL, SPRITES, type Engine, type NormalsState } from './engine-normals-page/contract';
+import { ALBEDO, AMBIENT, ELEVATION, FLAT_TEXEL, GROUPED, NORMAL_TEXEL, SPRITES, TILES, type Engine, type NormalsState } from './engine-normals-page/contract';
 import { serveDirectory, type StaticServer } from './staticServer';
 
 // Normal maps in the real PixiJS and Phaser integrations, against the formula of docs/normal-maps.md
@@ -31,28 +31,34 @@ let page: Page;
 let errors: string[];
 
 type Vec = readonly [number, number];
-const BASE: NormalsState = { rotation: 0, mirrored: false, lightRotation: Math.PI, scroll: [0, 0], zoom: 1 };
+const BASE: NormalsState = { rotation: 0, mirrored: false, lightRotation: Math.PI, groupLightRotation: 0, gpuTilemap: false, scroll: [0, 0], zoom: 1 };
 /** Light travelling west (from the east), east, south (from the north) and north (from the south). */
 const FROM_EAST = Math.PI, FROM_WEST = 0, FROM_NORTH = Math.PI / 2, FROM_SOUTH = -Math.PI / 2;
 
-/** The map's normal in image axes (x right, y down), decoded from its texel as the surface helper does (green up). */
-const IMAGE_NORMAL = (() => {
-  const [x, y, z] = NORMAL_TEXEL.map((byte) => (byte / 255) * 2 - 1);
+/** A map's normal in image axes (x right, y down), decoded from its texel as the surface helper does (green up). */
+function imageNormal(texel: readonly [number, number, number]): readonly [number, number, number] {
+  const [x, y, z] = texel.map((byte) => (byte / 255) * 2 - 1);
   const length = Math.hypot(x, y, z);
   return [x / length, -y / length, z / length] as const;
-})();
+}
+const IMAGE_NORMAL = imageNormal(NORMAL_TEXEL);
 
-/** N·L for the map's normal on a sprite turned by `rotation`, mirrored left–right or not, lit by a light travelling along `lightRotation`. */
-function nDotL(rotation: number, mirrored: boolean, lightRotation: number): number {
-  const ix = mirrored ? -IMAGE_NORMAL[0] : IMAGE_NORMAL[0], iy = IMAGE_NORMAL[1];
+/** N·L for `normal` (image axes) on a sprite turned by `rotation`, mirrored left–right or not, lit by a light travelling along `lightRotation`. */
+function nDotL(rotation: number, mirrored: boolean, lightRotation: number, normal = IMAGE_NORMAL): number {
+  const ix = mirrored ? -normal[0] : normal[0], iy = normal[1];
   const nx = Math.cos(rotation) * ix - Math.sin(rotation) * iy;
   const ny = Math.sin(rotation) * ix + Math.cos(rotation) * iy;
   const l = [-Math.cos(lightRotation) * Math.cos(ELEVATION), -Math.sin(lightRotation) * Math.cos(ELEVATION), Math.sin(ELEVATION)];
-  return nx * l[0] + ny * l[1] + IMAGE_NORMAL[2] * l[2];
+  return nx * l[0] + ny * l[1] + normal[2] * l[2];
+}
+
+/** The formula for a sprite of uniform `normal` under one directional light along `lightRotation`. */
+function litBy(lightRotation: number, { rotation = 0, mirrored = false, normal = IMAGE_NORMAL } = {}): number {
+  return 255 * (ALBEDO / 255) * (AMBIENT + Math.max(0, nDotL(rotation, mirrored, lightRotation, normal)));
 }
 
 function expectedLit(state: NormalsState): number {
-  return 255 * (ALBEDO / 255) * (AMBIENT + Math.max(0, nDotL(state.rotation, state.mirrored, state.lightRotation)));
+  return litBy(state.lightRotation, state);
 }
 
 /** Canvas pixels of a sprite's middle: its centre and 6 world units around it (inside its 24 units). */
@@ -150,6 +156,17 @@ for (const engine of ['pixi', 'phaser'] as const) {
       }
     });
 
+    it('lights a normal-mapped sprite in a lit group through its normal, with the group\'s lights only', async () => {
+      // The world's light comes from the other side each time: the group's sprite follows its own light.
+      for (const [groupLight, worldLight] of [[FROM_EAST, FROM_WEST], [FROM_WEST, FROM_EAST], [FROM_NORTH, FROM_SOUTH]]) {
+        const state = { ...BASE, lightRotation: worldLight, groupLightRotation: groupLight };
+        const points = around(state, GROUPED);
+        const red = (await page.evaluate((e, s, p) => window.engineNormals!.read(e, s, p), engine, state, points)).map((pixel) => pixel[0]);
+        expectNear(red, litBy(groupLight), `grouped, group light ${groupLight.toFixed(2)}`);
+      }
+      expect(litBy(FROM_EAST) - litBy(FROM_WEST)).toBeGreaterThan(100);
+    });
+
     it('makes no GL object per frame', async () => {
       await read(engine, BASE);
       expect(await page.evaluate((e) => window.engineNormals!.created(e, 4), engine)).toBe(0);
@@ -170,6 +187,26 @@ for (const engine of ['pixi', 'phaser'] as const) {
     });
   });
 }
+
+describe('normal maps of Phaser tilemap layers', () => {
+  it.each([['TilemapLayer', false], ['TilemapGPULayer', true]])('lights each tile of a %s through its tileset\'s normal map (the texture\'s data source), flipped tiles mirrored', async (_, gpuTilemap) => {
+    const flat = imageNormal(FLAT_TEXEL);
+    // Unmoved, then panned and zoomed (the tiles Phaser draws are the tiles in sight).
+    const views = [{ scroll: [0, 0] as [number, number], zoom: 1 }, { scroll: [40, 40] as [number, number], zoom: 1.25 }];
+    for (const [view, lightRotation] of views.flatMap((v) => [FROM_EAST, FROM_WEST, FROM_NORTH].map((l) => [v, l] as const))) {
+      const state = { ...BASE, ...view, lightRotation, gpuTilemap };
+      const points = [...around(state, TILES.mapped), ...around(state, TILES.flipped), ...around(state, TILES.flat)];
+      const red = (await page.evaluate((p) => window.engineNormals!.read('phaser', p.state, p.points), { state, points })).map((pixel) => pixel[0]);
+      const at = `light ${lightRotation.toFixed(2)}, scroll ${view.scroll}, zoom ${view.zoom}`;
+      expectNear(red.slice(0, 5), litBy(lightRotation), `tile, ${at}`);
+      expectNear(red.slice(5, 10), litBy(lightRotation, { mirrored: true }), `flipped tile, ${at}`);
+      expectNear(red.slice(10, 15), litBy(lightRotation, { normal: flat }), `second tile, ${at}`);
+    }
+    // Lit from the two sides, the tile and its flipped copy swap, far beyond the tolerance.
+    expect(litBy(FROM_EAST) - litBy(FROM_WEST)).toBeGreaterThan(100);
+    expect(Math.abs(litBy(FROM_EAST, { normal: flat }) - (ALBEDO / 255) * 255 * (AMBIENT + 1))).toBeGreaterThan(30);
+  });
+});
 
 it('logs no console errors', () => {
   expect(errors).toEqual([]);

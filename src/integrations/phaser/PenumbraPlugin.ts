@@ -108,21 +108,25 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   }
 
   /**
-   * Sets the material of normal-mapped images and sprites: of one game object, or of every object
-   * showing a texture (by key); `null` takes it away. An object's own material wins over its
-   * texture's; without either, a map has no highlight and no emission.
+   * Sets the material of normal-mapped images, sprites and tilemap layers: of one game object, or of
+   * every object showing a texture (by key; for a tilemap layer, its tileset's image); `null` takes
+   * it away. An object's own material wins over its texture's; without either, a map has no
+   * highlight and no emission.
    *
    * With a renderer made with `normals: true` (in the plugin entry's `data`, or {@link PenumbraPlugin.configure}),
    * the lighting layer lights images and sprites through the normal maps Phaser loaded with their
    * textures: each frame it draws the objects drawn before it, in Phaser's order, from their normal
    * maps turned by their rotation and flips, into textures the renderer reads (docs/normal-maps.md).
-   * Objects without a normal map are lit as without normals. Images and sprites of the scene and of
-   * its layers are drawn so; those inside a `Container`, and other kinds of objects, are lit as
-   * without normals.
+   * Tilemap layers (`TilemapLayer` and `TilemapGPULayer`) are drawn tile by tile from their tilesets'
+   * normal maps (the tileset image's data source, as for an image), turned by each tile's rotation
+   * and flips. Objects without a normal map are lit as without normals. Images, sprites and tilemap
+   * layers of the scene and of its layers are drawn so; those inside a `Container`, and other kinds
+   * of objects, are lit as without normals.
    *
    * ```ts
    * this.load.image('wall', ['wall.png', 'wall_n.png']);                        // in preload
    * this.penumbra.setMaterial('wall', { specular: 0.4, shininess: 24 });        // in create
+   * this.load.image('tiles', ['tiles.png', 'tiles_n.png']);                     // a tileset: map.createLayer(0, map.addTilesetImage('tiles'))
    * ```
    * @throws TypeError or RangeError for a target or option that does not fit.
    */

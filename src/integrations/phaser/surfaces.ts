@@ -32,10 +32,16 @@ interface UvRect { u0: number; v0: number; u1: number; v1: number }
 /** A game object the normal pass draws: an image or a sprite. */
 type Drawn = Phaser.GameObjects.Image | Phaser.GameObjects.Sprite;
 
+/** What Phaser's tile transformer reads of a texturer (TilemapLayerWebGLRenderer hands it the same). */
+interface TileFrame { frameWidth: number; frameHeight: number }
+/** A tile's pixel rectangle in its tileset image (Tileset.getTileTextureCoordinates; its typings say object). */
+interface TileCoordinates { x: number; y: number }
+
 /**
- * The plugin's materials and normal pass: the images and sprites drawn before the lighting layer
- * (or a lit group's children), in Phaser's order, from the normal maps of their textures (see
- * {@link SurfacePass}). Phaser's own texturer and transformer nodes place each quad, as Phaser draws it.
+ * The plugin's materials and normal pass: the images, sprites and tilemap layers' tiles drawn before
+ * the lighting layer (or a lit group's children), in Phaser's order, from the normal maps of their
+ * textures (see {@link SurfacePass}). Phaser's own texturer and transformer nodes place each quad, as
+ * Phaser draws it (a GPU tilemap layer's tiles, by the matrix of its submitter node).
  */
 export class PhaserSurfaces {
   private readonly objectMaterials = new WeakMap<Phaser.GameObjects.GameObject, Material>();
@@ -43,6 +49,12 @@ export class PhaserSurfaces {
   private readonly pass: SurfacePass;
   private readonly quad = createSurfaceQuad();
   private context: Phaser.Renderer.WebGL.DrawingContext | null = null;
+  private readonly tileFrame: TileFrame = { frameWidth: 0, frameHeight: 0 };
+  /** A GPU tilemap layer's matrix (world → context), its own part, and a tile's quad; made on first use. */
+  private gpuMatrix: Phaser.GameObjects.Components.TransformMatrix | null = null;
+  private gpuOwnMatrix: Phaser.GameObjects.Components.TransformMatrix | null = null;
+  private gpuQuad: Float32Array | null = null;
+  private gpuCorner: Phaser.Math.Vector2 | null = null;
 
   constructor(gl: WebGL2RenderingContext) {
     this.pass = new SurfacePass(gl);
@@ -78,7 +90,7 @@ export class PhaserSurfaces {
     this.pass.dispose();
   }
 
-  /** Adds the images and sprites of `list`, and of the layers in it, in order; returns true once `stop` is reached. */
+  /** Adds the images, sprites and tilemap layers of `list`, and of the layers in it, in order; returns true once `stop` is reached. */
   private collect(list: readonly Phaser.GameObjects.GameObject[], stop: Phaser.GameObjects.GameObject | null): boolean {
     const camera = this.context!.camera!;
     for (let i = 0; i < list.length; i++) {
@@ -86,6 +98,8 @@ export class PhaserSurfaces {
       if (object === stop) return true;
       if (!object.willRender(camera)) continue;
       if (object instanceof Phaser.GameObjects.Image || object instanceof Phaser.GameObjects.Sprite) this.addObject(object);
+      else if (object instanceof Phaser.Tilemaps.TilemapLayer) this.addTilemapLayer(object);
+      else if (object instanceof Phaser.Tilemaps.TilemapGPULayer) this.addTilemapGPULayer(object);
       else if (object instanceof Phaser.GameObjects.Layer && this.collect(object.list, stop)) return true;
     }
     return false;
@@ -128,6 +142,131 @@ export class PhaserSurfaces {
     w[3] = cos * sy;
     if (quad.normals) {
       const material = this.objectMaterials.get(object) ?? this.textureMaterials.get(object.texture.key) ?? DEFAULT_MATERIAL;
+      quad.greenUp = material.greenUp;
+      quad.specular = material.specular;
+      quad.shininess = material.shininess;
+      quad.emissive = material.emissive;
+    }
+    this.pass.add(quad);
+  }
+
+  /**
+   * Adds the tiles of a tilemap layer that Phaser draws this frame (its culled tiles, in its render
+   * order), each from its tileset's texture, through the layer's own tile transformer node: placed,
+   * scaled, rotated and flipped as Phaser draws it (TilemapLayerWebGLRenderer).
+   */
+  private addTilemapLayer(layer: Phaser.Tilemaps.TilemapLayer): void {
+    const context = this.context!;
+    const tiles = layer.cull(context.camera!);
+    if (tiles.length === 0 || layer.alpha <= 0) return;
+    const nodes = layer.customRenderNodes as RenderNodes, defaults = layer.defaultRenderNodes as RenderNodes;
+    const transformer = (nodes.Transformer ?? defaults.Transformer) as Phaser.Renderer.WebGL.RenderNodes.TransformerTile;
+    const frame = this.tileFrame;
+    for (let i = 0; i < tiles.length; i++) {
+      const tile = tiles[i];
+      const tileset = layer.gidMap[tile.index];
+      if (!tileset) continue;
+      const id = tileset.getAnimatedTileId(tile.index, layer.timeElapsed);
+      if (id === null) continue;
+      const coordinates = tileset.getTileTextureCoordinates(id) as TileCoordinates | null;
+      if (!coordinates || tileset.tileWidth === 0 || tileset.tileHeight === 0) continue;
+      frame.frameWidth = tileset.tileWidth;
+      frame.frameHeight = tileset.tileHeight;
+      // The tile transformer takes the tile as its element (its typings leave it out).
+      (transformer.run as (...args: unknown[]) => void)(context, layer, frame, undefined, tile);
+      this.addTile(layer, tileset, coordinates, transformer.quad, tile.rotation, tile.flipX, tile.flipY, layer.alpha * tile.alpha);
+    }
+  }
+
+  /**
+   * Adds the tiles of a GPU tilemap layer, which Phaser draws as one quad over the layer's grid
+   * (SubmitterTilemapGPULayer): each cell with a tile in sight of the drawing context, placed by the
+   * same matrix, from the layer's one tileset.
+   */
+  private addTilemapGPULayer(layer: Phaser.Tilemaps.TilemapGPULayer): void {
+    const context = this.context!, camera = context.camera!;
+    const tileset = layer.tileset;
+    if (!tileset || layer.alpha <= 0) return;
+    const matrix = (this.gpuMatrix ??= new Phaser.GameObjects.Components.TransformMatrix());
+    const own = (this.gpuOwnMatrix ??= new Phaser.GameObjects.Components.TransformMatrix());
+    matrix.copyWithScrollFactorFrom(camera.getViewMatrix(!context.useCanvas), camera.scrollX, camera.scrollY, layer.scrollFactorX, layer.scrollFactorY);
+    own.applyITRS(layer.x, layer.y, 0, layer.scaleX, layer.scaleY);
+    matrix.multiply(own);
+    // The layer's size is the map's tile size times its cells (TilemapLayerBase).
+    const data = layer.layer.data, cellWidth = layer.tilemap.tileWidth, cellHeight = layer.tilemap.tileHeight;
+    // The cells in sight: the context's corners taken back to the layer's units, one cell of margin.
+    const corner = (this.gpuCorner ??= new Phaser.Math.Vector2());
+    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+    for (let i = 0; i < 4; i++) {
+      matrix.applyInverse(i & 1 ? context.width : 0, i & 2 ? context.height : 0, corner);
+      minX = Math.min(minX, corner.x);
+      maxX = Math.max(maxX, corner.x);
+      minY = Math.min(minY, corner.y);
+      maxY = Math.max(maxY, corner.y);
+    }
+    const firstRow = Math.max(0, Math.floor((minY - layer.y) / cellHeight) - 1);
+    const lastRow = Math.min(data.length - 1, Math.floor((maxY - layer.y) / cellHeight) + 1);
+    const firstColumn = Math.max(0, Math.floor((minX - layer.x) / cellWidth) - 1);
+    const quad = (this.gpuQuad ??= new Float32Array(8));
+    for (let row = firstRow; row <= lastRow; row++) {
+      const cells = data[row];
+      const lastColumn = Math.min(cells.length - 1, Math.floor((maxX - layer.x) / cellWidth) + 1);
+      for (let column = firstColumn; column <= lastColumn; column++) {
+        const tile = cells[column];
+        if (!tile || tile.index < 0) continue;
+        const id = tileset.getAnimatedTileId(tile.index, layer.timeElapsed);
+        if (id === null) continue;
+        const coordinates = tileset.getTileTextureCoordinates(id) as TileCoordinates | null;
+        if (!coordinates) continue;
+        // The layer's quad spans (x, y) to (x + width, y + height) in its own units: one cell per tile.
+        const left = layer.x + column * cellWidth, top = layer.y + row * cellHeight;
+        const x0 = tile.flipX ? left + cellWidth : left, y0 = tile.flipY ? top + cellHeight : top;
+        matrix.setQuad(x0, y0, tile.flipX ? left : left + cellWidth, tile.flipY ? top : top + cellHeight, quad);
+        // Its data texture holds the index and flips only: the layer's alpha, not the tile's.
+        this.addTile(layer, tileset, coordinates, quad, 0, tile.flipX, tile.flipY, layer.alpha);
+      }
+    }
+  }
+
+  /**
+   * Adds one tile: `q` its quad as Phaser's transformers leave it (top-left, bottom-left,
+   * bottom-right, top-right of the tile's image), its frame at `coordinates` in the tileset's image.
+   */
+  private addTile(
+    layer: Phaser.Tilemaps.TilemapLayerBase, tileset: Phaser.Tilemaps.Tileset, coordinates: TileCoordinates, q: ArrayLike<number>,
+    rotation: number, flipX: boolean, flipY: boolean, alpha: number,
+  ): void {
+    const image = tileset.image!;
+    const quad = this.quad;
+    quad.color = tileset.glTexture!.webGLTexture;
+    // The tileset image's normal map (its data source), as Phaser's own lights read it.
+    const normalSource = image.dataSource[0] as Phaser.Textures.TextureSource | undefined;
+    quad.normals = normalSource?.glTexture?.webGLTexture ?? null;
+    quad.alpha = alpha;
+    const corners = quad.corners;
+    corners[0] = q[0]; corners[1] = q[1];
+    corners[2] = q[6]; corners[3] = q[7];
+    corners[4] = q[2]; corners[5] = q[3];
+    corners[6] = q[4]; corners[7] = q[5];
+    // Phaser keeps texture rows bottom up: the tile's top is at v1 (TilemapLayerWebGLRenderer, SubmitterTile).
+    const width = tileset.glTexture!.width, height = tileset.glTexture!.height;
+    const u0 = coordinates.x / width, u1 = (coordinates.x + tileset.tileWidth) / width;
+    const top = 1 - coordinates.y / height, bottom = 1 - (coordinates.y + tileset.tileHeight) / height;
+    const uvs = quad.uvs;
+    uvs[0] = u0; uvs[1] = top;
+    uvs[2] = u1; uvs[3] = top;
+    uvs[4] = u0; uvs[5] = bottom;
+    uvs[6] = u1; uvs[7] = bottom;
+    // Image axes → world axes: the tile's rotation, the layer's scale and the tile's flips (the layer's rotation is not drawn).
+    const cos = Math.cos(rotation), sin = Math.sin(rotation);
+    const sx = flipX ? -layer.scaleX : layer.scaleX, sy = flipY ? -layer.scaleY : layer.scaleY;
+    const w = quad.worldFromImage;
+    w[0] = cos * sx;
+    w[1] = sin * sx;
+    w[2] = -sin * sy;
+    w[3] = cos * sy;
+    if (quad.normals) {
+      const material = this.objectMaterials.get(layer) ?? this.textureMaterials.get(image.key) ?? DEFAULT_MATERIAL;
       quad.greenUp = material.greenUp;
       quad.specular = material.specular;
       quad.shininess = material.shininess;

@@ -20,14 +20,43 @@ export const NORMAL_TEXEL: readonly [number, number, number] = [189, 173, 230];
 /** World centres of the sprites: N has the normal map; P has none; E has the normal map under a plain sprite of its size. */
 export const SPRITES = { normal: [40, 40], plain: [100, 40], erased: [40, 90] } as const satisfies Record<string, readonly [number, number]>;
 
+/**
+ * Phaser only: a tilemap layer of three tiles (SPRITE_SIZE square) from a tileset of two, whose normal
+ * map (the tileset texture's data source) is NORMAL_TEXEL on the first tile and FLAT_TEXEL on the
+ * second. World centres: the first tile (T), the first tile flipped left–right (F), the second tile (S).
+ */
+export const TILES = { mapped: [84, 84], flipped: [108, 84], flat: [132, 84] } as const satisfies Record<string, readonly [number, number]>;
+/**
+ * The layer's data: the tiles in row 3, columns 3 to 5, the rest empty. The layer sits at the world's
+ * origin: Phaser 4.2.1's TilemapGPULayer counts its position twice (SubmitterTilemapGPULayer).
+ */
+export const TILE_DATA: readonly (readonly number[])[] = [
+  [-1, -1, -1, -1, -1, -1], [-1, -1, -1, -1, -1, -1], [-1, -1, -1, -1, -1, -1], [-1, -1, -1, 0, 0, 1],
+];
+/** The second tile's normal: straight up out of the image. */
+export const FLAT_TEXEL: readonly [number, number, number] = [128, 128, 255];
+
+/**
+ * Both engines: a sprite with the normal map in a lit group of layers GROUP_LAYERS, lit by the
+ * ambient light and a directional light of those layers only; the world's light and lighting layer
+ * have WORLD_LAYERS.
+ */
+export const GROUPED: readonly [number, number] = [140, 40];
+export const WORLD_LAYERS = 0b01;
+export const GROUP_LAYERS = 0b10;
+
 /** What the page is asked to draw. */
 export interface NormalsState {
   /** Rotation of sprite N, radians. */
   rotation: number;
   /** Whether sprite N is mirrored left–right (Pixi: scale.x −1; Phaser: flipX). */
   mirrored: boolean;
-  /** Direction the directional light travels, radians (π: from the east). */
+  /** Direction the world's directional light travels, radians (π: from the east). */
   lightRotation: number;
+  /** Direction the group's directional light travels, radians. */
+  groupLightRotation: number;
+  /** Phaser: the tiles are drawn by a TilemapGPULayer rather than a TilemapLayer. */
+  gpuTilemap: boolean;
   /** The camera's scroll (world point at the canvas's top-left) and zoom. */
   scroll: [number, number];
   zoom: number;

@@ -3,18 +3,25 @@
 // under a plain sprite (E), lit by a directional light (test/browser/engineNormals.test.ts).
 import { Application, Container, Sprite, Texture } from 'pixi.js';
 import Phaser from 'phaser';
-import { PenumbraLayer } from '../../../src/integrations/pixi/index';
+import { PenumbraGroup, PenumbraLayer } from '../../../src/integrations/pixi/index';
 import { PenumbraPlugin } from '../../../src/integrations/phaser/index';
 import { DirectionalLight } from '../../../src/index';
-import { ALBEDO, AMBIENT, CANVAS, ELEVATION, NORMAL_TEXEL, SPRITES, SPRITE_SIZE, type Engine, type NormalsState } from './contract';
+import {
+  ALBEDO, AMBIENT, CANVAS, ELEVATION, FLAT_TEXEL, GROUPED, GROUP_LAYERS, NORMAL_TEXEL, SPRITES, SPRITE_SIZE, TILE_DATA, WORLD_LAYERS,
+  type Engine, type NormalsState,
+} from './contract';
 
 const AMBIENT_COLOR: [number, number, number] = [AMBIENT, AMBIENT, AMBIENT];
 
-function solid(rgb: readonly [number, number, number]): HTMLCanvasElement {
-  const canvas = Object.assign(document.createElement('canvas'), { width: SPRITE_SIZE, height: SPRITE_SIZE });
+/** Squares of SPRITE_SIZE side, left to right, each of one opaque colour. */
+function solid(...colors: (readonly [number, number, number])[]): HTMLCanvasElement {
+  const canvas = Object.assign(document.createElement('canvas'), { width: SPRITE_SIZE * colors.length, height: SPRITE_SIZE });
   const context = canvas.getContext('2d')!;
-  const image = context.createImageData(SPRITE_SIZE, SPRITE_SIZE);
-  for (let i = 0; i < image.data.length; i += 4) image.data.set([rgb[0], rgb[1], rgb[2], 255], i);
+  const image = context.createImageData(canvas.width, SPRITE_SIZE);
+  for (let i = 0; i < image.data.length; i += 4) {
+    const rgb = colors[Math.floor(((i / 4) % canvas.width) / SPRITE_SIZE)];
+    image.data.set([rgb[0], rgb[1], rgb[2], 255], i);
+  }
   context.putImageData(image, 0, 0);
   return canvas;
 }
@@ -62,7 +69,7 @@ async function pixiScene(): Promise<Scene> {
   const color = Texture.from(solid([ALBEDO, ALBEDO, ALBEDO]));
   const normals = Texture.from(solid(NORMAL_TEXEL));
   const world = new Container();
-  const lighting = new PenumbraLayer(app.renderer, { camera: world, normals: true, ambientColor: AMBIENT_COLOR });
+  const lighting = new PenumbraLayer(app.renderer, { camera: world, normals: true, ambientColor: AMBIENT_COLOR, layers: WORLD_LAYERS });
   const sprite = (at: readonly [number, number], texture = color) => world.addChild(new Sprite({ texture, anchor: 0.5, position: { x: at[0], y: at[1] } }));
   // The normal map given per sprite for N, per texture source for E's lower sprite (a texture of its own): both ways in use.
   const normal = sprite(SPRITES.normal);
@@ -72,14 +79,18 @@ async function pixiScene(): Promise<Scene> {
   lighting.setSurface(under.texture.source, { normalMap: normals.source });
   sprite(SPRITES.erased);
   world.addChild(lighting);
+  const group = world.addChild(new PenumbraGroup({ lighting, layers: GROUP_LAYERS }));
+  lighting.setSurface(group.addChild(new Sprite({ texture: color, anchor: 0.5, position: { x: GROUPED[0], y: GROUPED[1] } })), { normalMap: normals });
   app.stage.addChild(world);
-  const light = lighting.addLight(new DirectionalLight({ elevation: ELEVATION }));
+  const light = lighting.addLight(new DirectionalLight({ elevation: ELEVATION, litLayers: WORLD_LAYERS }));
+  const groupLight = lighting.addLight(new DirectionalLight({ elevation: ELEVATION, litLayers: GROUP_LAYERS }));
   return {
     gl,
     apply(state) {
       normal.rotation = state.rotation;
       normal.scale.set(state.mirrored ? -1 : 1, 1);
       light.rotation = state.lightRotation;
+      groupLight.rotation = state.groupLightRotation;
       world.scale.set(state.zoom);
       world.position.set(-state.scroll[0] * state.zoom, -state.scroll[1] * state.zoom);
     },
@@ -96,6 +107,9 @@ async function phaserScene(): Promise<Scene> {
     declare penumbra: PenumbraPlugin;
     normal!: Phaser.GameObjects.Image;
     light!: DirectionalLight;
+    groupLight!: DirectionalLight;
+    tiles!: Phaser.Tilemaps.TilemapLayerBase;
+    gpuTiles!: Phaser.Tilemaps.TilemapLayerBase;
     create(): void {
       // Phaser's way: the normal map as the texture's data source, as the loader's [url, normalUrl] leaves it.
       this.textures.addCanvas('lit', solid([ALBEDO, ALBEDO, ALBEDO]))!.setDataSource(solid(NORMAL_TEXEL));
@@ -104,7 +118,23 @@ async function phaserScene(): Promise<Scene> {
       this.add.image(SPRITES.plain[0], SPRITES.plain[1], 'plain');
       this.add.image(SPRITES.erased[0], SPRITES.erased[1], 'lit');
       this.add.image(SPRITES.erased[0], SPRITES.erased[1], 'plain');
-      this.light = this.penumbra.addLight(new DirectionalLight({ elevation: ELEVATION }));
+      // A tilemap layer from a normal-mapped tileset: its first tile, the same flipped, its second tile.
+      this.textures.addCanvas('tiles', solid([ALBEDO, ALBEDO, ALBEDO], [ALBEDO, ALBEDO, ALBEDO]))!.setDataSource(solid(NORMAL_TEXEL, FLAT_TEXEL));
+      // Drawn by a TilemapLayer or (the same tiles) by a TilemapGPULayer, one visible at a time.
+      const tiles = (gpu: boolean) => {
+        const map = this.make.tilemap({ data: TILE_DATA.map((row) => [...row]), tileWidth: SPRITE_SIZE, tileHeight: SPRITE_SIZE });
+        const tileset = map.addTilesetImage('tiles', 'tiles', SPRITE_SIZE, SPRITE_SIZE)!;
+        // Flipped before the layer is made: a GPU layer reads its tiles once, and regenerating its data
+        // texture leaves the old one's destroyed wrapper to Phaser 4.2.1's context restore, which throws on it.
+        map.getTileAt(4, 3, true, 0)!.flipX = true;
+        return map.createLayer(0, tileset, 0, 0, gpu)!;
+      };
+      this.tiles = tiles(false);
+      this.gpuTiles = tiles(true);
+      this.penumbra.layers = WORLD_LAYERS;
+      this.light = this.penumbra.addLight(new DirectionalLight({ elevation: ELEVATION, litLayers: WORLD_LAYERS }));
+      this.groupLight = this.penumbra.addLight(new DirectionalLight({ elevation: ELEVATION, litLayers: GROUP_LAYERS }));
+      this.penumbra.addGroup({ layers: GROUP_LAYERS }).add(this.add.image(GROUPED[0], GROUPED[1], 'lit'));
       this.cameras.main.setOrigin(0, 0);
       scene = this;
     }
@@ -121,6 +151,9 @@ async function phaserScene(): Promise<Scene> {
     apply(state) {
       s.normal.setRotation(state.rotation).setFlipX(state.mirrored);
       s.light.rotation = state.lightRotation;
+      s.groupLight.rotation = state.groupLightRotation;
+      s.tiles.setVisible(!state.gpuTilemap);
+      s.gpuTiles.setVisible(state.gpuTilemap);
       s.cameras.main.setZoom(state.zoom).setScroll(state.scroll[0], state.scroll[1]);
     },
     render: () => game.step(performance.now(), 0),
