@@ -189,18 +189,19 @@ for (const engine of ['pixi', 'phaser'] as const) {
 }
 
 describe('normal maps of Phaser tilemap layers', () => {
-  it.each([['TilemapLayer', false], ['TilemapGPULayer', true]])('lights each tile of a %s through its tileset\'s normal map (the texture\'s data source), flipped tiles mirrored', async (_, gpuTilemap) => {
+  it.each([['TilemapLayer', false], ['TilemapGPULayer', true]])('lights each tile of a %s through its tileset\'s normal map (the texture\'s data source), flipped tiles mirrored, rotated tiles turned', async (_, gpuTilemap) => {
     const flat = imageNormal(FLAT_TEXEL);
     // Unmoved, then panned and zoomed (the tiles Phaser draws are the tiles in sight).
     const views = [{ scroll: [0, 0] as [number, number], zoom: 1 }, { scroll: [40, 40] as [number, number], zoom: 1.25 }];
     for (const [view, lightRotation] of views.flatMap((v) => [FROM_EAST, FROM_WEST, FROM_NORTH].map((l) => [v, l] as const))) {
       const state = { ...BASE, ...view, lightRotation, gpuTilemap };
-      const points = [...around(state, TILES.mapped), ...around(state, TILES.flipped), ...around(state, TILES.flat)];
+      const points = [...around(state, TILES.mapped), ...around(state, TILES.flipped), ...around(state, TILES.flat), ...around(state, TILES.rotated)];
       const red = (await page.evaluate((p) => window.engineNormals!.read('phaser', p.state, p.points), { state, points })).map((pixel) => pixel[0]);
       const at = `light ${lightRotation.toFixed(2)}, scroll ${view.scroll}, zoom ${view.zoom}`;
       expectNear(red.slice(0, 5), litBy(lightRotation), `tile, ${at}`);
       expectNear(red.slice(5, 10), litBy(lightRotation, { mirrored: true }), `flipped tile, ${at}`);
       expectNear(red.slice(10, 15), litBy(lightRotation, { normal: flat }), `second tile, ${at}`);
+      expectNear(red.slice(15, 20), litBy(lightRotation, { rotation: gpuTilemap ? 0 : Math.PI / 2 }), `rotated tile, ${at}`);
     }
     // Lit from the two sides, the tile and its flipped copy swap, far beyond the tolerance.
     expect(litBy(FROM_EAST) - litBy(FROM_WEST)).toBeGreaterThan(100);

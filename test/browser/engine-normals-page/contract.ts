@@ -23,15 +23,16 @@ export const SPRITES = { normal: [40, 40], plain: [100, 40], erased: [40, 90] } 
 /**
  * Phaser only: a tilemap layer of three tiles (SPRITE_SIZE square) from a tileset of two, whose normal
  * map (the tileset texture's data source) is NORMAL_TEXEL on the first tile and FLAT_TEXEL on the
- * second. World centres: the first tile (T), the first tile flipped left–right (F), the second tile (S).
+ * second. World centres: the first tile (T), the first tile flipped left–right (F), the second tile (S),
+ * the first tile turned a quarter clockwise (R; a TilemapLayer's tile rotation: a TilemapGPULayer has none).
  */
-export const TILES = { mapped: [84, 84], flipped: [108, 84], flat: [132, 84] } as const satisfies Record<string, readonly [number, number]>;
+export const TILES = { mapped: [84, 84], flipped: [108, 84], flat: [132, 84], rotated: [60, 84] } as const satisfies Record<string, readonly [number, number]>;
 /**
- * The layer's data: the tiles in row 3, columns 3 to 5, the rest empty. The layer sits at the world's
+ * The layer's data: the tiles in row 3, columns 2 (R) and 3 to 5, the rest empty. The layer sits at the world's
  * origin: Phaser 4.2.1's TilemapGPULayer counts its position twice (SubmitterTilemapGPULayer).
  */
 export const TILE_DATA: readonly (readonly number[])[] = [
-  [-1, -1, -1, -1, -1, -1], [-1, -1, -1, -1, -1, -1], [-1, -1, -1, -1, -1, -1], [-1, -1, -1, 0, 0, 1],
+  [-1, -1, -1, -1, -1, -1], [-1, -1, -1, -1, -1, -1], [-1, -1, -1, -1, -1, -1], [-1, -1, 0, 0, 0, 1],
 ];
 /** The second tile's normal: straight up out of the image. */
 export const FLAT_TEXEL: readonly [number, number, number] = [128, 128, 255];

@@ -127,6 +127,7 @@ async function phaserScene(): Promise<Scene> {
         // Flipped before the layer is made: a GPU layer reads its tiles once, and regenerating its data
         // texture leaves the old one's destroyed wrapper to Phaser 4.2.1's context restore, which throws on it.
         map.getTileAt(4, 3, true, 0)!.flipX = true;
+        map.getTileAt(2, 3, true, 0)!.rotation = Math.PI / 2;
         return map.createLayer(0, tileset, 0, 0, gpu)!;
       };
       this.tiles = tiles(false);
