@@ -176,11 +176,13 @@ for (const engine of ['pixi', 'phaser'] as const) {
       // Lit from the west the normal-mapped sprite is far darker than lit flat: a normal pass that
       // lost its GL objects (no normals read: flat) or threw cannot pass for it.
       const state = { ...BASE, lightRotation: FROM_WEST };
-      const points = [...around(state, SPRITES.normal), ...around(state, SPRITES.plain)];
+      // The world's sprites, the lit group's sprite and (Phaser) the tiles.
+      const points = [...around(state, SPRITES.normal), ...around(state, SPRITES.plain), ...around(state, GROUPED), ...around(state, TILES.mapped)];
       const report = await page.evaluate((e, s, p) => window.engineNormals!.acrossContextLoss(e, s, p), engine, state, points);
       expect(report.lostFrameErrors).toEqual([]);
       const red = (pixels: number[][]) => pixels.map((pixel) => pixel[0]);
       expectNear(red(report.before).slice(0, 5), expectedLit(state), 'before the loss');
+      expectNear(red(report.before).slice(10, 15), litBy(state.groupLightRotation), 'grouped, before the loss');
       expect(red(report.after)).toEqual(red(report.before));
       // None of the stale GL objects of the lost context used by the first frame after.
       expect(report.glErrors).toEqual([]);
