@@ -14,8 +14,10 @@ import { serveDirectory, type StaticServer } from './staticServer';
 // the test scenes in the rest (centre [300, 200], zoom 1: world x from about 30 to 570 shows).
 // Pixels are read and the pointer moved at world points, through the page's worldToScreen.
 const WIDTH = 800, HEIGHT = 400;
-/** The page is ready after its first frames, which SwiftShader compiles and draws slowly on a busy machine. */
-const PAGE_READY_MS = 100_000;
+/** The page is ready after its first frames, which SwiftShader compiles and draws slowly on a busy machine (170 s seen at load 10). */
+const PAGE_READY_MS = 240_000;
+/** The showcase's frames take seconds each in SwiftShader (14 s seen at load 8), and its tests read several. */
+const SHOWCASE_TEST_MS = 400_000;
 
 /** A scene of these tests, built or saved: they have no directional light, so every light has a position, range and radius. */
 interface TestScene extends Omit<SceneDocument, 'lights'> {
@@ -30,7 +32,7 @@ function testScene(light: [number, number], range = 300): TestScene {
     lights: [{
       kind: 'point', position: light, range, radius: 0, color: [1, 1, 1], intensity: 1, rotation: 0, origin: [0.5, 0.5],
       shadowType: 'illuminated', enabled: true, castsShadows: true, ignoredHulls: [],
-      shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, falloff: 'linear',
+      shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, falloff: 'linear', height: null,
     }],
     look: { exposure: 1, toneMapping: 'none', dithering: 'none', lightmapBlur: 0 },
   };
@@ -47,6 +49,11 @@ function darkScene(): TestScene {
 }
 
 const brightness = ([r, g, b]: [number, number, number]) => r + g + b;
+
+/** Each channel of `scaled` is `factor` × that of `colour`, within 8-bit rounding. */
+function brightnessNear(scaled: [number, number, number], colour: [number, number, number], factor: number): void {
+  scaled.forEach((channel, i) => expect(Math.abs(channel - colour[i] * factor)).toBeLessThanOrEqual(1.5));
+}
 
 /** Area (shoelace, either winding) and bounds `[minX, minY, maxX, maxY]` of a polygon. */
 function shape(points: [number, number][]): { area: number; bounds: [number, number, number, number] } {
@@ -194,14 +201,16 @@ describe('playground page in Chromium', () => {
     await page.goto(server.url);
     await page.waitForFunction(() => window.playground !== undefined, { timeout: PAGE_READY_MS });
     await page.evaluate(() => window.playground.setAnimation(false));
-  });
+  }, PAGE_READY_MS + 60_000);
 
   afterAll(async () => {
     await browser?.close();
     await server?.close();
   });
 
-  it('opens on the default level with no console or GL errors', async () => {
+  it('opens on the showcase level with no console or GL errors', async () => {
+    expect(await page.evaluate(() => window.playground.showcase())).toEqual({ active: true, daylight: 0 });
+    expect(await fieldText('preset')).toBe('Showcase');
     const stats = await page.evaluate(() => window.playground.rendererStats());
     expect(stats.lights).toBeGreaterThanOrEqual(4);
     expect(stats.hulls).toBeGreaterThanOrEqual(4);
@@ -209,6 +218,74 @@ describe('playground page in Chromium', () => {
     expect(stats.cpuTime).toBeGreaterThan(0);
     expect(await page.evaluate(() => window.playground.glError())).toBe(0);
     expect(errors).toEqual([]);
+  }, SHOWCASE_TEST_MS);
+
+  describe('showcase', () => {
+    /** Light indices of the showcase level (its document's order). */
+    const SKY = 0, TORCH = 1, LANTERN = 6, LIGHTS = 7;
+    /** Loads the showcase with every light off but those in `on`. */
+    const showcaseWith = async (on: number[]) => {
+      await page.evaluate(() => window.playground.selectPreset('Showcase'));
+      for (let i = 0; i < LIGHTS; i++) await page.evaluate((index, enabled) => window.playground.setLight(index, { enabled }), i, on.includes(i));
+    };
+    const setCamera = (x: number, y: number, zoom: number) => page.evaluate((cx, cy, z) => window.playground.setCamera(cx, cy, z), x, y, zoom);
+
+    it('lights a pillar through its normal map: its side facing the torch is brighter than with the torch as far on the other side', async () => {
+      // The pillar at (270, 300) has a domed top: 20 units west of its centre the normal leans west.
+      // A torch 90 units west or east of that point, 70 up, is as far in both places and nothing
+      // else shadows it, so only N·L changes: about 0.84 west, 0.33 east (a slope of ~0.34).
+      await showcaseWith([TORCH]);
+      await setCamera(270, 300, 1.5);
+      const at: [number, number] = [250, 300];
+      await page.evaluate((torch, p) => window.playground.setLight(torch, { position: [p[0] - 90, p[1]], intensity: 1 }), TORCH, at);
+      const facing = await readPixel(...at);
+      await page.evaluate((torch, p) => window.playground.setLight(torch, { position: [p[0] + 90, p[1]], intensity: 1 }), TORCH, at);
+      const away = await readPixel(...at);
+      expect(brightness(facing)).toBeGreaterThan(1.6 * brightness(away) + 10);
+      // The same on the pillar's east side with the torch swapped (the relief, not the place, decides).
+      const east: [number, number] = [290, 300];
+      const eastFacing = await readPixel(...east);
+      await page.evaluate((torch, p) => window.playground.setLight(torch, { position: [p[0] - 90, p[1]] }), TORCH, east);
+      const eastAway = await readPixel(...east);
+      expect(brightness(eastFacing)).toBeGreaterThan(1.6 * brightness(eastAway) + 10);
+    }, SHOWCASE_TEST_MS);
+
+    it('keeps emissive pixels bright with every light off and no ambient', async () => {
+      await showcaseWith([]);
+      await enter('ambient', '#000000');
+      await setCamera(170, 396, 1.5);
+      // A pane of the lantern's glass (8 units right of and below its centre, clear of its frame
+      // and cross bars) glows; the floor beside the table is black.
+      const glass = await readPixel(178, 404);
+      const floor = await readPixel(260, 396);
+      expect(brightness(glass)).toBeGreaterThan(300);
+      expect(brightness(floor)).toBeLessThan(6);
+      expect(await page.evaluate(() => window.playground.rendererStats().lightsDrawn)).toBe(0);
+    }, SHOWCASE_TEST_MS);
+
+    it('brightens the level by day with its daylight slider, and scales the picture with exposure', async () => {
+      await showcaseWith([SKY, LANTERN]);
+      await choose('tone mapping', 'None');
+      await enter('exposure', '1');
+      await setCamera(1000, 560, 1);
+      // The storeroom's floor, out of the windows' light: the ambient lights it.
+      const night = await readPixel(1000, 560);
+      await enter('daylight', '1');
+      expect(await page.evaluate(() => window.playground.showcase().daylight)).toBe(1);
+      expect(await fieldText('daylight')).toBe('1');
+      const day = await readPixel(1000, 560);
+      // The ambient goes from 0.045–0.08 to 0.30–0.34 a channel: several times brighter.
+      expect(brightness(day)).toBeGreaterThan(3 * brightness(night) + 20);
+      const { ambient, lights } = await sceneDocument();
+      expect(ambient[0]).toBeGreaterThan(0.3);
+      expect((lights[SKY] as unknown as { intensity: number }).intensity).toBeGreaterThan(1.5);
+
+      await enter('exposure', '0.5');
+      expect(await fieldText('exposure')).toBe('0.5');
+      const half = await readPixel(1000, 560);
+      // No tone mapping: the colour halves (within 8-bit rounding).
+      brightnessNear(half, day, 0.5);
+    }, SHOWCASE_TEST_MS);
   });
 
   it('lights a pixel near the light and leaves the umbra behind the hull dark', async () => {
