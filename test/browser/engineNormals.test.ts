@@ -5,7 +5,7 @@ import type { Browser, Page } from 'puppeteer';
 import { build } from 'vite';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { collectPageErrors, launchChromium } from './chromium';
-import { ALBEDO, AMBIENT, ELEVATION, FLAT_TEXEL, GROUPED, NORMAL_TEXEL, SPRITES, TILES, type Engine, type NormalsState } from './engine-normals-page/contract';
+import { ALBEDO, AMBIENT, ELEVATION, FLAT_TEXEL, GROUPED, NORMAL_TEXEL, SPRITES, TILES, TOP_TEXEL, type Engine, type NormalsState } from './engine-normals-page/contract';
 import { serveDirectory, type StaticServer } from './staticServer';
 
 // Normal maps in the real PixiJS and Phaser integrations, against the formula of docs/normal-maps.md
@@ -192,7 +192,7 @@ for (const engine of ['pixi', 'phaser'] as const) {
 
 describe('normal maps of Phaser tilemap layers', () => {
   it.each([['TilemapLayer', false], ['TilemapGPULayer', true]])('lights each tile of a %s through its tileset\'s normal map (the texture\'s data source), flipped tiles mirrored, rotated tiles turned', async (_, gpuTilemap) => {
-    const flat = imageNormal(FLAT_TEXEL);
+    const flat = imageNormal(FLAT_TEXEL), top = imageNormal(TOP_TEXEL);
     // Unmoved, then panned and zoomed (the tiles Phaser draws are the tiles in sight).
     const views = [{ scroll: [0, 0] as [number, number], zoom: 1 }, { scroll: [40, 40] as [number, number], zoom: 1.25 }];
     for (const [view, lightRotation] of views.flatMap((v) => [FROM_EAST, FROM_WEST, FROM_NORTH].map((l) => [v, l] as const))) {
@@ -202,12 +202,17 @@ describe('normal maps of Phaser tilemap layers', () => {
       const at = `light ${lightRotation.toFixed(2)}, scroll ${view.scroll}, zoom ${view.zoom}`;
       expectNear(red.slice(0, 5), litBy(lightRotation), `tile, ${at}`);
       expectNear(red.slice(5, 10), litBy(lightRotation, { mirrored: true }), `flipped tile, ${at}`);
-      expectNear(red.slice(10, 15), litBy(lightRotation, { normal: flat }), `second tile, ${at}`);
+      // The second tile: its top two points (6 units up) in its top rows, the centre and the bottom two below them.
+      const second = red.slice(10, 15);
+      expectNear([second[1], second[2]], litBy(lightRotation, { normal: top }), `second tile's top, ${at}`);
+      expectNear([second[0], second[3], second[4]], litBy(lightRotation, { normal: flat }), `second tile, ${at}`);
       expectNear(red.slice(15, 20), litBy(lightRotation, { rotation: gpuTilemap ? 0 : Math.PI / 2 }), `rotated tile, ${at}`);
     }
     // Lit from the two sides, the tile and its flipped copy swap, far beyond the tolerance.
     expect(litBy(FROM_EAST) - litBy(FROM_WEST)).toBeGreaterThan(100);
     expect(Math.abs(litBy(FROM_EAST, { normal: flat }) - (ALBEDO / 255) * 255 * (AMBIENT + 1))).toBeGreaterThan(30);
+    // A tile drawn upside down would show its top rows below: lit from the north they differ by far.
+    expect(litBy(FROM_NORTH, { normal: top }) - litBy(FROM_NORTH, { normal: flat })).toBeGreaterThan(30);
   });
 });
 

@@ -22,8 +22,8 @@ export const SPRITES = { normal: [40, 40], plain: [100, 40], erased: [40, 90] } 
 
 /**
  * Phaser only: a tilemap layer of three tiles (SPRITE_SIZE square) from a tileset of two, whose normal
- * map (the tileset texture's data source) is NORMAL_TEXEL on the first tile and FLAT_TEXEL on the
- * second. World centres: the first tile (T), the first tile flipped left–right (F), the second tile (S),
+ * map (the tileset texture's data source) is NORMAL_TEXEL on the first tile and, on the second,
+ * TOP_TEXEL in its top rows and FLAT_TEXEL below. World centres: the first tile (T), the first tile flipped left–right (F), the second tile (S),
  * the first tile turned a quarter clockwise (R; a TilemapLayer's tile rotation: a TilemapGPULayer has none).
  */
 export const TILES = { mapped: [84, 84], flipped: [108, 84], flat: [132, 84], rotated: [60, 84] } as const satisfies Record<string, readonly [number, number]>;
@@ -34,8 +34,11 @@ export const TILES = { mapped: [84, 84], flipped: [108, 84], flat: [132, 84], ro
 export const TILE_DATA: readonly (readonly number[])[] = [
   [-1, -1, -1, -1, -1, -1], [-1, -1, -1, -1, -1, -1], [-1, -1, -1, -1, -1, -1], [-1, -1, 0, 0, 0, 1],
 ];
-/** The second tile's normal: straight up out of the image. */
+/** The second tile's normal below its top TOP_ROWS rows: straight up out of the image. */
 export const FLAT_TEXEL: readonly [number, number, number] = [128, 128, 255];
+/** The second tile's normal in its top TOP_ROWS rows (the tile's top, the right way up): (0, −0.6, 0.8), facing up the image. */
+export const TOP_TEXEL: readonly [number, number, number] = [128, 204, 230];
+export const TOP_ROWS = 8;
 
 /**
  * Both engines: a sprite with the normal map in a lit group of layers GROUP_LAYERS, lit by the

@@ -7,7 +7,7 @@ import { PenumbraGroup, PenumbraLayer } from '../../../src/integrations/pixi/ind
 import { PenumbraPlugin } from '../../../src/integrations/phaser/index';
 import { DirectionalLight } from '../../../src/index';
 import {
-  ALBEDO, AMBIENT, CANVAS, ELEVATION, FLAT_TEXEL, GROUPED, GROUP_LAYERS, NORMAL_TEXEL, SPRITES, SPRITE_SIZE, TILE_DATA, WORLD_LAYERS,
+  ALBEDO, AMBIENT, CANVAS, ELEVATION, FLAT_TEXEL, GROUPED, GROUP_LAYERS, NORMAL_TEXEL, SPRITES, SPRITE_SIZE, TILE_DATA, TOP_ROWS, TOP_TEXEL, WORLD_LAYERS,
   type Engine, type NormalsState,
 } from './contract';
 
@@ -119,7 +119,9 @@ async function phaserScene(): Promise<Scene> {
       this.add.image(SPRITES.erased[0], SPRITES.erased[1], 'lit');
       this.add.image(SPRITES.erased[0], SPRITES.erased[1], 'plain');
       // A tilemap layer from a normal-mapped tileset: its first tile, the same flipped, its second tile.
-      this.textures.addCanvas('tiles', solid([ALBEDO, ALBEDO, ALBEDO], [ALBEDO, ALBEDO, ALBEDO]))!.setDataSource(solid(NORMAL_TEXEL, FLAT_TEXEL));
+      const tileNormals = solid(NORMAL_TEXEL, FLAT_TEXEL);
+      tileNormals.getContext('2d')!.drawImage(solid(TOP_TEXEL), 0, 0, SPRITE_SIZE, TOP_ROWS, SPRITE_SIZE, 0, SPRITE_SIZE, TOP_ROWS);
+      this.textures.addCanvas('tiles', solid([ALBEDO, ALBEDO, ALBEDO], [ALBEDO, ALBEDO, ALBEDO]))!.setDataSource(tileNormals);
       // Drawn by a TilemapLayer or (the same tiles) by a TilemapGPULayer, one visible at a time.
       const tiles = (gpu: boolean) => {
         const map = this.make.tilemap({ data: TILE_DATA.map((row) => [...row]), tileWidth: SPRITE_SIZE, tileHeight: SPRITE_SIZE });
