@@ -39,22 +39,25 @@ flat in vec3 v_shadowKept;
 layout(location = 1) out vec4 o_specular;
 uniform sampler2D u_normals;  // the scene's normals, premultiplied by coverage (src/passes/surfaceLayout.ts)
 uniform sampler2D u_material; // specular, shininess code, emissive, coverage, premultiplied
-uniform vec3 u_surfaceFrame;  // 1 / lightmap width, 1 / lightmap height, 1 when the surface's row 0 is the top
+uniform vec3 u_surfaceFrame;  // 1 / lightmap width, 1 / lightmap height, 1 when the surface's row 0 is the top of the view
 // Positional lights: position xy and height, w 0. Directional: the unit vector towards the light, w 1.
 flat in vec4 v_towardsLight;
 
-// The surface's texture coordinates at this lightmap pixel: the surface covers the same view.
-vec2 surfaceCoordinates() {
-  vec2 uv = gl_FragCoord.xy * u_surfaceFrame.xy;
-  return u_surfaceFrame.z > 0.5 ? vec2(uv.x, 1.0 - uv.y) : uv;
+// The surface's texel under this lightmap pixel: the surface covers the same view at its own size
+// (the renderer's), so with lightmapScale below 1 one surface pixel stands for several. Fetched
+// unfiltered: the scene target is nearest-sampled anyway.
+ivec2 surfaceTexel(highp sampler2D surface) {
+  ivec2 size = textureSize(surface, 0);
+  ivec2 texel = min(ivec2(gl_FragCoord.xy * u_surfaceFrame.xy * vec2(size)), size - 1);
+  return u_surfaceFrame.z > 0.5 ? ivec2(texel.x, size.y - 1 - texel.y) : texel;
 }
 
 // Writes the light, already weighted by what its shadows let pass, through the surface: diffuse
 // mix(1, N·L, coverage) at location 0, the Blinn-Phong highlight (viewer straight above) at 1.
 // Where no normal was written (coverage 0) that is the light as without normals and no highlight.
 void writeThroughSurface(vec3 light) {
-  vec2 uv = surfaceCoordinates();
-  vec4 encodedNormal = texture(u_normals, uv);
+  ivec2 texel = surfaceTexel(u_normals);
+  vec4 encodedNormal = texelFetch(u_normals, texel, 0);
   float coverage = encodedNormal.a;
   vec3 normal = coverage > 0.0 ? encodedNormal.rgb / coverage * 2.0 - 1.0 : vec3(0.0, 0.0, 1.0);
   float normalLength = length(normal);
@@ -62,12 +65,15 @@ void writeThroughSurface(vec3 light) {
   vec3 towardsLight = v_towardsLight.w > 0.5 ? v_towardsLight.xyz : normalize(vec3(v_towardsLight.xy - v_world, v_towardsLight.z));
   float diffuse = max(dot(normal, towardsLight), 0.0);
   o_light = vec4(light * mix(1.0, diffuse, coverage), 0.0);
-  vec4 material = texture(u_material, uv);
   float highlight = 0.0;
-  if (material.a > 0.0 && diffuse > 0.0) {
-    float shininess = exp2(material.g / material.a * PENUMBRA_SHININESS_LOG2_MAX);
-    vec3 halfway = normalize(towardsLight + vec3(0.0, 0.0, 1.0));
-    highlight = coverage * material.r / material.a * pow(max(dot(normal, halfway), 0.0), shininess);
+  // The material only where a highlight can be: a surface facing the light.
+  if (coverage > 0.0 && diffuse > 0.0) {
+    vec4 material = texelFetch(u_material, texel, 0);
+    if (material.a > 0.0) {
+      float shininess = exp2(material.g / material.a * PENUMBRA_SHININESS_LOG2_MAX);
+      vec3 halfway = normalize(towardsLight + vec3(0.0, 0.0, 1.0));
+      highlight = coverage * material.r / material.a * pow(max(dot(normal, halfway), 0.0), shininess);
+    }
   }
   o_specular = vec4(light * highlight, 0.0);
 }
