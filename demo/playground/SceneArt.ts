@@ -1,7 +1,7 @@
 import type { mat4 } from 'gl-matrix';
 import type { Hull } from 'penumbra-gl';
 import { hullLocalToWorld, hullWorldPoint } from './hullShape';
-import { createTexture, drawBarrel, drawFloorTiles, drawStone, drawWalker } from './textures';
+import { createTexture, drawBarrel, drawFloorTiles, drawStone, drawWalker, linkProgram } from './textures';
 
 const VERTEX_SHADER = `#version 300 es
 in vec2 a_position;
@@ -77,7 +77,7 @@ export class SceneArt {
   private readonly previous: [number, number] = [0, 0];
 
   constructor(private readonly gl: WebGL2RenderingContext) {
-    this.program = linkProgram(gl);
+    this.program = linkProgram(gl, 'scene', VERTEX_SHADER, FRAGMENT_SHADER);
     this.viewProjectionLocation = gl.getUniformLocation(this.program, 'u_viewProjection')!;
     this.vao = gl.createVertexArray()!;
     this.buffer = gl.createBuffer()!;
@@ -249,19 +249,4 @@ export class SceneArt {
     gl.drawArrays(gl.TRIANGLES, 0, this.count);
     this.count = 0;
   }
-}
-
-function linkProgram(gl: WebGL2RenderingContext): WebGLProgram {
-  const program = gl.createProgram()!;
-  for (const [type, source] of [[gl.VERTEX_SHADER, VERTEX_SHADER], [gl.FRAGMENT_SHADER, FRAGMENT_SHADER]] as const) {
-    const shader = gl.createShader(type)!;
-    gl.shaderSource(shader, source);
-    gl.compileShader(shader);
-    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(`playground: scene shader: ${gl.getShaderInfoLog(shader)}`);
-    gl.attachShader(program, shader);
-    gl.deleteShader(shader);
-  }
-  gl.linkProgram(program);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(`playground: scene program: ${gl.getProgramInfoLog(program)}`);
-  return program;
 }

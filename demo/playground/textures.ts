@@ -21,11 +21,23 @@ function canvas2d(size: number): CanvasRenderingContext2D {
   return canvas.getContext('2d')!;
 }
 
-/** Uploads a canvas (or pixels) as a mipmapped, repeating or clamped texture. */
-export function createTexture(gl: WebGL2RenderingContext, source: TexImageSource, repeat: boolean): WebGLTexture {
+/** Raw RGBA pixels, rows top-down as generated. */
+export interface RgbaPixels {
+  width: number;
+  height: number;
+  pixels: Uint8Array;
+}
+
+/** Uploads a canvas (or raw RGBA pixels) as a mipmapped, repeating or clamped texture. */
+export function createTexture(gl: WebGL2RenderingContext, source: TexImageSource | RgbaPixels, repeat: boolean): WebGLTexture {
   const texture = gl.createTexture()!;
   gl.bindTexture(gl.TEXTURE_2D, texture);
-  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA, gl.RGBA, gl.UNSIGNED_BYTE, source);
+  if ('pixels' in source) {
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, source.width, source.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, source.pixels);
+  } else {
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA, gl.RGBA, gl.UNSIGNED_BYTE, source);
+  }
   gl.generateMipmap(gl.TEXTURE_2D);
   const wrap = repeat ? gl.REPEAT : gl.CLAMP_TO_EDGE;
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, wrap);
@@ -34,6 +46,22 @@ export function createTexture(gl: WebGL2RenderingContext, source: TexImageSource
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
   gl.bindTexture(gl.TEXTURE_2D, null);
   return texture;
+}
+
+/** Compiles and links a program of the playground's art; throws naming `name` and the log when that fails. */
+export function linkProgram(gl: WebGL2RenderingContext, name: string, vertexSource: string, fragmentSource: string): WebGLProgram {
+  const program = gl.createProgram()!;
+  for (const [type, source] of [[gl.VERTEX_SHADER, vertexSource], [gl.FRAGMENT_SHADER, fragmentSource]] as const) {
+    const shader = gl.createShader(type)!;
+    gl.shaderSource(shader, source);
+    gl.compileShader(shader);
+    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(`playground: ${name} shader: ${gl.getShaderInfoLog(shader)}`);
+    gl.attachShader(program, shader);
+    gl.deleteShader(shader);
+  }
+  gl.linkProgram(program);
+  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(`playground: ${name} program: ${gl.getProgramInfoLog(program)}`);
+  return program;
 }
 
 /** Worn stone floor tiles, 4 × 4 per texture, with grout and speckle. */

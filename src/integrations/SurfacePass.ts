@@ -28,6 +28,32 @@ export interface SurfaceQuad {
   alpha: number;
 }
 
+/** Sets the quad's texture coordinates to the rectangle from (u0, v0) at its top-left corner to (u1, v1) at its bottom-right. */
+export function setQuadUvs(quad: SurfaceQuad, u0: number, v0: number, u1: number, v1: number): void {
+  const uvs = quad.uvs;
+  uvs[0] = u0; uvs[1] = v0;
+  uvs[2] = u1; uvs[3] = v0;
+  uvs[4] = u0; uvs[5] = v1;
+  uvs[6] = u1; uvs[7] = v1;
+}
+
+/** Sets the quad's image → world map to a rotation after a scale (negative for a flip) of each image axis. */
+export function setWorldFromImage(quad: SurfaceQuad, rotation: number, scaleX: number, scaleY: number): void {
+  const cos = Math.cos(rotation), sin = Math.sin(rotation), w = quad.worldFromImage;
+  w[0] = cos * scaleX;
+  w[1] = sin * scaleX;
+  w[2] = -sin * scaleY;
+  w[3] = cos * scaleY;
+}
+
+/** Copies a material's values into the quad. */
+export function setQuadMaterial(quad: SurfaceQuad, material: Readonly<Pick<SurfaceQuad, 'greenUp' | 'specular' | 'shininess' | 'emissive'>>): void {
+  quad.greenUp = material.greenUp;
+  quad.specular = material.specular;
+  quad.shininess = material.shininess;
+  quad.emissive = material.emissive;
+}
+
 /** A zeroed {@link SurfaceQuad}, to fill. */
 export function createSurfaceQuad(): SurfaceQuad {
   return {

@@ -1,12 +1,7 @@
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join, resolve } from 'node:path';
-import type { Browser, Page } from 'puppeteer';
-import { build } from 'vite';
+import type { Page } from 'puppeteer';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { collectPageErrors, launchChromium } from './chromium';
+import { openBuiltPage, type BuiltPage } from './builtPage';
 import { ALBEDO, AMBIENT, ELEVATION, FLAT_TEXEL, GROUPED, NORMAL_TEXEL, SPRITES, TILES, TOP_TEXEL, type Engine, type NormalsState } from './engine-normals-page/contract';
-import { serveDirectory, type StaticServer } from './staticServer';
 
 // Normal maps in the real PixiJS and Phaser integrations, against the formula of docs/normal-maps.md
 // computed here: a sprite of uniform normal (N) lit by a directional light shows
@@ -24,9 +19,7 @@ import { serveDirectory, type StaticServer } from './staticServer';
 const TOLERANCE = 3;
 const LIT_FLAT = 255 * (ALBEDO / 255) * (AMBIENT + 1);
 
-let outDir: string;
-let server: StaticServer;
-let browser: Browser;
+let built: BuiltPage;
 let page: Page;
 let errors: string[];
 
@@ -81,26 +74,12 @@ function expectNear(values: number[], expected: number, what: string): void {
 }
 
 beforeAll(async () => {
-  outDir = mkdtempSync(join(tmpdir(), 'penumbra-engine-normals-'));
-  await build({
-    configFile: false,
-    root: resolve(import.meta.dirname, 'engine-normals-page'),
-    base: './',
-    logLevel: 'warn',
-    build: { outDir, emptyOutDir: true, chunkSizeWarningLimit: 4000 },
-  });
-  server = await serveDirectory(outDir);
-  browser = await launchChromium();
-  page = await browser.newPage();
-  errors = collectPageErrors(page);
-  await page.goto(server.url, { waitUntil: 'load', timeout: 120_000 });
-  await page.waitForFunction(() => window.engineNormals !== undefined, { timeout: 60_000 });
-}, 300_000);  // a Vite build and Chromium on a shared machine
+  built = await openBuiltPage('engine-normals-page', 'engineNormals');
+  ({ page, pageErrors: errors } = built);
+}, 300_000);
 
 afterAll(async () => {
-  await browser?.close();
-  await server?.close();
-  if (outDir) rmSync(outDir, { recursive: true, force: true });
+  await built?.close();
 });
 
 for (const engine of ['pixi', 'phaser'] as const) {

@@ -1,21 +1,14 @@
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join, resolve } from 'node:path';
-import type { Browser, Page } from 'puppeteer';
-import { build } from 'vite';
+import type { Page } from 'puppeteer';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { openBuiltPage, type BuiltPage } from './builtPage';
 import type { PenumbraPluginOptions } from '../../src/integrations/phaser/PenumbraPlugin';
-import { collectPageErrors, launchChromium } from './chromium';
 import { CANVAS, type PhaserRoute, type RendererReport } from './engine-options-page/contract';
-import { serveDirectory, type StaticServer } from './staticServer';
 
 // Renderer options given to the real PixiJS and Phaser integrations reach the renderer: the
 // lightmap texture's size on the GL context (lightmapScale), stats.cpuTime (measureCpuTime) and
 // the rest read back from the renderer each engine built.
 
-let outDir: string;
-let server: StaticServer;
-let browser: Browser;
+let built: BuiltPage;
 let page: Page;
 let errors: string[];
 
@@ -26,26 +19,12 @@ const OPTIONS: PenumbraPluginOptions = {
 const HALF: [number, number] = [CANVAS[0] / 2, CANVAS[1] / 2];
 
 beforeAll(async () => {
-  outDir = mkdtempSync(join(tmpdir(), 'penumbra-engine-options-'));
-  await build({
-    configFile: false,
-    root: resolve(import.meta.dirname, 'engine-options-page'),
-    base: './',
-    logLevel: 'warn',
-    build: { outDir, emptyOutDir: true, chunkSizeWarningLimit: 4000 },
-  });
-  server = await serveDirectory(outDir);
-  browser = await launchChromium();
-  page = await browser.newPage();
-  errors = collectPageErrors(page);
-  await page.goto(server.url, { waitUntil: 'load' });
-  await page.waitForFunction(() => window.engineOptions !== undefined);
-});
+  built = await openBuiltPage('engine-options-page', 'engineOptions');
+  ({ page, pageErrors: errors } = built);
+}, 300_000);  // a Vite build and Chromium on a shared machine
 
 afterAll(async () => {
-  await browser?.close();
-  await server?.close();
-  if (outDir) rmSync(outDir, { recursive: true, force: true });
+  await built?.close();
 });
 
 function pixi(options: PenumbraPluginOptions): Promise<RendererReport> {

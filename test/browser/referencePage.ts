@@ -1,13 +1,7 @@
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join, resolve } from 'node:path';
-import type { Page } from 'puppeteer';
-import { build } from 'vite';
 import type { HostStateReport } from '../gl/hostParameters';
 import type { IlluminationComparison } from '../reference/illuminationComparison';
 import type { ReferenceScene } from '../reference/scenes';
-import { collectPageErrors, launchChromium } from './chromium';
-import { serveDirectory } from './staticServer';
+import { openBuiltPage, type BuiltPage } from './builtPage';
 import type { DirectionalReferenceScene } from '../reference/directionalReference';
 import type { SurfaceFigures } from '../reference/surfaceComparison';
 
@@ -29,44 +23,12 @@ export interface ReferencePageApi {
 }
 
 /** The reference page open in headless Chromium. */
-export interface ReferencePage {
-  page: Page;
-  /** Console errors and uncaught exceptions of the page so far. */
-  pageErrors: string[];
-  /** Closes the browser and the server and removes the built page. */
-  close(): Promise<void>;
-}
+export type ReferencePage = BuiltPage;
 
 /**
  * Builds test/browser/reference-page with Vite (it imports the library's sources and the shared
  * test code), serves it and opens it in Chromium, ready once its entry points are on `window`.
  */
-export async function openReferencePage(): Promise<ReferencePage> {
-  const outDir = mkdtempSync(join(tmpdir(), 'penumbra-reference-page-'));
-  // Whatever is open when a later step throws is closed again, in reverse order.
-  const closers: (() => unknown)[] = [() => rmSync(outDir, { recursive: true, force: true })];
-  const close = async () => {
-    for (const closer of [...closers].reverse()) await closer();
-  };
-  try {
-    await build({
-      configFile: false,
-      root: resolve(import.meta.dirname, 'reference-page'),
-      base: './',
-      logLevel: 'warn',
-      build: { outDir, emptyOutDir: true },
-    });
-    const server = await serveDirectory(outDir);
-    closers.push(() => server.close());
-    const browser = await launchChromium();
-    closers.push(() => browser.close());
-    const page = await browser.newPage();
-    const pageErrors = collectPageErrors(page);
-    await page.goto(server.url, { waitUntil: 'load' });
-    await page.waitForFunction(() => 'renderScene' in window);
-    return { page, pageErrors, close };
-  } catch (error) {
-    await close();
-    throw error;
-  }
+export function openReferencePage(): Promise<ReferencePage> {
+  return openBuiltPage('reference-page', 'renderScene');
 }

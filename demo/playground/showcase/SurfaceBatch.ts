@@ -1,6 +1,7 @@
 import type { mat4 } from 'gl-matrix';
 import { SURFACE_GLSL } from 'penumbra-gl';
 import type { SurfaceImage } from './surfaceImage';
+import { createTexture, linkProgram } from '../textures';
 
 /**
  * Draws textured quads with normal maps into the renderer's scene target: colour at location 0,
@@ -74,7 +75,7 @@ export class SurfaceBatch {
   private readonly owned: WebGLTexture[] = [];
 
   constructor(private readonly gl: WebGL2RenderingContext) {
-    this.program = linkProgram(gl);
+    this.program = linkProgram(gl, 'showcase', VERTEX_SHADER, FRAGMENT_SHADER);
     this.viewProjectionLocation = gl.getUniformLocation(this.program, 'u_viewProjection')!;
     gl.useProgram(this.program);
     ['u_albedo', 'u_normal', 'u_material'].forEach((name, unit) => gl.uniform1i(gl.getUniformLocation(this.program, name), unit));
@@ -96,22 +97,11 @@ export class SurfaceBatch {
   upload(image: SurfaceImage, repeat: boolean): SurfaceTextures {
     const gl = this.gl;
     const make = (pixels: Uint8Array) => {
-      const texture = gl.createTexture()!;
-      gl.bindTexture(gl.TEXTURE_2D, texture);
-      gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
-      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, image.width, image.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-      gl.generateMipmap(gl.TEXTURE_2D);
-      const wrap = repeat ? gl.REPEAT : gl.CLAMP_TO_EDGE;
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, wrap);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, wrap);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+      const texture = createTexture(gl, { width: image.width, height: image.height, pixels }, repeat);
       this.owned.push(texture);
       return texture;
     };
-    const textures = { albedo: make(image.albedo), normal: make(image.normal), material: make(image.material), width: image.width, height: image.height };
-    gl.bindTexture(gl.TEXTURE_2D, null);
-    return textures;
+    return { albedo: make(image.albedo), normal: make(image.normal), material: make(image.material), width: image.width, height: image.height };
   }
 
   /** Starts drawing into the bound framebuffer (the renderer's scene target, between beginDraw and draw). */
@@ -191,19 +181,4 @@ export class SurfaceBatch {
     vertices[o + 7] = decal;
     this.count++;
   }
-}
-
-function linkProgram(gl: WebGL2RenderingContext): WebGLProgram {
-  const program = gl.createProgram()!;
-  for (const [type, source] of [[gl.VERTEX_SHADER, VERTEX_SHADER], [gl.FRAGMENT_SHADER, FRAGMENT_SHADER]] as const) {
-    const shader = gl.createShader(type)!;
-    gl.shaderSource(shader, source);
-    gl.compileShader(shader);
-    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(`playground: showcase shader: ${gl.getShaderInfoLog(shader)}`);
-    gl.attachShader(program, shader);
-    gl.deleteShader(shader);
-  }
-  gl.linkProgram(program);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(`playground: showcase program: ${gl.getProgramInfoLog(program)}`);
-  return program;
 }

@@ -2,7 +2,7 @@ import Phaser from 'phaser';
 import type { SurfaceTextures } from '../../index';
 import { assertBoolean, assertFinite, assertUnit, describeValue } from '../../scene/validate';
 import type { InPlaceView } from '../inPlaceLighting';
-import { SurfacePass, createSurfaceQuad } from '../SurfacePass';
+import { SurfacePass, createSurfaceQuad, setQuadMaterial, setQuadUvs, setWorldFromImage } from '../SurfacePass';
 
 /**
  * The material of normal-mapped images and sprites, for a plugin made with `normals: true`
@@ -127,26 +127,11 @@ export class PhaserSurfaces {
     corners[4] = q[2]; corners[5] = q[3];
     corners[6] = q[4]; corners[7] = q[5];
     // A frame, or a crop, which Phaser gives the same texture coordinates (its typings leave them out).
-    const uv = texturer.uvSource as UvRect, uvs = quad.uvs;
-    uvs[0] = uv.u0; uvs[1] = uv.v0;
-    uvs[2] = uv.u1; uvs[3] = uv.v0;
-    uvs[4] = uv.u0; uvs[5] = uv.v1;
-    uvs[6] = uv.u1; uvs[7] = uv.v1;
+    const uv = texturer.uvSource as UvRect;
+    setQuadUvs(quad, uv.u0, uv.v0, uv.u1, uv.v1);
     // Image axes → world axes: the object's rotation, scale and flips (the transformer's sprite matrix without the camera).
-    const cos = Math.cos(object.rotation), sin = Math.sin(object.rotation);
-    const sx = object.flipX ? -object.scaleX : object.scaleX, sy = object.flipY ? -object.scaleY : object.scaleY;
-    const w = quad.worldFromImage;
-    w[0] = cos * sx;
-    w[1] = sin * sx;
-    w[2] = -sin * sy;
-    w[3] = cos * sy;
-    if (quad.normals) {
-      const material = this.objectMaterials.get(object) ?? this.textureMaterials.get(object.texture.key) ?? DEFAULT_MATERIAL;
-      quad.greenUp = material.greenUp;
-      quad.specular = material.specular;
-      quad.shininess = material.shininess;
-      quad.emissive = material.emissive;
-    }
+    setWorldFromImage(quad, object.rotation, object.flipX ? -object.scaleX : object.scaleX, object.flipY ? -object.scaleY : object.scaleY);
+    if (quad.normals) setQuadMaterial(quad, this.objectMaterials.get(object) ?? this.textureMaterials.get(object.texture.key) ?? DEFAULT_MATERIAL);
     this.pass.add(quad);
   }
 
@@ -252,26 +237,10 @@ export class PhaserSurfaces {
     const width = tileset.glTexture!.width, height = tileset.glTexture!.height;
     const u0 = coordinates.x / width, u1 = (coordinates.x + tileset.tileWidth) / width;
     const top = 1 - coordinates.y / height, bottom = 1 - (coordinates.y + tileset.tileHeight) / height;
-    const uvs = quad.uvs;
-    uvs[0] = u0; uvs[1] = top;
-    uvs[2] = u1; uvs[3] = top;
-    uvs[4] = u0; uvs[5] = bottom;
-    uvs[6] = u1; uvs[7] = bottom;
+    setQuadUvs(quad, u0, top, u1, bottom);
     // Image axes → world axes: the tile's rotation, the layer's scale and the tile's flips (the layer's rotation is not drawn).
-    const cos = Math.cos(rotation), sin = Math.sin(rotation);
-    const sx = flipX ? -layer.scaleX : layer.scaleX, sy = flipY ? -layer.scaleY : layer.scaleY;
-    const w = quad.worldFromImage;
-    w[0] = cos * sx;
-    w[1] = sin * sx;
-    w[2] = -sin * sy;
-    w[3] = cos * sy;
-    if (quad.normals) {
-      const material = this.objectMaterials.get(layer) ?? this.textureMaterials.get(image.key) ?? DEFAULT_MATERIAL;
-      quad.greenUp = material.greenUp;
-      quad.specular = material.specular;
-      quad.shininess = material.shininess;
-      quad.emissive = material.emissive;
-    }
+    setWorldFromImage(quad, rotation, flipX ? -layer.scaleX : layer.scaleX, flipY ? -layer.scaleY : layer.scaleY);
+    if (quad.normals) setQuadMaterial(quad, this.objectMaterials.get(layer) ?? this.textureMaterials.get(image.key) ?? DEFAULT_MATERIAL);
     this.pass.add(quad);
   }
 }

@@ -2,7 +2,7 @@ import { Sprite, Texture, TextureSource, type Container, type WebGLRenderer } fr
 import type { SurfaceTextures } from '../../index';
 import { assertBoolean, assertFinite, assertUnit, describeValue } from '../../scene/validate';
 import type { InPlaceView } from '../inPlaceLighting';
-import { SurfacePass, createSurfaceQuad } from '../SurfacePass';
+import { SurfacePass, createSurfaceQuad, setQuadMaterial } from '../SurfacePass';
 
 /**
  * A sprite's surface for a lighting layer made with `normals: true`: its normal map and material
@@ -136,12 +136,7 @@ export class PixiSurfaces {
     w[1] = this.ib * m.a + this.id * m.b;
     w[2] = this.ia * m.c + this.ic * m.d;
     w[3] = this.ib * m.c + this.id * m.d;
-    if (surface) {
-      quad.greenUp = surface.greenUp;
-      quad.specular = surface.specular;
-      quad.shininess = surface.shininess;
-      quad.emissive = surface.emissive;
-    }
+    if (surface) setQuadMaterial(quad, surface);
     this.pass.add(quad);
   }
 }

@@ -6,6 +6,7 @@ import Phaser from 'phaser';
 import { PenumbraGroup, PenumbraLayer } from '../../../src/integrations/pixi/index';
 import { PenumbraPlugin } from '../../../src/integrations/phaser/index';
 import { DirectionalLight } from '../../../src/index';
+import { afterDispatch, nextEvent } from '../pageEvents';
 import {
   ALBEDO, AMBIENT, CANVAS, ELEVATION, FLAT_TEXEL, GROUPED, GROUP_LAYERS, NORMAL_TEXEL, SPRITES, SPRITE_SIZE, TILE_DATA, TOP_ROWS, TOP_TEXEL, WORLD_LAYERS,
   type Engine, type NormalsState,
@@ -161,22 +162,6 @@ async function phaserScene(): Promise<Scene> {
     },
     render: () => game.step(performance.now(), 0),
   };
-}
-
-/** The next `type` event of `canvas`; fails after 10 s. */
-function nextEvent(canvas: HTMLCanvasElement, type: string): Promise<void> {
-  return new Promise((done, fail) => {
-    const timer = setTimeout(() => fail(new Error(`no ${type} event within 10 s`)), 10_000);
-    canvas.addEventListener(type, () => {
-      clearTimeout(timer);
-      done();
-    }, { once: true });
-  });
-}
-
-/** Resolves after the event being dispatched has reached every listener (a promise continuation runs inside the dispatch). */
-function afterDispatch(): Promise<void> {
-  return new Promise((done) => setTimeout(done, 0));
 }
 
 const scenes: Partial<Record<Engine, Promise<Scene>>> = {};

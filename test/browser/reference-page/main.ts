@@ -12,6 +12,7 @@ import { callsThrowing } from '../../gl/fixtures';
 import { checkHostStateAcrossPublicCalls, type HostStateReport } from '../../gl/hostParameters';
 import { compareReferenceScene, type IlluminationComparison } from '../../reference/illuminationComparison';
 import { PenumbraRenderer } from '../../../src/index';
+import { afterDispatch, nextEvent } from '../pageEvents';
 import { compareSurfaceLighting, createSurfaceHost, type SurfaceFigures } from '../../reference/surfaceComparison';
 import { SURFACE_AMBIENT, SURFACE_CASES, SURFACE_HEIGHT, SURFACE_WIDTH } from '../../reference/surfaceReference';
 
@@ -52,22 +53,6 @@ function renderWith<T extends { name: string; width: number; height: number }>(
   return pixels;
 }
 
-/** Resolves on the canvas' next `type` event; rejects after 10 s so a missing event fails clearly. */
-function nextEvent(type: string): Promise<void> {
-  return new Promise((done, fail) => {
-    const timer = setTimeout(() => fail(new Error(`no ${type} event within 10 s`)), 10_000);
-    canvas.addEventListener(type, () => {
-      clearTimeout(timer);
-      done();
-    }, { once: true });
-  });
-}
-
-/** Waits until the lost event's dispatch is over: Chromium allows restoring only then (it reads defaultPrevented afterwards). */
-function afterDispatch(): Promise<void> {
-  return new Promise((done) => setTimeout(done, 0));
-}
-
 /**
  * Renders `scene`, loses and restores the context, renders again: the lightmaps before and after.
  * Calls are made in the window between the loss and its event (the browser queues the event), and
@@ -88,7 +73,7 @@ async function renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before:
   renderer = createSceneRenderer(gl, scene);
   renderer.renderLightmap();
   const before = readLightmap(gl, renderer.lightmapTexture, scene.width, scene.height);
-  const lost = nextEvent('webglcontextlost');
+  const lost = nextEvent(canvas, 'webglcontextlost');
   loseContext.loseContext();
   windowErrors.push(...callsThrowing(renderer, scene.width, scene.height).map((error) => `before the lost event: ${error}`));
   await lost;
@@ -103,13 +88,13 @@ async function renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before:
   }
   // A promise continuation still runs inside the lost event's dispatch, so wait a task.
   await afterDispatch();
-  const lostAgain = nextEvent('webglcontextlost');
-  let restored = nextEvent('webglcontextrestored');
+  const lostAgain = nextEvent(canvas, 'webglcontextlost');
+  let restored = nextEvent(canvas, 'webglcontextrestored');
   loseContext.restoreContext();
   await restored;
   await lostAgain;
   await afterDispatch();
-  restored = nextEvent('webglcontextrestored');
+  restored = nextEvent(canvas, 'webglcontextrestored');
   loseContext.restoreContext();
   await restored;
   renderer.renderLightmap();
@@ -172,11 +157,11 @@ async function surfacesAcrossContextLoss(): Promise<{ differingBytes: number; li
     return bytes;
   };
   const before = frame();
-  const lost = nextEvent('webglcontextlost');
+  const lost = nextEvent(canvas, 'webglcontextlost');
   loseContext.loseContext();
   await lost;
   await afterDispatch();
-  const restored = nextEvent('webglcontextrestored');
+  const restored = nextEvent(canvas, 'webglcontextrestored');
   loseContext.restoreContext();
   await restored;
   const after = frame();
