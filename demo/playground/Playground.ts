@@ -53,6 +53,8 @@ export class Playground extends EventTarget {
    */
   private readonly companions = new WeakMap<Hull, Hull[]>();
   private readonly view = new Float32Array(4);
+  /** The hulls the showcase does not draw (added in the editor), refilled each frame rather than made. */
+  private readonly editorHulls: Hull[] = [];
   private time = 0;
 
   constructor(readonly gl: WebGL2RenderingContext) {
@@ -260,7 +262,11 @@ export class Playground extends EventTarget {
     if (this._showcaseActive) {
       this.showcase.draw(viewProjection, view, renderer.hulls, renderer.lights);
       // Hulls added in the editor, and traced images, in the generic stone over the showcase's floor.
-      this.art.draw(viewProjection, view, renderer.hulls.filter((hull) => !this.showcase.draws(hull)), [], this.images, false);
+      const editorHulls = this.editorHulls;
+      editorHulls.length = 0;
+      const hulls = renderer.hulls;
+      for (let i = 0; i < hulls.length; i++) if (!this.showcase.draws(hulls[i])) editorHulls.push(hulls[i]);
+      this.art.draw(viewProjection, view, editorHulls, [], this.images, false);
     } else {
       this.art.draw(viewProjection, view, renderer.hulls, this.sprites, this.images);
     }
