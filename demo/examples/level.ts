@@ -183,6 +183,12 @@ export interface ExampleHook {
   setProp(x: number, y: number, rotation: number, scale: number, flipX: boolean): void;
   /** Sets the mouse wheel's zoom factor (1 to {@link ZOOM_FACTOR_MAX}); the camera takes it at the next update. */
   setZoom(factor: number): void;
+  /**
+   * Lights the prop through its normal map, or flat (for tests of its shadow, whose lit points
+   * would otherwise depend on which way the relief faces). Examples whose prop has no map of its
+   * own leave it out.
+   */
+  setPropRelief?(on: boolean): void;
 }
 
 declare global {

@@ -41,7 +41,8 @@ const prop = world.addChild(new Sprite({ texture: propTexture(propImage()), anch
 prop.position.set(PROP_POSITION[0], PROP_POSITION[1]);
 lighting.addOccluder(prop);
 // Its normal map, laid out as its atlas: a dome, with a glossy highlight.
-lighting.setSurface(prop, { normalMap: propTexture(propNormals()), specular: 0.6, shininess: 40 });
+const propSurface = { normalMap: propTexture(propNormals()), specular: 0.6, shininess: 40 };
+lighting.setSurface(prop, propSurface);
 let propSpinning = true;
 
 for (const lamp of LAMPS) {
@@ -183,6 +184,9 @@ window.penumbraExample = {
   },
   setZoom(factor) {
     zoomFactor = factor;
+  },
+  setPropRelief(on) {
+    lighting.setSurface(prop, on ? propSurface : null);
   },
   removeLighting() {
     lighting.destroy();

@@ -184,6 +184,8 @@ describe('PixiJS example: occluders from tiles, sprites and Graphics', () => {
     ({ page, errors } = await openExample(browser, `${server.url}pixi/`));
     await page.setViewport({ width: VIEW[0], height: VIEW[1] });
     await page.evaluate(() => window.penumbraExample!.frames(2));  // Pixi resizes on the next frame
+    // Shadows are what these tests read: the prop lit flat, not through its dome's relief.
+    await page.evaluate(() => window.penumbraExample!.setPropRelief!(false));
   });
   afterAll(async () => {
     await browser?.close();
