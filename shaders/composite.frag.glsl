@@ -3,7 +3,8 @@
 // renderer's options say, into the host's framebuffer (alpha from the scene). With the defaults
 // (exposure 1, no curve, no dithering) the result is scene × lightmap exactly. Built with NORMALS
 // for a renderer with normals: (scene × (lightmap + emissive) + highlights) × exposure, the emissive
-// from the material (docs/normal-maps.md).
+// from the material (docs/normal-maps.md). Built with EDGE_AWARE for a lightmap smaller than the
+// scene: the lightmap is upsampled without smearing it across hull outlines (see lightAt).
 precision highp float;
 precision highp sampler2D;
 
@@ -18,6 +19,10 @@ uniform sampler2D u_material; // specular, shininess code, emissive, coverage, p
 uniform bool u_flipSurface;   // whether the material's row 0 is the top of the view
 #endif
 
+#ifdef EDGE_AWARE
+uniform sampler2D u_hullMask;         // 1 inside a hull, at the scene's resolution (src/passes/HullMaskPass.ts)
+uniform sampler2D u_lightmapHullMask; // the same at the lightmap's: whether each texel's sample lies in a hull
+#endif
 in vec2 v_uv;
 out vec4 o_color;
 
@@ -38,15 +43,64 @@ float ditherThreshold() {
   return fract(52.9829189 * fract(dot(floor(gl_FragCoord.xy), vec2(0.06711056, 0.00583715))));
 }
 
+#ifdef EDGE_AWARE
+// The lightmap is smooth but across hull outlines, where a light's value jumps (dark inside a Solid
+// hull; lit inside an Illuminated one, beside the dark floor behind it). Bilinear upsampling smears
+// that jump a lightmap texel into the other side: a dark rim on the lit floor, a lit seam on the
+// shadow. So where the four texels around the pixel are not all on one side of the outlines, only
+// those on the pixel's side count, with their bilinear weights (floored, so that one on the pixel's
+// side always counts). With none on its side (a hull thinner than a texel), plain bilinear.
+// Accuracy: the pixel takes the light of the nearest samples on its side, up to a texel away.
+ivec2 lightmapCorner;    // the texel below and left of the pixel
+ivec2 lightmapLast;      // the lightmap's last texel, where the corners are clamped
+vec4 cornerWeights;      // for the texels (0, 0), (1, 0), (0, 1), (1, 1) from lightmapCorner; 0: bilinear
+bool besideOutline;
+
+void chooseLightmapTexels() {
+  vec2 position = v_uv * vec2(textureSize(u_lightmap, 0)) - 0.5;
+  vec2 corner = floor(position), f = position - corner;
+  lightmapCorner = ivec2(corner);
+  lightmapLast = textureSize(u_lightmap, 0) - 1;
+  vec4 inside = vec4(
+    texelFetch(u_lightmapHullMask, clamp(lightmapCorner, ivec2(0), lightmapLast), 0).r,
+    texelFetch(u_lightmapHullMask, clamp(lightmapCorner + ivec2(1, 0), ivec2(0), lightmapLast), 0).r,
+    texelFetch(u_lightmapHullMask, clamp(lightmapCorner + ivec2(0, 1), ivec2(0), lightmapLast), 0).r,
+    texelFetch(u_lightmapHullMask, clamp(lightmapCorner + ivec2(1, 1), ivec2(0), lightmapLast), 0).r);
+  besideOutline = false;
+  if (all(equal(inside, inside.xxxx))) return;
+  float here = texelFetch(u_hullMask, ivec2(v_uv * vec2(textureSize(u_hullMask, 0))), 0).r;
+  vec4 bilinear = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+  cornerWeights = max(bilinear, 1e-3) * vec4(equal(inside, vec4(here)));
+  float total = cornerWeights.x + cornerWeights.y + cornerWeights.z + cornerWeights.w;
+  besideOutline = total > 0.0;
+  cornerWeights /= max(total, 1e-6);
+}
+
+vec3 lightAt(sampler2D lightmap) {
+  if (!besideOutline) return texture(lightmap, v_uv).rgb;
+  return texelFetch(lightmap, clamp(lightmapCorner, ivec2(0), lightmapLast), 0).rgb * cornerWeights.x
+       + texelFetch(lightmap, clamp(lightmapCorner + ivec2(1, 0), ivec2(0), lightmapLast), 0).rgb * cornerWeights.y
+       + texelFetch(lightmap, clamp(lightmapCorner + ivec2(0, 1), ivec2(0), lightmapLast), 0).rgb * cornerWeights.z
+       + texelFetch(lightmap, clamp(lightmapCorner + ivec2(1, 1), ivec2(0), lightmapLast), 0).rgb * cornerWeights.w;
+}
+#else
+void chooseLightmapTexels() {}
+
+vec3 lightAt(sampler2D lightmap) {
+  return texture(lightmap, v_uv).rgb;
+}
+#endif
+
 void main() {
   vec4 scene = texture(u_scene, v_uv);
+  chooseLightmapTexels();
 #ifdef NORMALS
   vec4 material = texture(u_material, u_flipSurface ? vec2(v_uv.x, 1.0 - v_uv.y) : v_uv);
   float emissive = material.a > 0.0 ? material.b / material.a : 0.0;
-  vec3 lit = scene.rgb * (texture(u_lightmap, v_uv).rgb + emissive) + texture(u_specular, v_uv).rgb;
+  vec3 lit = scene.rgb * (lightAt(u_lightmap) + emissive) + lightAt(u_specular);
   vec3 color = toneMap(lit * u_exposure);
 #else
-  vec3 color = toneMap(scene.rgb * texture(u_lightmap, v_uv).rgb * u_exposure);
+  vec3 color = toneMap(scene.rgb * lightAt(u_lightmap) * u_exposure);
 #endif
   // Shifts the value by less than half an 8-bit step either way, so rounding to 8 bits moves it
   // by at most one step, and the average over neighbours follows the exact value.

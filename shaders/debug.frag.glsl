@@ -1,5 +1,6 @@
 #version 300 es
-// Debug pass: draws wireframes (light quads, shadow geometry) in a flat colour.
+// A flat colour: the debug pass's wireframes (light quads, shadow geometry), and the hull mask's
+// coverage (1 in its single channel).
 precision mediump float;
 
 uniform vec4 u_color;

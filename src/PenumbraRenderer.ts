@@ -6,7 +6,8 @@ import { HostState } from './gl/HostState';
 import { RenderTarget, type TargetFormat } from './gl/RenderTarget';
 import { LightShapes } from './gl/LightShapes';
 import { BlurPass } from './passes/BlurPass';
-import { CompositePass } from './passes/CompositePass';
+import { CompositePass, CompositeUnits } from './passes/CompositePass';
+import { HullMaskPass } from './passes/HullMaskPass';
 import { Dithering, MAX_BLUR_RADIUS, ToneMapping } from './passes/compositeLayout';
 import { DebugPass } from './passes/DebugPass';
 import { COOKIE_UNIT, LightPass, type Surface } from './passes/LightPass';
@@ -30,9 +31,12 @@ export interface PenumbraRendererOptions {
   /** Height of the internal targets in pixels. Default: the context's drawing buffer height. */
   height?: number;
   /**
-   * Resolution of the lightmap and shadow mask relative to `width × height`, in (0, 1]. Below 1
-   * (e.g. 0.5) the shadow and light passes shade a quarter of the pixels, for fill-bound scenes;
-   * the composite upscales the lightmap with linear filtering. Default `1`.
+   * Resolution of the lightmap relative to `width × height`, in (0, 1]. Below 1 (e.g. 0.5) the
+   * light passes shade a quarter of the pixels, for fill-bound scenes; the composite (`draw`,
+   * `drawInPlace`) upscales the lightmap with linear filtering except across hull outlines, where
+   * each pixel takes the light of the nearest lightmap texels on its own side (through two masks of
+   * the hulls, at both resolutions), so that a hull's dark or lit inside does not bleed a rim onto
+   * the floor beside it. Default `1`.
    */
   lightmapScale?: number;
   /** Time the renderer's JavaScript per frame into `stats.cpuTime`. Default `false`. */
@@ -95,6 +99,8 @@ interface Resources {
   scene: RenderTarget;
   light: LightPass;
   composite: CompositePass;
+  /** With a lightmap smaller than the scene (see {@link PenumbraRenderer.edgeAware}); else null. */
+  hullMask: HullMaskPass | null;
   blur: BlurPass;
   debug: DebugPass;
 }
@@ -102,10 +108,17 @@ interface Resources {
 /** Clear value of the scene target. */
 const TRANSPARENT = new Float32Array(4);
 
-/** Texture units the passes bind (from 0: the shadow textures' and the cookie's), saved and restored around every draw. */
-const TEXTURE_UNITS = Math.max(COOKIE_UNIT, ...Object.values(ShadowUnits)) + 1;
-/** With normals, the surface's units too. */
-const TEXTURE_UNITS_WITH_NORMALS = Math.max(TEXTURE_UNITS - 1, ...Object.values(SurfaceUnits)) + 1;
+/**
+ * The texture units the passes bind (from 0: the shadow textures', the cookie's and the
+ * composite's scene and lightmap; with normals the surface's; upsampling aware of hull edges the
+ * hull masks'), saved and restored around every draw.
+ */
+function textureUnits(normals: boolean, edgeAware: boolean): number {
+  const last = Math.max(COOKIE_UNIT, ...Object.values(ShadowUnits), CompositeUnits.scene, CompositeUnits.lightmap,
+    ...(normals ? [...Object.values(SurfaceUnits), CompositeUnits.specular, CompositeUnits.material] : []),
+    ...(edgeAware ? [CompositeUnits.hullMask, CompositeUnits.lightmapHullMask] : []));
+  return last + 1;
+}
 
 /**
  * Real-time 2D lights with soft shadows for an existing WebGL2 context.
@@ -198,7 +211,7 @@ export class PenumbraRenderer {
     this._normals = options.normals === undefined ? false : assertBoolean('PenumbraRenderer.normals', options.normals);
     if (options.viewProjection) this.viewProjection = options.viewProjection;
     else this.updateDefaultViewProjection();
-    this.hostState = new HostState(gl, this._normals ? TEXTURE_UNITS_WITH_NORMALS : TEXTURE_UNITS);
+    this.hostState = new HostState(gl, textureUnits(this._normals, this.edgeAware));
     // Made in the loss window, it waits for the restored context to build its GL objects.
     if (gl.isContextLost()) this.contextLost = true;
     else this.createResources();
@@ -461,6 +474,7 @@ export class PenumbraRenderer {
       this.withHostState(() => {
         resources.scene.resize(this.width, this.height);
         resources.light.resize(this.lightmapWidth, this.lightmapHeight);
+        resources.hullMask?.resize(this.width, this.height, this.lightmapWidth, this.lightmapHeight);
       });
     } catch (error) {
       return (error as Error).message;
@@ -526,8 +540,9 @@ export class PenumbraRenderer {
     this.enterHostState();
     try {
       this.renderLightmapInto(resources, layers);
+      resources.hullMask?.render(resources.shadows.records, this.geometry.recordCount, this._viewProjection);
       this.bindCompositeTarget();
-      resources.composite.render(resources.scene.texture, resources.light.lightmap.textures, this, this.surface);
+      resources.composite.render(resources.scene.texture, resources.light.lightmap.textures, this, this.surface, resources.hullMask);
       if (this.debug) {
         resources.debug.render(this.plan.draws, this.plan.drawCount, resources.shadows.records, this.geometry.recordCount, this._viewProjection);
       }
@@ -712,6 +727,14 @@ export class PenumbraRenderer {
     return this.contextLost || this.gl.isContextLost();
   }
 
+  /**
+   * Whether the composite upsamples the lightmap aware of hull outlines: when it is smaller than
+   * the scene (`lightmapScale` below 1), through the hull masks.
+   */
+  private get edgeAware(): boolean {
+    return this.lightmapScale < 1;
+  }
+
   private get lightmapWidth(): number {
     return Math.max(1, Math.round(this.width * this.lightmapScale));
   }
@@ -749,7 +772,8 @@ export class PenumbraRenderer {
           shadows: keep(new ShadowTextures(gl)),
           scene: keep(new RenderTarget(gl, { format: 'rgba8', depthStencil: true, colorAttachments: this._normals ? 3 : 1 }, this.width, this.height)),
           light: keep(new LightPass(gl, shapes, this.lightmapFormat, this.lightmapWidth, this.lightmapHeight, this._normals)),
-          composite: keep(new CompositePass(gl, this._normals)),
+          composite: keep(new CompositePass(gl, this._normals, this.edgeAware)),
+          hullMask: this.edgeAware ? keep(new HullMaskPass(gl, this.width, this.height, this.lightmapWidth, this.lightmapHeight)) : null,
           blur: keep(new BlurPass(gl, this.lightmapFormat)),
           debug: keep(new DebugPass(gl, shapes)),
         };
@@ -767,7 +791,7 @@ export class PenumbraRenderer {
     const resources = this.resources;
     if (!resources) return;
     this.withHostState(() => {
-      for (const resource of Object.values(resources)) resource.dispose();
+      for (const resource of Object.values(resources)) resource?.dispose();
     });
     this.resources = null;
   }

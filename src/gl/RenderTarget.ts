@@ -1,5 +1,5 @@
 /** Texture formats a {@link RenderTarget} can use. */
-export type TargetFormat = 'rgba8' | 'rgba16f';
+export type TargetFormat = 'rgba8' | 'rgba16f' | 'r8';
 
 /** Options of a {@link RenderTarget}. */
 export interface RenderTargetOptions {
@@ -54,12 +54,12 @@ export class RenderTarget {
     const gl = this.gl;
     this.width = width;
     this.height = height;
-    const float = this.options.format === 'rgba16f';
     const filter = this.options.linear ? gl.LINEAR : gl.NEAREST;
+    const [internalFormat, format, type] = storageOf(gl, this.options.format);
     gl.bindFramebuffer(gl.FRAMEBUFFER, this.framebuffer);
     this.textures.forEach((texture, i) => {
       gl.bindTexture(gl.TEXTURE_2D, texture);
-      gl.texImage2D(gl.TEXTURE_2D, 0, float ? gl.RGBA16F : gl.RGBA8, width, height, 0, gl.RGBA, float ? gl.HALF_FLOAT : gl.UNSIGNED_BYTE, null);
+      gl.texImage2D(gl.TEXTURE_2D, 0, internalFormat, width, height, 0, format, type, null);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, filter);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, filter);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
@@ -123,5 +123,14 @@ export class RenderTarget {
     for (const texture of this.textures) gl.deleteTexture(texture);
     gl.deleteFramebuffer(this.framebuffer);
     if (this.depthStencil) gl.deleteRenderbuffer(this.depthStencil);
+  }
+}
+
+/** A format's internal format, format and type, as `texImage2D` takes them. */
+function storageOf(gl: WebGL2RenderingContext, format: TargetFormat): readonly [number, number, number] {
+  switch (format) {
+    case 'rgba8': return [gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE];
+    case 'rgba16f': return [gl.RGBA16F, gl.RGBA, gl.HALF_FLOAT];
+    case 'r8': return [gl.R8, gl.RED, gl.UNSIGNED_BYTE];
   }
 }

@@ -1,13 +1,14 @@
 import { createProgram, type Program } from '../gl/program';
 import { DITHERING_CODES, TONE_MAPPING_CODES, type Dithering, type ToneMapping } from './compositeLayout';
 import type { Surface } from './LightPass';
-import { shaderSources } from './shaders';
+import type { HullMaskPass } from './HullMaskPass';
+import { compositeStage, shaderSources } from './shaders';
 
-const SCENE_UNIT = 0;
-const LIGHTMAP_UNIT = 1;
-/** With normals: the highlights and the material (for the emission). */
-const SPECULAR_UNIT = 2;
-const MATERIAL_UNIT = 3;
+/**
+ * The texture units the composite reads on: the scene and the lightmap; with normals the highlights
+ * and the material (for the emission); upsampling aware of hull edges, the two hull masks.
+ */
+export const CompositeUnits = { scene: 0, lightmap: 1, specular: 2, material: 3, hullMask: 4, lightmapHullMask: 5 } as const;
 
 /** How the composite turns scene × lightmap into output colour: see `PenumbraRenderer.exposure` and the next two. */
 export interface CompositeLook {
@@ -19,7 +20,8 @@ export interface CompositeLook {
 /**
  * Composite pass: writes scene × lightmap × exposure, tone-mapped and dithered, with one
  * full-screen triangle into the bound framebuffer. With normals (a program of its own):
- * (scene × (lightmap + emissive) + highlights) × exposure.
+ * (scene × (lightmap + emissive) + highlights) × exposure. With a lightmap smaller than the scene
+ * (a program of its own), the lightmap is upsampled aware of hull outlines, through the hull masks.
  */
 export class CompositePass {
   private readonly program: Program;
@@ -27,49 +29,61 @@ export class CompositePass {
   /** Through a reused array, as the light pass's uniforms: a double passed alone may be boxed. */
   private readonly exposure = new Float32Array(1);
 
-  /** @param normals - whether the renderer has normals (the highlights and the emission). */
-  constructor(private readonly gl: WebGL2RenderingContext, private readonly normals: boolean) {
-    this.program = normals
-      ? createProgram(gl, 'composite with normals', shaderSources.fullscreenVertex, shaderSources.compositeFragmentWithNormals)
-      : createProgram(gl, 'composite', shaderSources.fullscreenVertex, shaderSources.compositeFragment);
+  /**
+   * @param normals - whether the renderer has normals (the highlights and the emission).
+   * @param edgeAware - whether the lightmap is upsampled aware of hull outlines (`render` then takes the hull masks).
+   */
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly normals: boolean, edgeAware: boolean) {
+    const name = `composite${normals ? ' with normals' : ''}${edgeAware ? ', edge-aware upsampling' : ''}`;
+    this.program = createProgram(gl, name, shaderSources.fullscreenVertex, compositeStage(normals, edgeAware));
     this.emptyVertexArray = gl.createVertexArray()!;
+    gl.useProgram(this.program.handle);
+    const uniforms = this.program.uniforms;
+    gl.uniform1i(uniforms.u_scene, CompositeUnits.scene);
+    gl.uniform1i(uniforms.u_lightmap, CompositeUnits.lightmap);
+    if (normals) {
+      gl.uniform1i(uniforms.u_specular, CompositeUnits.specular);
+      gl.uniform1i(uniforms.u_material, CompositeUnits.material);
+    }
+    if (edgeAware) {
+      gl.uniform1i(uniforms.u_hullMask, CompositeUnits.hullMask);
+      gl.uniform1i(uniforms.u_lightmapHullMask, CompositeUnits.lightmapHullMask);
+    }
   }
 
   /**
    * @param lightmap - the light pass's target: its first attachment, and with normals its highlights.
    * @param surface - with normals, where the material is; ignored without.
+   * @param hullMasks - upsampling aware of hull edges, this frame's masks; ignored otherwise.
    */
-  render(scene: WebGLTexture, lightmap: readonly WebGLTexture[], look: CompositeLook, surface: Surface): void {
+  render(scene: WebGLTexture, lightmap: readonly WebGLTexture[], look: CompositeLook, surface: Surface, hullMasks: HullMaskPass | null): void {
     const gl = this.gl;
     const uniforms = this.program.uniforms;
     gl.disable(gl.BLEND);
     gl.disable(gl.SCISSOR_TEST);
     gl.useProgram(this.program.handle);
-    gl.uniform1i(uniforms.u_scene, SCENE_UNIT);
-    gl.uniform1i(uniforms.u_lightmap, LIGHTMAP_UNIT);
     this.exposure[0] = look.exposure;
     gl.uniform1fv(uniforms.u_exposure, this.exposure);
     gl.uniform1i(uniforms.u_toneMapping, TONE_MAPPING_CODES[look.toneMapping]);
     gl.uniform1i(uniforms.u_dithering, DITHERING_CODES[look.dithering]);
-    gl.activeTexture(gl.TEXTURE0 + SCENE_UNIT);
-    gl.bindTexture(gl.TEXTURE_2D, scene);
-    gl.activeTexture(gl.TEXTURE0 + LIGHTMAP_UNIT);
-    gl.bindTexture(gl.TEXTURE_2D, lightmap[0]);
-    if (this.normals) this.bindSurface(lightmap[1], surface);
+    this.bind(CompositeUnits.scene, scene);
+    this.bind(CompositeUnits.lightmap, lightmap[0]);
+    if (this.normals) {
+      gl.uniform1i(uniforms.u_flipSurface, surface.flipY ? 1 : 0);
+      this.bind(CompositeUnits.specular, lightmap[1]);
+      this.bind(CompositeUnits.material, surface.material);
+    }
+    if (hullMasks) {
+      this.bind(CompositeUnits.hullMask, hullMasks.scene.texture);
+      this.bind(CompositeUnits.lightmapHullMask, hullMasks.lightmap.texture);
+    }
     gl.bindVertexArray(this.emptyVertexArray);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
   }
 
-  private bindSurface(specular: WebGLTexture, surface: Surface): void {
-    const gl = this.gl;
-    const uniforms = this.program.uniforms;
-    gl.uniform1i(uniforms.u_specular, SPECULAR_UNIT);
-    gl.uniform1i(uniforms.u_material, MATERIAL_UNIT);
-    gl.uniform1i(uniforms.u_flipSurface, surface.flipY ? 1 : 0);
-    gl.activeTexture(gl.TEXTURE0 + SPECULAR_UNIT);
-    gl.bindTexture(gl.TEXTURE_2D, specular);
-    gl.activeTexture(gl.TEXTURE0 + MATERIAL_UNIT);
-    gl.bindTexture(gl.TEXTURE_2D, surface.material);
+  private bind(unit: number, texture: WebGLTexture): void {
+    this.gl.activeTexture(this.gl.TEXTURE0 + unit);
+    this.gl.bindTexture(this.gl.TEXTURE_2D, texture);
   }
 
   dispose(): void {

@@ -22,7 +22,7 @@ export class DebugPass {
   constructor(private readonly gl: WebGL2RenderingContext, private readonly shapes: LightShapes) {
     const programs = createPrograms(gl, {
       quad: ['debug light quads', shaderSources.lightVertex, shaderSources.debugFragment],
-      records: ['debug shadow records', shaderSources.debugRecordsVertex, shaderSources.debugFragment],
+      records: ['debug shadow records', shaderSources.recordOutlinesVertex, shaderSources.debugFragment],
     });
     this.quadProgram = programs.quad;
     this.recordsProgram = programs.records;

@@ -1,7 +1,6 @@
 import blurFragment from '../../shaders/blur.frag.glsl?raw';
 import compositeFragment from '../../shaders/composite.frag.glsl?raw';
 import debugFragment from '../../shaders/debug.frag.glsl?raw';
-import debugRecordsVertex from '../../shaders/debug-records.vert.glsl?raw';
 import fullscreenVertex from '../../shaders/fullscreen.vert.glsl?raw';
 import lightCommon from '../../shaders/chunks/light-common.glsl?raw';
 import lightDirectionalFragment from '../../shaders/light-directional.frag.glsl?raw';
@@ -9,6 +8,7 @@ import lightPointFragment from '../../shaders/light-point.frag.glsl?raw';
 import lightSpotFragment from '../../shaders/light-spot.frag.glsl?raw';
 import lightTexturedFragment from '../../shaders/light-textured.frag.glsl?raw';
 import lightVertex from '../../shaders/light.vert.glsl?raw';
+import recordsVertex from '../../shaders/records.vert.glsl?raw';
 import shadowBehind from '../../shaders/chunks/shadow-behind.glsl?raw';
 import shadowQuadrature from '../../shaders/chunks/shadow-quadrature.glsl?raw';
 import shadowVisibility from '../../shaders/chunks/shadow-visibility.glsl?raw';
@@ -53,6 +53,14 @@ export function lightStages(fragment: string, normals: boolean): LightStages {
   };
 }
 
+/**
+ * The composite's fragment stage for a renderer with or without normals, upsampling a smaller
+ * lightmap bilinearly or aware of hull outlines (`edgeAware`, see the shader).
+ */
+export function compositeStage(normals: boolean, edgeAware: boolean): string {
+  return withDefines(compositeFragment, { ...COMPOSITE_DEFINES, ...(normals ? NORMALS_DEFINES : {}), ...(edgeAware ? { EDGE_AWARE: '' } : {}) });
+}
+
 function lightFragment(source: string): string {
   return withDefines(resolveChunks(source), LIGHT_DEFINES);
 }
@@ -64,10 +72,11 @@ function lightFragment(source: string): string {
  */
 export const shaderSources = {
   blurFragment: /* @__PURE__ */ withDefines(blurFragment, { MAX_BLUR_RADIUS }),
-  compositeFragment: /* @__PURE__ */ withDefines(compositeFragment, COMPOSITE_DEFINES),
-  compositeFragmentWithNormals: /* @__PURE__ */ withDefines(compositeFragment, { ...COMPOSITE_DEFINES, ...NORMALS_DEFINES }),
   debugFragment,
-  debugRecordsVertex: /* @__PURE__ */ withDefines(debugRecordsVertex, SHADOW_DEFINES),
+  /** The shadow records as outlines (the debug wireframe). */
+  recordOutlinesVertex: /* @__PURE__ */ withDefines(recordsVertex, SHADOW_DEFINES),
+  /** The shadow records as filled triangles (the hull mask). */
+  filledRecordsVertex: /* @__PURE__ */ withDefines(recordsVertex, { ...SHADOW_DEFINES, FILLED: '' }),
   fullscreenVertex,
   lightVertex,
   lightPointFragment: /* @__PURE__ */ lightFragment(lightPointFragment),

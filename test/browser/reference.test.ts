@@ -8,6 +8,8 @@ import { asLitScene, computeDirectionalReference, DIRECTIONAL_SCENES } from '../
 import { REFERENCE_SCENES } from '../reference/scenes';
 import { computeReference } from '../reference/softShadowReference';
 import { openReferencePage, type ReferencePage, type ReferencePageApi } from './referencePage';
+import { outlineErrors, outlinePixel } from '../gl/outlineUpsampling';
+import { ShadowType } from '../../src/index';
 
 // The same limits as on headless-gl (test/gl/reference.test.ts, test/reference/limits.ts), in
 // units of full light, against the same exact CPU reference.
@@ -86,12 +88,31 @@ describe('reference scenes in Chromium', () => {
   });
 });
 
+describe('lightmap scale in Chromium', () => {
+  for (const shadowType of [ShadowType.Solid, ShadowType.Illuminated]) {
+    it(`at half scale, keeps the light on each side of a ${shadowType} hull's outline (as on headless-gl: test/gl/lightmapScale.test.ts)`, async () => {
+      const render = (scale: number) => page.evaluate((s, type) => (window as unknown as ReferencePageApi).outlineScene(s, type), scale, shadowType);
+      const full = await render(1), half = await render(0.5);
+      expect(outlineErrors(full, half)).toEqual([]);
+      expect(outlinePixel(full, 29, 32)).toBeGreaterThan(150);
+      expect(outlinePixel(full, 42, 32)).toBe(0);
+      expect(pageErrors).toEqual([]);
+    });
+  }
+});
+
 describe('host state in Chromium', () => {
   it('every host parameter is as the host set it after each public call (as on headless-gl: test/gl/hostParameters.test.ts)', async () => {
     const report = await page.evaluate(() => (window as unknown as ReferencePageApi).checkHostState());
     console.log(`Chromium: ${report.compared} parameters compared after each of ${report.calls.length} public calls; rejected setup steps: ${report.unsupported.join(', ') || 'none'}`);
     expect(report.failures).toEqual([]);
     expect(report.unsupported).toEqual([]);
+    expect(pageErrors).toEqual([]);
+  });
+
+  it('and with a half-scale lightmap (the hull masks and the edge-aware composite)', async () => {
+    const report = await page.evaluate(() => (window as unknown as ReferencePageApi).checkHostState(false, 0.5));
+    expect(report.failures).toEqual([]);
     expect(pageErrors).toEqual([]);
   });
 });

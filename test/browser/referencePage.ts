@@ -4,6 +4,7 @@ import type { ReferenceScene } from '../reference/scenes';
 import { openBuiltPage, type BuiltPage } from './builtPage';
 import type { DirectionalReferenceScene } from '../reference/directionalReference';
 import type { SurfaceFigures } from '../reference/surfaceComparison';
+import type { ShadowType } from '../../src/index';
 
 /** What test/browser/reference-page/main.ts puts on `window`. */
 export interface ReferencePageApi {
@@ -12,7 +13,8 @@ export interface ReferencePageApi {
   renderDirectionalScene(scene: DirectionalReferenceScene): number[];
   renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before: number[]; after: number[]; lostFrameError: string | null; windowErrors: string[] }>;
   /** The host-parameter check (test/gl/hostParameters.ts), of a renderer with normals when `normals`. */
-  checkHostState(normals?: boolean): HostStateReport;
+  checkHostState(normals?: boolean, lightmapScale?: number): HostStateReport;
+  outlineScene(lightmapScale: number, shadowType: ShadowType): number[];
   compareIllumination(scene: ReferenceScene): IlluminationComparison & { glError: number; floatLightmap: boolean };
   /** Normal-mapped lighting against its CPU reference (test/reference/surfaceComparison.ts). */
   compareSurfaces(): SurfaceFigures;

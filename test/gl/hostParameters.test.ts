@@ -17,6 +17,14 @@ describe('every host parameter, on headless-gl', () => {
     expect(report.compared).toBeGreaterThan(300);
   });
 
+  it('is as the host set it after each public call of a renderer with a half-scale lightmap (hull masks)', () => {
+    const gl = createContext(64, 48);
+    const report = checkHostStateAcrossPublicCalls(gl, 64, 48, false, 0.5);
+    destroyContext(gl);
+    expect(report.failures).toEqual([]);
+    expect(report.compared).toBeGreaterThan(300);
+  });
+
   it('does not change what is drawn: the same lightmap under the host’s unpack parameters', () => {
     const W = 32, H = 24;
     const gl = createContext(W, H);

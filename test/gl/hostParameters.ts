@@ -271,9 +271,10 @@ export interface HostStateReport {
  * Sets a hostile host state, then runs every public call of the renderer (constructor, frames with
  * shadows, a textured light and the debug overlay, in place, lightmap only, resize, scene changes
  * that upload geometry, dispose), comparing every parameter after each with what the host set.
- * With `normals`, a renderer with normals, and the calls that take the host's surfaces.
+ * With `normals`, a renderer with normals, and the calls that take the host's surfaces; with a
+ * `lightmapScale` below 1, the hull masks and the composite that reads them.
  */
-export function checkHostStateAcrossPublicCalls(gl: GL, width: number, height: number, normals = false): HostStateReport {
+export function checkHostStateAcrossPublicCalls(gl: GL, width: number, height: number, normals = false, lightmapScale = 1): HostStateReport {
   const cookie = gl.createTexture()!;
   gl.bindTexture(gl.TEXTURE_2D, cookie);
   gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array([255, 255, 255, 255]));
@@ -301,7 +302,7 @@ export function checkHostStateAcrossPublicCalls(gl: GL, width: number, height: n
   };
   let renderer!: PenumbraRenderer;
   const hull = new Hull([[36, 18], [42, 18], [42, 30], [36, 30]]);
-  check('constructor', () => { renderer = new PenumbraRenderer(gl, { width, height, normals }); });
+  check('constructor', () => { renderer = new PenumbraRenderer(gl, { width, height, normals, lightmapScale }); });
   check('addLight/addHull', () => {
     renderer.addLight(new PointLight({ position: [20, 24], range: 50, radius: 3 }));
     renderer.addLight(new TexturedLight({ position: [40, 10], range: 30, texture: cookie }));

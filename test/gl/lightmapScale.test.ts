@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { Hull, PenumbraRenderer, PointLight } from '../../src/index';
+import { Hull, PenumbraRenderer, PointLight, ShadowType } from '../../src/index';
 import { createContext, destroyContext } from './context';
+import { OUTLINE_SCENE_SIZE, outlineErrors, outlinePixel, renderOutlineScene } from './outlineUpsampling';
 import { readTexture } from './readTexture';
 
 describe('lightmapScale', () => {
@@ -19,6 +20,25 @@ describe('lightmapScale', () => {
     renderer.dispose();
     destroyContext(gl);
   });
+
+  for (const shadowType of [ShadowType.Solid, ShadowType.Illuminated]) {
+    it(`at half scale, keeps the light on each side of a ${shadowType} hull's outline (no rim, no seam)`, () => {
+      const render = (scale: number) => {
+        const gl = createContext(OUTLINE_SCENE_SIZE, OUTLINE_SCENE_SIZE);
+        const pixels = renderOutlineScene(gl, scale, shadowType);
+        expect(gl.getError()).toBe(0);
+        destroyContext(gl);
+        return pixels;
+      };
+      const full = render(1), half = render(0.5);
+      expect(outlineErrors(full, half)).toEqual([]);
+      // What the check covers: lit floor before the box; a dark (Solid) or lit (Illuminated) box; its umbra.
+      expect(outlinePixel(full, 29, 32)).toBeGreaterThan(150);
+      if (shadowType === ShadowType.Solid) expect(outlinePixel(full, 31, 32)).toBe(0);
+      else expect(outlinePixel(full, 31, 32)).toBeGreaterThan(150);
+      expect(outlinePixel(full, 42, 32)).toBe(0);
+    });
+  }
 
   it('rejects scales outside (0, 1]', () => {
     const gl = createContext(8, 8);

@@ -11,7 +11,8 @@ import { readTexture } from '../../gl/readTexture';
 import { callsThrowing } from '../../gl/fixtures';
 import { checkHostStateAcrossPublicCalls, type HostStateReport } from '../../gl/hostParameters';
 import { compareReferenceScene, type IlluminationComparison } from '../../reference/illuminationComparison';
-import { PenumbraRenderer } from '../../../src/index';
+import { PenumbraRenderer, type ShadowType } from '../../../src/index';
+import { OUTLINE_SCENE_SIZE, renderOutlineScene } from '../../gl/outlineUpsampling';
 import { afterDispatch, nextEvent } from '../pageEvents';
 import { compareSurfaceLighting, createSurfaceHost, type SurfaceFigures } from '../../reference/surfaceComparison';
 import { SURFACE_AMBIENT, SURFACE_CASES, SURFACE_HEIGHT, SURFACE_WIDTH } from '../../reference/surfaceReference';
@@ -104,10 +105,19 @@ async function renderAcrossContextLoss(scene: ReferenceScene): Promise<{ before:
 }
 
 /** The host-parameter check of test/gl/hostParameters.ts on a canvas of its own (its state would disturb the scenes). */
-function checkHostState(normals = false): HostStateReport {
+function checkHostState(normals = false, lightmapScale = 1): HostStateReport {
   const gl = document.createElement('canvas').getContext('webgl2');
   if (!gl) throw new Error('WebGL2 is not available');
-  return checkHostStateAcrossPublicCalls(gl, 64, 48, normals);
+  return checkHostStateAcrossPublicCalls(gl, 64, 48, normals, lightmapScale);
+}
+
+/** The edge-aware upsampling scene of test/gl/outlineUpsampling.ts, drawn on a canvas of its own. */
+function outlineScene(lightmapScale: number, shadowType: ShadowType): number[] {
+  const canvas = document.createElement('canvas');
+  canvas.width = canvas.height = OUTLINE_SCENE_SIZE;
+  const gl = canvas.getContext('webgl2');
+  if (!gl) throw new Error('WebGL2 is not available');
+  return Array.from(renderOutlineScene(gl, lightmapScale, shadowType));
 }
 
 /** The renderer `compareIllumination` reuses from scene to scene (SwiftShader takes seconds to link a new one's programs). */
@@ -191,4 +201,4 @@ function surfaceMisuse(): string[] {
   return thrown;
 }
 
-Object.assign(window, { renderScene, renderDirectionalScene, renderAcrossContextLoss, checkHostState, compareIllumination, compareSurfaces, surfaceMisuse, surfacesAcrossContextLoss });
+Object.assign(window, { renderScene, renderDirectionalScene, renderAcrossContextLoss, checkHostState, outlineScene, compareIllumination, compareSurfaces, surfaceMisuse, surfacesAcrossContextLoss });

@@ -1,0 +1,80 @@
+import type { ReadonlyMat4 } from 'gl-matrix';
+import { createProgram, type Program } from '../gl/program';
+import { RenderTarget } from '../gl/RenderTarget';
+import { shaderSources } from './shaders';
+import { ShadowUnits } from './ShadowTextures';
+
+/** Vertices per record: its convex quad as two triangles. */
+const RECORD_VERTICES = 6;
+/** Clear value of the masks: outside every hull. */
+const OUTSIDE = new Float32Array(4);
+
+/**
+ * Hull mask pass, for a lightmap smaller than the scene: draws the shadow records, 1 inside a hull
+ * and 0 elsewhere, once at the scene's resolution and once at the lightmap's (where each texel
+ * holds whether the light pass's sample point, the texel centre, lies in a hull). The composite reads
+ * both to upsample the lightmap without smearing it across hull outlines (shaders/composite.frag.glsl).
+ *
+ * The mask holds every record the frame's records texture holds: those of hulls some light had in
+ * range (the only ones that can make the lightmap jump), and possibly stale or disabled ones
+ * elsewhere, where the lightmap is smooth and a mask only narrows the interpolation to one side.
+ */
+export class HullMaskPass {
+  /** The mask at the scene's resolution. */
+  readonly scene: RenderTarget;
+  /** The mask at the lightmap's resolution. */
+  readonly lightmap: RenderTarget;
+  private readonly targets: readonly RenderTarget[];
+  private readonly program: Program;
+  /** No attributes: the vertex stage fetches the records' points. */
+  private readonly emptyVertexArray: WebGLVertexArrayObject;
+
+  /** Frees what it made before throwing when a part cannot be made. */
+  constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number, lightmapWidth: number, lightmapHeight: number) {
+    const made: { dispose(): void }[] = [];
+    try {
+      this.program = createProgram(gl, 'hull mask', shaderSources.filledRecordsVertex, shaderSources.debugFragment);
+      made.push({ dispose: () => gl.deleteProgram(this.program.handle) });
+      this.scene = new RenderTarget(gl, { format: 'r8' }, width, height);
+      made.push(this.scene);
+      this.lightmap = new RenderTarget(gl, { format: 'r8' }, lightmapWidth, lightmapHeight);
+      this.targets = [this.scene, this.lightmap];
+    } catch (error) {
+      for (const resource of made) resource.dispose();
+      throw error;
+    }
+    this.emptyVertexArray = gl.createVertexArray()!;
+    gl.useProgram(this.program.handle);
+    gl.uniform1i(this.program.uniforms.u_records, ShadowUnits.records);
+    gl.uniform4f(this.program.uniforms.u_color, 1, 1, 1, 1);
+  }
+
+  resize(width: number, height: number, lightmapWidth: number, lightmapHeight: number): void {
+    this.scene.resize(width, height);
+    this.lightmap.resize(lightmapWidth, lightmapHeight);
+  }
+
+  /** Draws the first `recordCount` records of `records` into both masks. Leaves the lightmap's mask bound. */
+  render(records: WebGLTexture, recordCount: number, viewProjection: ReadonlyMat4): void {
+    const gl = this.gl;
+    gl.disable(gl.BLEND);
+    gl.disable(gl.SCISSOR_TEST);
+    gl.activeTexture(gl.TEXTURE0 + ShadowUnits.records);
+    gl.bindTexture(gl.TEXTURE_2D, records);
+    gl.useProgram(this.program.handle);
+    gl.uniformMatrix4fv(this.program.uniforms.u_viewProjection, false, viewProjection);
+    gl.bindVertexArray(this.emptyVertexArray);
+    for (let i = 0; i < this.targets.length; i++) {
+      this.targets[i].bind();
+      gl.clearBufferfv(gl.COLOR, 0, OUTSIDE);
+      gl.drawArrays(gl.TRIANGLES, 0, RECORD_VERTICES * recordCount);
+    }
+  }
+
+  dispose(): void {
+    this.gl.deleteProgram(this.program.handle);
+    this.gl.deleteVertexArray(this.emptyVertexArray);
+    this.scene.dispose();
+    this.lightmap.dispose();
+  }
+}
