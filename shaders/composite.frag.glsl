@@ -21,7 +21,7 @@ uniform bool u_flipSurface;   // whether the material's row 0 is the top of the 
 
 #ifdef EDGE_AWARE
 uniform sampler2D u_hullMask;         // 1 inside a hull, at the scene's resolution (src/passes/HullMaskPass.ts)
-uniform sampler2D u_lightmapHullMask; // the same at the lightmap's: whether each texel's sample lies in a hull
+uniform sampler2D u_lightmapHullMask; // the same at the lightmap's (linear filtering): whether each texel's sample lies in a hull
 #endif
 in vec2 v_uv;
 out vec4 o_color;
@@ -57,6 +57,10 @@ vec4 cornerWeights;      // for the texels (0, 0), (1, 0), (0, 1), (1, 1) from l
 bool besideOutline;
 
 void chooseLightmapTexels() {
+  besideOutline = false;
+  // One filtered read tells whether the four texels are all on one side: 0 or 1 (the common case).
+  float mixed = texture(u_lightmapHullMask, v_uv).r;
+  if (mixed == 0.0 || mixed == 1.0) return;
   vec2 position = v_uv * vec2(textureSize(u_lightmap, 0)) - 0.5;
   vec2 corner = floor(position), f = position - corner;
   lightmapCorner = ivec2(corner);
@@ -66,8 +70,6 @@ void chooseLightmapTexels() {
     texelFetch(u_lightmapHullMask, clamp(lightmapCorner + ivec2(1, 0), ivec2(0), lightmapLast), 0).r,
     texelFetch(u_lightmapHullMask, clamp(lightmapCorner + ivec2(0, 1), ivec2(0), lightmapLast), 0).r,
     texelFetch(u_lightmapHullMask, clamp(lightmapCorner + ivec2(1, 1), ivec2(0), lightmapLast), 0).r);
-  besideOutline = false;
-  if (all(equal(inside, inside.xxxx))) return;
   float here = texelFetch(u_hullMask, ivec2(v_uv * vec2(textureSize(u_hullMask, 0))), 0).r;
   vec4 bilinear = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
   cornerWeights = max(bilinear, 1e-3) * vec4(equal(inside, vec4(here)));

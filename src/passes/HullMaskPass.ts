@@ -37,7 +37,8 @@ export class HullMaskPass {
       made.push({ dispose: () => gl.deleteProgram(this.program.handle) });
       this.scene = new RenderTarget(gl, { format: 'r8' }, width, height);
       made.push(this.scene);
-      this.lightmap = new RenderTarget(gl, { format: 'r8' }, lightmapWidth, lightmapHeight);
+      // Filtered, the composite finds in one read whether the four texels around a pixel agree.
+      this.lightmap = new RenderTarget(gl, { format: 'r8', linear: true }, lightmapWidth, lightmapHeight);
       this.targets = [this.scene, this.lightmap];
     } catch (error) {
       for (const resource of made) resource.dispose();
