@@ -56,6 +56,11 @@ ivec2 lightmapLast;      // the lightmap's last texel, where the corners are cla
 vec4 cornerWeights;      // for the texels (0, 0), (1, 0), (0, 1), (1, 1) from lightmapCorner; 0: bilinear
 bool besideOutline;
 
+// Texel `offset` from lightmapCorner of `source` (at the lightmap's resolution), clamped to it.
+vec4 texelAround(sampler2D source, ivec2 offset) {
+  return texelFetch(source, clamp(lightmapCorner + offset, ivec2(0), lightmapLast), 0);
+}
+
 void chooseLightmapTexels() {
   besideOutline = false;
   // One filtered read tells whether the four texels are all on one side: 0 or 1 (the common case).
@@ -65,11 +70,8 @@ void chooseLightmapTexels() {
   vec2 corner = floor(position), f = position - corner;
   lightmapCorner = ivec2(corner);
   lightmapLast = textureSize(u_lightmap, 0) - 1;
-  vec4 inside = vec4(
-    texelFetch(u_lightmapHullMask, clamp(lightmapCorner, ivec2(0), lightmapLast), 0).r,
-    texelFetch(u_lightmapHullMask, clamp(lightmapCorner + ivec2(1, 0), ivec2(0), lightmapLast), 0).r,
-    texelFetch(u_lightmapHullMask, clamp(lightmapCorner + ivec2(0, 1), ivec2(0), lightmapLast), 0).r,
-    texelFetch(u_lightmapHullMask, clamp(lightmapCorner + ivec2(1, 1), ivec2(0), lightmapLast), 0).r);
+  vec4 inside = vec4(texelAround(u_lightmapHullMask, ivec2(0, 0)).r, texelAround(u_lightmapHullMask, ivec2(1, 0)).r,
+                     texelAround(u_lightmapHullMask, ivec2(0, 1)).r, texelAround(u_lightmapHullMask, ivec2(1, 1)).r);
   float here = texelFetch(u_hullMask, ivec2(v_uv * vec2(textureSize(u_hullMask, 0))), 0).r;
   vec4 bilinear = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
   cornerWeights = max(bilinear, 1e-3) * vec4(equal(inside, vec4(here)));
@@ -80,10 +82,8 @@ void chooseLightmapTexels() {
 
 vec3 lightAt(sampler2D lightmap) {
   if (!besideOutline) return texture(lightmap, v_uv).rgb;
-  return texelFetch(lightmap, clamp(lightmapCorner, ivec2(0), lightmapLast), 0).rgb * cornerWeights.x
-       + texelFetch(lightmap, clamp(lightmapCorner + ivec2(1, 0), ivec2(0), lightmapLast), 0).rgb * cornerWeights.y
-       + texelFetch(lightmap, clamp(lightmapCorner + ivec2(0, 1), ivec2(0), lightmapLast), 0).rgb * cornerWeights.z
-       + texelFetch(lightmap, clamp(lightmapCorner + ivec2(1, 1), ivec2(0), lightmapLast), 0).rgb * cornerWeights.w;
+  return texelAround(lightmap, ivec2(0, 0)).rgb * cornerWeights.x + texelAround(lightmap, ivec2(1, 0)).rgb * cornerWeights.y
+       + texelAround(lightmap, ivec2(0, 1)).rgb * cornerWeights.z + texelAround(lightmap, ivec2(1, 1)).rgb * cornerWeights.w;
 }
 #else
 void chooseLightmapTexels() {}
