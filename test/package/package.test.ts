@@ -17,11 +17,15 @@ import { REPO, createApp, indexHtml, pack, readmeSnippets, run, runAsync, viteTs
 /** The README's snippets that run in a browser, each built as its own page. */
 const PAGES = ['plain', 'occluders', 'normals', 'pixi', 'phaser'] as const;
 
-/** Imports bundled on their own, with the most each may weigh (minified, gl-matrix included where used). */
+/**
+ * Imports bundled on their own, with the most each may weigh (minified, gl-matrix included where
+ * used). The engine entries' budgets rose from 170 KB to 180 KB with the normals' surface pass and
+ * the edge-aware upsampling (pixi 169 KB, phaser 172 KB with the shaders' indentation stripped).
+ */
 const IMPORTS = [
   { name: "'penumbra-gl' (everything)", code: "import * as all from 'penumbra-gl';\nconsole.log(all);", maxBytes: 155_000, glsl: true },
-  { name: "'penumbra-gl/pixi' (everything)", code: "import * as all from 'penumbra-gl/pixi';\nconsole.log(all);", maxBytes: 170_000, glsl: true },
-  { name: "'penumbra-gl/phaser' (everything)", code: "import * as all from 'penumbra-gl/phaser';\nconsole.log(all);", maxBytes: 170_000, glsl: true },
+  { name: "'penumbra-gl/pixi' (everything)", code: "import * as all from 'penumbra-gl/pixi';\nconsole.log(all);", maxBytes: 180_000, glsl: true },
+  { name: "'penumbra-gl/phaser' (everything)", code: "import * as all from 'penumbra-gl/phaser';\nconsole.log(all);", maxBytes: 180_000, glsl: true },
   { name: '{ readScene, writeScene }', code: "import { readScene, writeScene } from 'penumbra-gl';\nconsole.log(writeScene(readScene('{}')));", maxBytes: 12_000, glsl: false },
   { name: '{ Hull, PointLight }', code: "import { Hull, PointLight } from 'penumbra-gl';\nconsole.log(new Hull([[0, 0], [1, 0], [0, 1]]), new PointLight({ position: [1, 2], range: 3 }));", maxBytes: 30_000, glsl: false },
 ] as const;
