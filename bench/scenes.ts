@@ -20,6 +20,10 @@ export interface SceneSpec {
    * cannot draw into several attachments.
    */
   normalsOf?: string;
+  /** Every light whose index is a multiple of this moves each frame (default 1: all); 0: none. */
+  movingLightStride?: number;
+  /** Every hull whose index is a multiple of this moves or rotates each frame (default 10: one in ten); 0: none. */
+  movingHullStride?: number;
 }
 
 /** `spec` lit through normals: the same lights and hulls, every pixel of the floor normal-mapped. */
@@ -36,6 +40,8 @@ export const SCENES: readonly SceneSpec[] = [
   S3,
   { name: 'S3-sparse', lights: 128, hulls: 1000, farHulls: 10000 },
   { name: 'S4', lights: 512, hulls: 4000, farHulls: 0 },
+  // S4 as a level with wall torches: one light in sixteen moves (the players'), the hulls stand still.
+  { name: 'S4-still', lights: 512, hulls: 4000, farHulls: 0, movingLightStride: 16, movingHullStride: 0 },
   { name: 'S2-sun', lights: 32, hulls: 200, farHulls: 0, sun: true },
   { name: 'S3-sun', lights: 128, hulls: 1000, farHulls: 0, sun: true },
   withNormals(S2),
@@ -55,7 +61,7 @@ export function runsOnHeadlessGl(spec: SceneSpec): boolean {
   return spec.normalsOf === undefined;
 }
 
-/** Every hull whose index is a multiple of this moves or rotates each frame ("one hull in ten"). */
+/** Every hull whose index is a multiple of this moves or rotates each frame ("one hull in ten"), unless the scene says otherwise. */
 const MOVING_HULL_STRIDE = 10;
 /** Far hulls start this far right of the world: beyond the longest light range plus its wander. */
 const FAR_OFFSET = 1000;
@@ -69,7 +75,7 @@ export interface BenchScene {
   spec: SceneSpec;
   lights: BenchLight[];
   hulls: BenchHull[];
-  /** Moves every light a little and one hull in ten, for frame number `frame`. */
+  /** Moves the scene's moving lights a little and its moving hulls (see `SceneSpec`), for frame number `frame`. */
   step(frame: number): void;
 }
 
@@ -131,11 +137,12 @@ export function createScene(spec: SceneSpec, library: RendererLibrary = CURRENT,
   return {
     spec, lights, hulls,
     step(frame) {
-      for (let i = 0; i < spec.lights; i++) {
+      const lightStride = spec.movingLightStride ?? 1, hullStride = spec.movingHullStride ?? MOVING_HULL_STRIDE;
+      for (let i = 0; lightStride > 0 && i < spec.lights; i += lightStride) {
         const phase = anchors[i * 3 + 2] + frame * 0.05;
         lights[i].setPosition(anchors[i * 3] + 12 * Math.cos(phase), anchors[i * 3 + 1] + 12 * Math.sin(phase));
       }
-      for (let i = 0; i < hulls.length; i += MOVING_HULL_STRIDE) {
+      for (let i = 0; hullStride > 0 && i < hulls.length; i += hullStride) {
         const phase = frame * 0.03 + i;
         position[0] = hullAnchors[i * 3] + 6 * Math.sin(phase);
         position[1] = hullAnchors[i * 3 + 1];

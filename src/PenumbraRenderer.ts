@@ -81,6 +81,12 @@ export interface FrameStats {
   lights: number;
   /** Lights drawn (enabled, on screen, centre not inside a hull). */
   lightsDrawn: number;
+  /**
+   * Lights whose shadow casters were found and filed anew for the last lightmap. A light keeps the
+   * previous lightmap's filing (and uploads nothing) while it, the hulls near it and the list of
+   * hulls are unchanged; a directional light is filed every time.
+   */
+  lightsFiled: number;
   /** Hulls added to the renderer. */
   hulls: number;
   /** Edges of all valid hulls. */
@@ -155,7 +161,7 @@ export class PenumbraRenderer {
    */
   onContextRestored: ((renderer: PenumbraRenderer) => void) | null;
   /** Figures about the last frame. */
-  readonly stats: FrameStats = { lights: 0, lightsDrawn: 0, hulls: 0, edges: 0, cpuTime: 0 };
+  readonly stats: FrameStats = { lights: 0, lightsDrawn: 0, lightsFiled: 0, hulls: 0, edges: 0, cpuTime: 0 };
 
   private readonly gl: WebGL2RenderingContext;
   private readonly _lights: Light[] = [];
@@ -679,6 +685,7 @@ export class PenumbraRenderer {
     const stats = this.stats;
     stats.lights = this._lights.length;
     stats.lightsDrawn = this.plan.drawCount;
+    stats.lightsFiled = this.plan.filedCount;
     stats.hulls = this._hulls.length;
     stats.edges = this.geometry.validEdgeCount;
     stats.cpuTime = cpuTime;

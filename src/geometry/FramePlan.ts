@@ -4,7 +4,7 @@ import { DirectionalLight, type Light } from '../scene/lights';
 import { HullGrid } from './HullGrid';
 import { isInsidePolygon } from './polygon';
 import { scissorOf } from './scissor';
-import { DirectionalStrips, DISTANCE_BUCKETS, grow, ShadowBins } from './ShadowBins';
+import { type BinSpan, DirectionalStrips, DISTANCE_BUCKETS, grow, ShadowBins } from './ShadowBins';
 import { BIN_COUNT } from './shadowLayout';
 import type { ShadowGeometry } from './ShadowGeometry';
 
@@ -23,6 +23,8 @@ export class LightDraw {
   hullCount = 0;
   /** The light's row in the plan's `bins`, when `hullCount > 0`. */
   binRow = 0;
+  /** The light's filing, kept from frame to frame. */
+  filing!: LightFiling;
   /** A directional light's strips over the view (its bins). */
   readonly strips = new DirectionalStrips();
 }
@@ -30,50 +32,144 @@ export class LightDraw {
 /**
  * Decides each frame which lights are drawn and, per light, which hulls shadow it: a light is
  * skipped when disabled, black, off screen, or when its centre is inside a hull that shadows it
- * (one it does not ignore, in one of its `shadowLayers`). The shadow bins of all drawn lights share the arrays of one {@link ShadowBins}, reused
- * from frame to frame.
+ * (one it does not ignore, in one of its `shadowLayers`). The shadow bins of all drawn lights share
+ * the arrays of one {@link ShadowBins}.
+ *
+ * A point light's filing (its bins, entries, hull count, or that it is skipped) is kept from one
+ * frame to the next while it is drawn, and filed anew only when something it depends on changed:
+ * the light's centre, disk, reach, quad, shadow layers, ignored hulls or `castsShadows`, a hull
+ * whose coarse bounds (before or after the change) overlap the light's, or the hulls' layout. A
+ * kept filing equals a new one but for the order of hulls within a distance bucket. Directional
+ * lights are filed every frame: their strips follow the view.
  */
 export class FramePlan {
   /** The records in range of each shadowed light, filed into angular bins. */
   readonly bins = new ShadowBins();
   readonly draws: LightDraw[] = [];
   drawCount = 0;
+  /** Lights filed anew by the last {@link FramePlan.build} (the others drawn kept their filing). */
+  filedCount = 0;
   /** Indices of the hulls in range of the current light: the first `inRangeCount` entries. */
   private hullsInRange = new Int32Array(64);
   private inRangeCount = 0;
   private readonly grid = new HullGrid();
-  /** Box around the bounds of every light placed this frame that casts shadows: the grid files only hulls inside it. */
+  /** Box around the bounds of every light to be filed this frame that casts shadows: the grid files only hulls inside it. */
   private readonly reach = new Float64Array(4);
   private readonly inverseViewProjection = mat4.create();
   /** The box a directional light's search covers: the view swept upstream. */
   private readonly upstreamBox = new Float64Array(4);
+  /** Filings by light, and by their row of bins (null where free). */
+  private readonly filings = new Map<Light, LightFiling>();
+  private readonly filingsByRow: (LightFiling | null)[] = [];
+  private readonly freeRows: number[] = [];
+  /** The geometry layout the filings were made for. */
+  private layoutVersion = -1;
+  private frame = 0;
 
   build(
     lights: readonly Light[], hulls: readonly Hull[], geometry: ShadowGeometry,
     viewProjection: ReadonlyMat4, targetWidth: number, targetHeight: number,
   ): void {
-    this.bins.reset();
+    this.frame++;
     this.drawCount = 0;
+    this.filedCount = 0;
+    if (this.bins.beginFrame() || geometry.layoutVersion !== this.layoutVersion) this.forgetFilings();
+    this.layoutVersion = geometry.layoutVersion;
     const placed = this.placeLights(lights, viewProjection, targetWidth, targetHeight);
-    this.grid.build(geometry.coarseBounds, geometry.castsShadow, hulls.length, this.reach);
+    const toFile = this.findFilingsToRedo(placed, geometry);
+    if (toFile > 0) this.grid.build(geometry.coarseBounds, geometry.castsShadow, hulls.length, this.reach);
     // Keeps the placed lights whose centre is not inside a hull, in order.
     for (let i = 0; i < placed; i++) {
-      const draw = this.draws[i];
-      if (draw.light instanceof DirectionalLight) this.collectDirectionalHulls(draw, hulls, geometry);
-      else if (!this.collectHulls(draw, hulls, geometry)) continue;
+      const draw = this.draws[i], filing = draw.filing;
+      if (!filing.current) {
+        this.filedCount++;
+        filing.record(draw);
+        if (draw.light instanceof DirectionalLight) this.collectDirectionalHulls(draw, hulls, geometry);
+        else filing.skipped = !this.collectHulls(draw, hulls, geometry);
+        filing.hullCount = draw.hullCount;
+      }
+      if (filing.skipped) continue;
+      draw.hullCount = filing.hullCount;
+      draw.binRow = filing.row;
       this.draws[i] = this.draws[this.drawCount];
       this.draws[this.drawCount++] = draw;
     }
+    this.releaseUnusedFilings();
   }
 
   /**
-   * Puts the enabled, visible, on-screen lights' quads, bounds and scissors in the first draws and
-   * their shadow casters' bounds together in `reach`; returns how many.
+   * Gives each placed light its filing, marks the filings whose light or whose hulls changed (see
+   * {@link FramePlan}) as not current, and puts those lights' shadow casters' bounds together in
+   * `reach`; returns how many are not current.
    */
-  private placeLights(lights: readonly Light[], viewProjection: ReadonlyMat4, targetWidth: number, targetHeight: number): number {
+  private findFilingsToRedo(placed: number, geometry: ShadowGeometry): number {
+    for (let i = 0; i < placed; i++) {
+      const draw = this.draws[i];
+      const filing = this.filingOf(draw.light);
+      draw.filing = filing;
+      filing.usedFrame = this.frame;
+      if (filing.current && !filing.matches(draw)) filing.current = false;
+    }
+    // Every changed hull against every kept filing: few changes in a scene that keeps many.
+    const boxes = geometry.changedBoxes, changed = geometry.changedCount;
+    for (let i = 0; i < placed; i++) {
+      const filing = this.draws[i].filing, b = this.draws[i].bounds;
+      for (let k = 0; filing.current && k < changed; k++) {
+        if (!(boxes[4 * k] > b[2] || boxes[4 * k + 2] < b[0] || boxes[4 * k + 1] > b[3] || boxes[4 * k + 3] < b[1])) filing.current = false;
+      }
+    }
     const reach = this.reach;
     reach[0] = reach[1] = Infinity;
     reach[2] = reach[3] = -Infinity;
+    let count = 0;
+    for (let i = 0; i < placed; i++) {
+      const draw = this.draws[i];
+      if (draw.filing.current) continue;
+      count++;
+      if (!draw.light.castsShadows) continue;
+      const b = draw.light instanceof DirectionalLight ? writeUpstreamBox(draw, this.upstreamBox) : draw.bounds;
+      if (b[0] < reach[0]) reach[0] = b[0];
+      if (b[1] < reach[1]) reach[1] = b[1];
+      if (b[2] > reach[2]) reach[2] = b[2];
+      if (b[3] > reach[3]) reach[3] = b[3];
+    }
+    return count;
+  }
+
+  /** The light's filing, a new one (on a free row) when it has none. */
+  private filingOf(light: Light): LightFiling {
+    let filing = this.filings.get(light);
+    if (filing) return filing;
+    const row = this.freeRows.length > 0 ? this.freeRows.pop()! : this.filingsByRow.length;
+    filing = new LightFiling(light, row);
+    this.filings.set(light, filing);
+    this.filingsByRow[row] = filing;
+    return filing;
+  }
+
+  /** Frees the rows and spans of the lights not placed this frame (off screen, disabled, removed). */
+  private releaseUnusedFilings(): void {
+    for (let row = 0; row < this.filingsByRow.length; row++) {
+      const filing = this.filingsByRow[row];
+      if (!filing || filing.usedFrame === this.frame) continue;
+      this.bins.releaseSpan(filing);
+      this.filings.delete(filing.light);
+      this.filingsByRow[row] = null;
+      this.freeRows.push(row);
+    }
+  }
+
+  /** Marks every filing as not current and gives up its span (after a new layout, or when the spans are dropped). */
+  private forgetFilings(): void {
+    for (const filing of this.filingsByRow) {
+      if (!filing) continue;
+      filing.current = false;
+      this.bins.releaseSpan(filing);
+    }
+  }
+
+  /** Puts the enabled, visible, on-screen lights' quads, bounds and scissors in the first draws; returns how many. */
+  private placeLights(lights: readonly Light[], viewProjection: ReadonlyMat4, targetWidth: number, targetHeight: number): number {
     let placed = 0;
     for (let i = 0; i < lights.length; i++) {
       const light = lights[i];
@@ -87,12 +183,6 @@ export class FramePlan {
       writeBounds(draw);
       if (!scissorOf(draw.bounds, viewProjection, targetWidth, targetHeight, draw.scissor)) continue;
       placed++;
-      if (!light.castsShadows) continue;
-      const b = light instanceof DirectionalLight ? writeUpstreamBox(draw, this.upstreamBox) : draw.bounds;
-      if (b[0] < reach[0]) reach[0] = b[0];
-      if (b[1] < reach[1]) reach[1] = b[1];
-      if (b[2] > reach[2]) reach[2] = b[2];
-      if (b[3] > reach[3]) reach[3] = b[3];
     }
     return placed;
   }
@@ -108,7 +198,7 @@ export class FramePlan {
     const bins = this.bins;
     bins.beginLight(light.position[0], light.position[1], light.radius, draw.reach);
     for (let i = 0; i < count; i++) bins.addHull(geometry, inRange[i]);
-    draw.binRow = bins.endLight(geometry);
+    bins.endLight(geometry, draw.filing);
     return true;
   }
 
@@ -134,7 +224,7 @@ export class FramePlan {
       geometry.prepare(index);
       if (bins.addDirectionalHull(geometry, index)) draw.hullCount++;
     }
-    if (draw.hullCount > 0) draw.binRow = bins.endLight(geometry);
+    if (draw.hullCount > 0) bins.endLight(geometry, draw.filing);
   }
 
   /** Writes the view rectangle's world quad: clip space's corner (−1, −1) and its two edges, through the inverse view-projection. */
@@ -237,4 +327,66 @@ function writeBounds(draw: LightDraw): void {
   b[1] = Math.min(ly, q[1], q[1] + q[3], q[1] + q[5], q[1] + q[3] + q[5]);
   b[2] = Math.max(lx, q[0], q[0] + q[2], q[0] + q[4], q[0] + q[2] + q[4]);
   b[3] = Math.max(ly, q[1], q[1] + q[3], q[1] + q[5], q[1] + q[3] + q[5]);
+}
+
+/**
+ * A light's filing as of the frame it was made (see {@link FramePlan}): what it depends on, and what
+ * it gave: the hull count, whether the light is skipped, its row of bins and span of entries.
+ */
+class LightFiling implements BinSpan {
+  /** Whether the filing still holds: false until made, and once something it depends on changed. */
+  current = false;
+  skipped = false;
+  hullCount = 0;
+  firstEntry = 0;
+  entryCapacity = 0;
+  /** The last frame the light was placed in. */
+  usedFrame = 0;
+  private x = 0;
+  private y = 0;
+  private radius = 0;
+  private reach = 0;
+  private castsShadows = false;
+  private shadowLayers = 0;
+  private readonly bounds = new Float64Array(4);
+  private readonly ignoredHulls: Hull[] = [];
+
+  constructor(readonly light: Light, readonly row: number) {}
+
+  /** Records what the filing made now depends on (`draw` is the light's, placed this frame). */
+  record(draw: LightDraw): void {
+    const light = this.light;
+    this.current = true;
+    this.x = light.position[0];
+    this.y = light.position[1];
+    this.radius = light.radius;
+    this.reach = draw.reach;
+    this.castsShadows = light.castsShadows;
+    this.shadowLayers = light.shadowLayers;
+    this.bounds.set(draw.bounds);
+    this.ignoredHulls.length = 0;
+    light.ignoredHulls.forEach(this.addIgnoredHull, this);
+  }
+
+  /** Whether the light, placed as `draw`, is as it was when filed (a directional light never is: its strips follow the view). */
+  matches(draw: LightDraw): boolean {
+    const light = this.light, b = draw.bounds, own = this.bounds;
+    return !(light instanceof DirectionalLight)
+      && light.position[0] === this.x && light.position[1] === this.y && light.radius === this.radius
+      && draw.reach === this.reach && light.castsShadows === this.castsShadows && light.shadowLayers === this.shadowLayers
+      && b[0] === own[0] && b[1] === own[1] && b[2] === own[2] && b[3] === own[3]
+      && this.sameIgnoredHulls();
+  }
+
+  /** Whether `light.ignoredHulls` holds the hulls it held when filed: as many, and each of those. */
+  private sameIgnoredHulls(): boolean {
+    const now = this.light.ignoredHulls;
+    if (now.size !== this.ignoredHulls.length) return false;
+    for (let i = 0; i < this.ignoredHulls.length; i++) if (!now.has(this.ignoredHulls[i])) return false;
+    return true;
+  }
+
+  private addIgnoredHull(hull: Hull): void {
+    this.ignoredHulls.push(hull);
+  }
 }

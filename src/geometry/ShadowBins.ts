@@ -29,12 +29,18 @@ const ASIN_CUBIC = Math.PI / 2 - 1;
  * to frame.
  */
 export class ShadowBins {
-  /** Rows of {@link BIN_COUNT} bins, one per shadowed light. */
+  /** Rows of {@link BIN_COUNT} bins, one per light's {@link BinSpan.row}. */
   bins = new Float32Array(BIN_COUNT * BIN_FLOATS * 8);
-  rowCount = 0;
-  /** Entries of all rows' bins, in whole rows of the entries texture. */
+  /** Per row of `bins`: 1 when written since the last {@link ShadowBins.beginFrame}. */
+  dirtyBinRows = new Uint8Array(8);
+  /** The entries of every light's span, in whole rows of the entries texture. */
   entries = new Float32Array(TEXTURE_WIDTH * ENTRY_FLOATS);
-  entryCount = 0;
+  /** Per row of the entries texture ({@link TEXTURE_WIDTH} entries): 1 when written since the last {@link ShadowBins.beginFrame}. */
+  dirtyEntryRows = new Uint8Array(1);
+  /** End of the last span handed out. */
+  private entryEnd = 0;
+  /** Entries in spans not released. */
+  private liveEntries = 0;
   /** Candidates of the current light, in parallel arrays: hull, distance bucket, first bin and bin count. */
   private candidateHulls = new Int32Array(64);
   private candidateBuckets = new Uint8Array(64);
@@ -51,10 +57,22 @@ export class ShadowBins {
   private lightRadius = 0;
   private bucketWidth = 1;
 
-  /** Starts a frame: no rows, no entries. */
-  reset(): void {
-    this.rowCount = 0;
-    this.entryCount = 0;
+  /**
+   * Starts a frame: nothing is dirty. When released spans fill more than half the entries, drops
+   * every span and returns true: the caller must then release every row and file them all anew.
+   */
+  beginFrame(): boolean {
+    this.dirtyBinRows.fill(0);
+    this.dirtyEntryRows.fill(0);
+    if (this.entryEnd <= 2 * this.liveEntries + TEXTURE_WIDTH) return false;
+    this.entryEnd = this.liveEntries = 0;
+    return true;
+  }
+
+  /** Gives up a row's span of entries (its entries are left as they are, unused). */
+  releaseSpan(span: BinSpan): void {
+    this.liveEntries -= span.entryCapacity;
+    span.entryCapacity = 0;
   }
 
   /** Starts the row of the light with the given centre, disk radius and reach (it adds nothing farther). */
@@ -95,10 +113,17 @@ export class ShadowBins {
     this.candidateBinCounts[i] = binCount;
   }
 
-  /** Files the current light's candidates into its row; returns the row. */
-  endLight(geometry: ShadowGeometry): number {
-    const row = this.rowCount++;
-    this.bins = grow(this.bins, row * BIN_COUNT * BIN_FLOATS, BIN_COUNT * BIN_FLOATS);
+  /**
+   * Files the current light's candidates into the bins of `span.row` and its span of entries,
+   * moving the span to the end when they no longer fit, and marks what it wrote dirty.
+   */
+  endLight(geometry: ShadowGeometry, span: BinSpan): void {
+    const row = span.row, rowFloats = BIN_COUNT * BIN_FLOATS;
+    if (this.bins.length < (row + 1) * rowFloats) {
+      this.bins = grow(this.bins, this.bins.length, (row + 1) * rowFloats - this.bins.length, rowFloats);
+      this.dirtyBinRows = grow(this.dirtyBinRows, this.dirtyBinRows.length, this.bins.length / rowFloats - this.dirtyBinRows.length);
+    }
+    this.dirtyBinRows[row] = 1;
     this.sortByBucket();
     const count = this.candidateCount, firstBins = this.candidateFirstBins, binCounts = this.candidateBinCounts, hulls = this.candidateHulls;
     const recordCounts = geometry.recordCounts, firstRecords = geometry.firstRecords, convex = geometry.convex;
@@ -116,12 +141,13 @@ export class ShadowBins {
         cursors[end - BIN_COUNT] -= entries;
       }
     }
-    const firstEntry = this.entryCount;
-    this.entries = grow(this.entries, firstEntry * ENTRY_FLOATS, total * ENTRY_FLOATS, TEXTURE_WIDTH * ENTRY_FLOATS);
+    if (total > span.entryCapacity) this.moveSpan(span, total);
+    const firstEntry = span.firstEntry;
+    this.dirtyEntryRows.fill(1, Math.floor(firstEntry / TEXTURE_WIDTH), Math.floor((firstEntry + total - 1) / TEXTURE_WIDTH) + 1);
     const bins = this.bins;
     for (let bin = 0, start = firstEntry, size = wrapping; bin < BIN_COUNT; bin++) {
       size += cursors[bin];
-      const b = (row * BIN_COUNT + bin) * BIN_FLOATS;
+      const b = row * rowFloats + bin * BIN_FLOATS;
       bins[b] = start;
       bins[b + 1] = size;
       bins[b + 2] = this.bucketWidth;
@@ -145,8 +171,24 @@ export class ShadowBins {
         }
       }
     }
-    this.entryCount += total;
-    return row;
+  }
+
+  /**
+   * Gives `span` room for `entries` at the end, a quarter more than asked so that a light whose
+   * entries grow a little from frame to frame stays put (the texture rows it dirties stay few).
+   */
+  private moveSpan(span: BinSpan, entries: number): void {
+    this.releaseSpan(span);
+    const capacity = entries + (entries >> 2), rowFloats = TEXTURE_WIDTH * ENTRY_FLOATS;
+    span.firstEntry = this.entryEnd;
+    span.entryCapacity = capacity;
+    this.entryEnd += capacity;
+    this.liveEntries += capacity;
+    if (this.entryEnd * ENTRY_FLOATS > this.entries.length) {
+      // A grown texture is allocated and uploaded whole: no rows need marking.
+      this.entries = grow(this.entries, span.firstEntry * ENTRY_FLOATS, capacity * ENTRY_FLOATS, rowFloats);
+      this.dirtyEntryRows = new Uint8Array(this.entries.length / rowFloats);
+    }
   }
 
   /**
@@ -209,6 +251,15 @@ export class ShadowBins {
     this.candidateBinCounts = grow(this.candidateBinCounts, used, used);
     this.order = new Int32Array(this.candidateHulls.length);
   }
+}
+
+/** Where a light's shadow data lives, kept from frame to frame: its row of bins and its span of entries. */
+export interface BinSpan {
+  /** The light's row in {@link ShadowBins.bins}. */
+  readonly row: number;
+  /** The first entry of its span and how many entries the span holds (0: no span yet). */
+  firstEntry: number;
+  entryCapacity: number;
 }
 
 /**

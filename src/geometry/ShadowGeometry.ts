@@ -39,6 +39,16 @@ export class ShadowGeometry {
   circles = new Float64Array(0);
   /** Edges of all valid hulls. */
   validEdgeCount = 0;
+  /** Counts the layouts: every hull's index and records may differ from one layout to the next. */
+  layoutVersion = 0;
+  /**
+   * The hulls the last `update` refreshed without a new layout, and per hull the box around its
+   * coarse bounds before and after (`[minX, minY, maxX, maxY]` at `4 × k` for the k-th changed
+   * hull): every light whose range that box misses is unaffected by the change.
+   */
+  changedHulls = new Int32Array(0);
+  changedBoxes = new Float64Array(0);
+  changedCount = 0;
   private layoutHulls: Hull[] = [];
   /** Per hull: `hull.version` when `coarseBounds`, `castsShadow` and `convex` were last refreshed. */
   private refreshedVersions = new Float64Array(0);
@@ -50,6 +60,7 @@ export class ShadowGeometry {
   /** Forgets the layout so the next update rewrites and re-uploads everything (e.g. after a context loss). */
   invalidate(): void {
     this.layoutHulls = [];
+    this.layoutVersion++;
   }
 
   /**
@@ -59,11 +70,14 @@ export class ShadowGeometry {
    */
   update(hulls: readonly Hull[]): void {
     this.dirtyRows.fill(0);
+    this.changedCount = 0;
     // Indexed loops here and in other per-frame code: a for-of over thousands of hulls showed
     // iterator results on the heap every frame.
     if (hulls.length !== this.layoutHulls.length || !this.refresh(hulls)) {
       this.layOut(hulls);
       this.refresh(hulls);
+      this.changedCount = 0;
+      this.layoutVersion++;
     }
   }
 
@@ -99,6 +113,12 @@ export class ShadowGeometry {
     this.refreshedVersions[index] = hull.version;
     hull.updateCoarseBounds();
     const from = hull.coarseBounds, to = this.coarseBounds;
+    const changed = this.changedCount++, box = this.changedBoxes;
+    this.changedHulls[changed] = index;
+    box[4 * changed] = Math.min(from[0], to[4 * index]);
+    box[4 * changed + 1] = Math.min(from[1], to[4 * index + 1]);
+    box[4 * changed + 2] = Math.max(from[2], to[4 * index + 2]);
+    box[4 * changed + 3] = Math.max(from[3], to[4 * index + 3]);
     to[4 * index] = from[0];
     to[4 * index + 1] = from[1];
     to[4 * index + 2] = from[2];
@@ -148,6 +168,8 @@ export class ShadowGeometry {
       this.refreshedVersions = new Float64Array(capacity);
       this.preparedVersions = new Float64Array(capacity);
       this.countedEdges = new Int32Array(capacity);
+      this.changedHulls = new Int32Array(capacity);
+      this.changedBoxes = new Float64Array(4 * capacity);
     }
     this.refreshedVersions.fill(-1);
     this.preparedVersions.fill(-1);

@@ -1,117 +1,111 @@
 import type { ShadowBins } from '../geometry/ShadowBins';
 import type { ShadowGeometry } from '../geometry/ShadowGeometry';
-import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, RECORD_FLOATS, RECORDS_PER_ROW, TEXTURE_WIDTH } from '../geometry/shadowLayout';
+import { BIN_COUNT, RECORDS_PER_ROW, TEXTURE_WIDTH } from '../geometry/shadowLayout';
 
 /** Texture units of the shadow textures; the light pass binds a light's cookie on unit 2. */
 export const ShadowUnits = { records: 0, bins: 1, entries: 3, recordTags: 4 } as const;
 
 /**
- * The GPU copy of the shadow data (see shadowLayout): the records of every hull and their tags
- * (uploaded by dirty rows: only when hulls change), and the frame's bins and entries (the rows the
- * frame used).
+ * The GPU copy of the shadow data (see shadowLayout): the records of every hull and their tags, and
+ * the lights' bins and entries, each uploaded by the rows written since the last upload (records
+ * when hulls change, bins and entries when lights are filed anew), or whole when it grew.
  */
 export class ShadowTextures {
-  readonly records: WebGLTexture;
-  readonly recordTags: WebGLTexture;
-  readonly bins: WebGLTexture;
-  readonly entries: WebGLTexture;
-  private recordRows = 0;
-  private binRows = 0;
-  private entryRows = 0;
+  private readonly recordData: DataTexture;
+  private readonly recordTagData: DataTexture;
+  private readonly binData: DataTexture;
+  private readonly entryData: DataTexture;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
-    this.records = createDataTexture(gl);
-    this.recordTags = createDataTexture(gl, TAG_FORMAT);
-    this.bins = createDataTexture(gl);
-    this.entries = createDataTexture(gl);
+    this.recordData = new DataTexture(gl, TEXTURE_WIDTH, 4);
+    this.recordTagData = new DataTexture(gl, RECORDS_PER_ROW, 1);
+    this.binData = new DataTexture(gl, BIN_COUNT, 4);
+    this.entryData = new DataTexture(gl, TEXTURE_WIDTH, 4);
+  }
+
+  get records(): WebGLTexture {
+    return this.recordData.texture;
   }
 
   /** Uploads what changed; leaves the textures bound on their units (see {@link ShadowUnits}) and unit 0 active. */
   upload(geometry: ShadowGeometry, bins: ShadowBins): void {
     const gl = this.gl;
-    const recordRows = geometry.records.length / (RECORDS_PER_ROW * RECORD_FLOATS);
-    const resized = recordRows !== this.recordRows;
-    this.recordRows = recordRows;
     gl.activeTexture(gl.TEXTURE0 + ShadowUnits.recordTags);
-    gl.bindTexture(gl.TEXTURE_2D, this.recordTags);
-    uploadRecordRows(gl, geometry, geometry.recordTags, RECORDS_PER_ROW, TAG_FORMAT, resized);
+    this.recordTagData.upload(geometry.dirtyRows, geometry.recordTags);
     gl.activeTexture(gl.TEXTURE0 + ShadowUnits.records);
-    gl.bindTexture(gl.TEXTURE_2D, this.records);
-    uploadRecordRows(gl, geometry, geometry.records, TEXTURE_WIDTH, RECORD_FORMAT, resized);
+    this.recordData.upload(geometry.dirtyRows, geometry.records);
     gl.activeTexture(gl.TEXTURE0 + ShadowUnits.bins);
-    gl.bindTexture(gl.TEXTURE_2D, this.bins);
-    this.binRows = uploadUsed(gl, BIN_COUNT, bins.bins, bins.rowCount * BIN_COUNT * BIN_FLOATS, this.binRows);
+    this.binData.upload(bins.dirtyBinRows, bins.bins);
     gl.activeTexture(gl.TEXTURE0 + ShadowUnits.entries);
-    gl.bindTexture(gl.TEXTURE_2D, this.entries);
-    this.entryRows = uploadUsed(gl, TEXTURE_WIDTH, bins.entries, bins.entryCount * ENTRY_FLOATS, this.entryRows);
+    this.entryData.upload(bins.dirtyEntryRows, bins.entries);
     gl.activeTexture(gl.TEXTURE0);
   }
 
   dispose(): void {
-    this.gl.deleteTexture(this.records);
-    this.gl.deleteTexture(this.recordTags);
-    this.gl.deleteTexture(this.bins);
-    this.gl.deleteTexture(this.entries);
+    this.recordData.dispose();
+    this.recordTagData.dispose();
+    this.binData.dispose();
+    this.entryData.dispose();
   }
 }
 
-/** A float texture's format: four floats a texel, or one. */
-interface DataFormat {
-  readonly channels: 1 | 4;
-}
-const RECORD_FORMAT: DataFormat = { channels: 4 };
-const TAG_FORMAT: DataFormat = { channels: 1 };
+/** A nearest-filtered RGBA32F (or R32F) texture `width` texels wide, a copy of the rows of a float array. */
+class DataTexture {
+  readonly texture: WebGLTexture;
+  private rows = -1;
+  /**
+   * Per row, a view of the array from that row on, made once per array: texSubImage2D's source
+   * offset would do without views, but headless-gl ignores it (it uploads from the array's start).
+   */
+  private views: Float32Array[] = [];
+  private viewed: Float32Array | null = null;
 
-function createDataTexture(gl: WebGL2RenderingContext, format: DataFormat = RECORD_FORMAT): WebGLTexture {
-  const texture = gl.createTexture()!;
-  gl.bindTexture(gl.TEXTURE_2D, texture);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-  allocate(gl, 1, 1, format);
-  return texture;
-}
-
-/** (Re)allocates the bound RGBA32F (or R32F) texture. */
-function allocate(gl: WebGL2RenderingContext, width: number, rows: number, format: DataFormat = RECORD_FORMAT): void {
-  const [internal, layout] = format.channels === 4 ? [gl.RGBA32F, gl.RGBA] : [gl.R32F, gl.RED];
-  gl.texImage2D(gl.TEXTURE_2D, 0, internal, width, Math.max(rows, 1), 0, layout, gl.FLOAT, null);
-}
-
-function uploadRows(gl: WebGL2RenderingContext, width: number, firstRow: number, rows: number, data: Float32Array, format: DataFormat = RECORD_FORMAT): void {
-  const layout = format.channels === 4 ? gl.RGBA : gl.RED;
-  gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, firstRow, width, rows, layout, gl.FLOAT, data, firstRow * width * format.channels);
-}
-
-/**
- * Uploads per-record data (`width` texels a row of records) to the bound texture: all of it when
- * the rows changed in number (reallocating), else the runs of dirty rows, one call per run.
- */
-function uploadRecordRows(gl: WebGL2RenderingContext, geometry: ShadowGeometry, data: Float32Array, width: number, format: DataFormat, resized: boolean): void {
-  const dirty = geometry.dirtyRows;
-  if (resized) {
-    allocate(gl, width, dirty.length, format);
-    if (dirty.length > 0) uploadRows(gl, width, 0, dirty.length, data, format);
-    return;
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly width: number, private readonly channels: 1 | 4) {
+    this.texture = gl.createTexture()!;
+    gl.bindTexture(gl.TEXTURE_2D, this.texture);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    this.allocate(1);
   }
-  for (let row = 0; row < dirty.length; row++) {
-    if (dirty[row] === 0) continue;
-    const first = row;
-    while (row + 1 < dirty.length && dirty[row + 1] !== 0) row++;
-    uploadRows(gl, width, first, row + 1 - first, data, format);
-  }
-}
 
-/**
- * Uploads the rows of the bound texture (`width` texels wide) that hold `data`'s first `floats`,
- * growing it to the array's whole rows when it no longer fits; returns its row count.
- */
-function uploadUsed(gl: WebGL2RenderingContext, width: number, data: Float32Array, floats: number, rows: number): number {
-  const rowFloats = width * 4;
-  const used = Math.ceil(floats / rowFloats);
-  if (used > rows) {
-    rows = data.length / rowFloats;
-    allocate(gl, width, rows);
+  /**
+   * Binds the texture on the active unit and uploads `data` (one row per entry of `dirty`): all of
+   * it, reallocating, when its rows changed in number, else the runs of dirty rows, one call each.
+   */
+  upload(dirty: Uint8Array, data: Float32Array): void {
+    const gl = this.gl;
+    gl.bindTexture(gl.TEXTURE_2D, this.texture);
+    if (dirty.length !== this.rows) {
+      this.rows = dirty.length;
+      this.allocate(this.rows);
+      if (this.rows > 0) this.uploadRows(data, 0, this.rows);
+      return;
+    }
+    for (let row = 0; row < dirty.length; row++) {
+      if (dirty[row] === 0) continue;
+      const first = row;
+      while (row + 1 < dirty.length && dirty[row + 1] !== 0) row++;
+      this.uploadRows(data, first, row + 1 - first);
+    }
   }
-  if (used > 0) uploadRows(gl, width, 0, used, data);
-  return rows;
+
+  dispose(): void {
+    this.gl.deleteTexture(this.texture);
+  }
+
+  private allocate(rows: number): void {
+    const gl = this.gl;
+    const [internal, layout] = this.channels === 4 ? [gl.RGBA32F, gl.RGBA] : [gl.R32F, gl.RED];
+    gl.texImage2D(gl.TEXTURE_2D, 0, internal, this.width, Math.max(rows, 1), 0, layout, gl.FLOAT, null);
+  }
+
+  private uploadRows(data: Float32Array, firstRow: number, rows: number): void {
+    const gl = this.gl;
+    if (this.viewed !== data) {
+      this.viewed = data;
+      this.views = [];
+    }
+    const view = this.views[firstRow] ??= data.subarray(firstRow * this.width * this.channels);
+    gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, firstRow, this.width, rows, this.channels === 4 ? gl.RGBA : gl.RED, gl.FLOAT, view);
+  }
 }

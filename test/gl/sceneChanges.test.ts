@@ -173,6 +173,75 @@ describe('transforms', () => {
   });
 });
 
+describe('lights whose shadows did not change', () => {
+  /** Two lights with a box each, one to the left and one to the right, added to `target`. */
+  function twoRooms(target: PenumbraRenderer): { left: PointLight; right: PointLight; rightBox: Hull } {
+    const left = target.addLight(new PointLight({ position: [15, 32], range: 40, radius: 2 }));
+    const right = target.addLight(new PointLight({ position: [80, 32], range: 40, radius: 2 }));
+    target.addHull(new Hull([[-3, -5], [3, -5], [3, 5], [-3, 5]], { position: [30, 30] }));
+    const rightBox = target.addHull(new Hull([[-3, -5], [3, -5], [3, 5], [-3, 5]], { position: [65, 34] }));
+    return { left, right, rightBox };
+  }
+
+  /** Counts the texture uploads of each frame. */
+  function countUploads(): { count: number } {
+    const counter = { count: 0 };
+    const upload = gl.texSubImage2D.bind(gl) as (...args: unknown[]) => void;
+    (gl as unknown as { texSubImage2D: (...args: unknown[]) => void }).texSubImage2D = (...args: unknown[]) => {
+      counter.count++;
+      upload(...args);
+    };
+    return counter;
+  }
+
+  it('are not filed anew nor uploaded, and the lightmap is what a new renderer draws', () => {
+    const { left, rightBox } = twoRooms(renderer);
+    frame();
+    expect(renderer.stats.lightsFiled).toBe(2);
+    const uploads = countUploads();
+    const still = frame();
+    expect(renderer.stats.lightsFiled).toBe(0);
+    expect(uploads.count).toBe(0);
+    left.setPosition(14, 33);
+    frame();
+    expect(renderer.stats.lightsFiled).toBe(1);
+    // The left light's row of bins and its entries: a run of texture rows each.
+    expect(uploads.count).toBe(2);
+    rightBox.position = [66, 35];
+    uploads.count = 0;
+    const changed = frame();
+    expect(renderer.stats.lightsFiled).toBe(1);
+    // The box's records and tags, the right light's bins and entries.
+    expect(uploads.count).toBe(4);
+    expect(maxDifference(still, changed)).toBeGreaterThan(0.1);
+
+    const fresh = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0] });
+    const copy = twoRooms(fresh);
+    copy.left.setPosition(14, 33);
+    copy.rightBox.position = [66, 35];
+    const other = renderLightmap(gl, fresh, W, H);
+    expect(maxDifference(changed, other)).toBeLessThan(1e-3);
+    fresh.dispose();
+  });
+
+  it('upload changed rows where they belong, past the first row of each texture too', () => {
+    // More than a row of records (512): 600 specks along the bottom, in range, then the box.
+    const specks = (target: PenumbraRenderer) => {
+      for (let i = 0; i < 600; i++) target.addHull(new Hull([[0, 0], [0.1, 0], [0, 0.1]], { position: [(i % 96) + 0.5, 62 + (i % 2)] }));
+    };
+    specks(renderer);
+    const { rightBox } = twoRooms(renderer);
+    frame();
+    rightBox.position = [66, 30];
+    const moved = frame();
+    const fresh = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0] });
+    specks(fresh);
+    twoRooms(fresh).rightBox.position = [66, 30];
+    expect(maxDifference(moved, renderLightmap(gl, fresh, W, H))).toBeLessThan(1e-3);
+    fresh.dispose();
+  });
+});
+
 describe('frame stats', () => {
   it('counts the scene, and times the frame only when asked', () => {
     renderer.addLight(new PointLight({ position: [20, 32], range: 60 }));

@@ -202,3 +202,102 @@ describe('FramePlan shadow bins', () => {
     expect(plan([cookie], []).draws[0].reach).toBeCloseTo(Math.sqrt(40 * 40 + 10 * 10), 9);
   });
 });
+
+describe('FramePlan filings kept from frame to frame', () => {
+  /** Per drawn light: its hull count and, per bin, its entries sorted (a kept filing may order a distance bucket differently) and the bin's bucket width. */
+  function filings(framePlan: FramePlan): Map<Light, string> {
+    const { bins, entries } = framePlan.bins;
+    const out = new Map<Light, string>();
+    for (let d = 0; d < framePlan.drawCount; d++) {
+      const draw = framePlan.draws[d];
+      const perBin: string[] = [`hulls ${draw.hullCount}`];
+      for (let bin = 0; draw.hullCount > 0 && bin < BIN_COUNT; bin++) {
+        const b = (draw.binRow * BIN_COUNT + bin) * BIN_FLOATS;
+        const listed: string[] = [];
+        for (let e = bins[b]; e < bins[b] + bins[b + 1]; e++) listed.push(entries.subarray(e * ENTRY_FLOATS, (e + 1) * ENTRY_FLOATS).join(' '));
+        perBin.push(`${bins[b + 2]}: ${listed.sort().join(', ')}`);
+      }
+      out.set(draw.light, perBin.join('\n'));
+    }
+    return out;
+  }
+
+  /** A square hull with corners (x, y) and (x + size, y + size), its points around its position (as hulls' coarse bounds expect). */
+  const square = (x: number, y: number, size: number) => {
+    const h = size / 2;
+    return new Hull([[-h, -h], [h, -h], [h, h], [-h, h]], { position: [x + h, y + h] });
+  };
+
+  it('files a light anew only when it, a hull near it, or the list of hulls changed', () => {
+    const left = new PointLight({ position: [40, 50], range: 40, radius: 3 });
+    const right = new PointLight({ position: [160, 50], range: 40, radius: 3 });
+    const nearLeft = square(60, 45, 8), nearRight = square(130, 45, 8);
+    const hulls = [nearLeft, nearRight];
+    const geometry = new ShadowGeometry(), framePlan = new FramePlan();
+    const filed = () => {
+      geometry.update(hulls);
+      framePlan.build([left, right], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
+      return framePlan.filedCount;
+    };
+    expect(filed()).toBe(2);
+    expect(filed()).toBe(0);
+    left.setPosition(41, 50);
+    expect(filed()).toBe(1);
+    nearRight.position = [135, 50];
+    expect(filed()).toBe(1);
+    right.ignoredHulls.add(nearRight);
+    expect(filed()).toBe(1);
+    right.ignoredHulls.delete(nearRight);
+    right.ignoredHulls.add(nearLeft);
+    expect(filed()).toBe(1);
+    left.radius = 4;
+    expect(filed()).toBe(1);
+    right.shadowLayers = 2;
+    expect(filed()).toBe(1);
+    // A hull moved from near one light to near the other changes both.
+    nearLeft.position = [140, 50];
+    expect(filed()).toBe(2);
+    hulls.push(square(100, 90, 2));
+    expect(filed()).toBe(2);
+    expect(filed()).toBe(0);
+  });
+
+  it('keeps filings that equal a new plan’s through random changes to lights and hulls', () => {
+    let seed = 11;
+    const random = () => (seed = (seed * 16807) % 2147483647) / 2147483647;
+    const between = (low: number, high: number) => low + (high - low) * random();
+    const lights = Array.from({ length: 6 }, () => new PointLight({ position: [between(0, WIDTH), between(0, HEIGHT)], range: between(20, 60), radius: between(0, 6) }));
+    const hulls = Array.from({ length: 30 }, () => square(between(0, WIDTH), between(0, HEIGHT), between(2, 8)));
+    const pick = <T>(list: T[]) => list[Math.floor(random() * list.length)];
+    const changes: (() => void)[] = [
+      () => {},
+      () => pick(lights).setPosition(between(0, WIDTH), between(0, HEIGHT)),
+      () => { pick(lights).radius = between(0, 6); },
+      () => { pick(lights).range = between(20, 60); },
+      () => { const light = pick(lights); light.castsShadows = !light.castsShadows; },
+      () => { const light = pick(lights); light.enabled = !light.enabled; },
+      () => { pick(lights).shadowLayers = random() < 0.5 ? 1 : 2; },
+      () => { const light = pick(lights), hull = pick(hulls); if (!light.ignoredHulls.delete(hull)) light.ignoredHulls.add(hull); },
+      () => { const hull = pick(hulls); hull.position = [hull.position[0] + between(-10, 10), hull.position[1] + between(-10, 10)]; },
+      () => { pick(hulls).rotation = between(0, 6); },
+      () => { const hull = pick(hulls); hull.enabled = !hull.enabled; },
+      () => { pick(hulls).layers = random() < 0.5 ? 2 : 1; },
+      () => hulls.push(square(between(0, WIDTH), between(0, HEIGHT), between(2, 8))),
+      () => hulls.splice(Math.floor(random() * hulls.length), 1),
+    ];
+    const geometry = new ShadowGeometry(), kept = new FramePlan();
+    let filedTotal = 0, drawnTotal = 0;
+    for (let frame = 0; frame < 400; frame++) {
+      pick(changes)();
+      geometry.update(hulls);
+      kept.build(lights, hulls, geometry, pixelSpace, WIDTH, HEIGHT);
+      filedTotal += kept.filedCount;
+      drawnTotal += kept.drawCount;
+      const fresh = plan(lights, hulls);
+      expect(drawnLights(kept), `frame ${frame}`).toEqual(drawnLights(fresh));
+      expect(filings(kept), `frame ${frame}`).toEqual(filings(fresh));
+    }
+    // Most frames change one thing near one light or two: most filings are kept.
+    expect(filedTotal / drawnTotal).toBeLessThan(0.5);
+  });
+});
