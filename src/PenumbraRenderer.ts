@@ -546,7 +546,7 @@ export class PenumbraRenderer {
     this.enterHostState();
     try {
       this.renderLightmapInto(resources, layers);
-      resources.hullMask?.render(resources.shadows.records, this.geometry.recordCount, this._viewProjection);
+      resources.hullMask?.render(resources.shadows.records, this.geometry.recordCount, this.geometry.recordsVersion, this._viewProjection);
       this.bindCompositeTarget();
       resources.composite.render(resources.scene.texture, resources.light.lightmap.textures, this, this.surface, resources.hullMask);
       if (this.debug) {

@@ -77,6 +77,8 @@ export class FramePlan {
     this.layoutVersion = geometry.layoutVersion;
     const placed = this.placeLights(lights, viewProjection, targetWidth, targetHeight);
     const toFile = this.findFilingsToRedo(placed, geometry);
+    // Every light filed anew: their spans are laid out afresh, packed from the first entry.
+    if (toFile === placed) this.forgetFilings();
     if (toFile > 0) this.grid.build(geometry.coarseBounds, geometry.castsShadow, hulls.length, this.reach);
     // Keeps the placed lights whose centre is not inside a hull, in order.
     for (let i = 0; i < placed; i++) {
@@ -159,9 +161,10 @@ export class FramePlan {
     }
   }
 
-  /** Marks every filing as not current and gives up its span (after a new layout, or when the spans are dropped). */
+  /** Marks every filing as not current and gives up its span (after a new layout, when released spans pile up, or when every light is filed anew). */
   private forgetFilings(): void {
-    for (const filing of this.filingsByRow) {
+    for (let row = 0; row < this.filingsByRow.length; row++) {
+      const filing = this.filingsByRow[row];
       if (!filing) continue;
       filing.current = false;
       this.bins.releaseSpan(filing);
@@ -241,7 +244,8 @@ export class FramePlan {
   }
 
   /**
-   * Fills `hullsInRange` with the hulls whose exact bounds overlap the light's, transforming each
+   * Fills `hullsInRange` with the hulls whose exact bounds overlap the light's and whose circle
+   * reaches within its reach of its centre, transforming each
    * candidate the grid finds by its coarse bounds first (see `ShadowGeometry.prepare`), so every
    * change reaches the light this frame; false when the light centre is inside one of them. Reads
    * the geometry's flat arrays, not the hulls: this runs for every hull in every light's range.
@@ -253,8 +257,8 @@ export class FramePlan {
     const grid = this.grid;
     const count = grid.search(b);
     this.hullsInRange = grow(this.hullsInRange, 0, count);
-    const inRange = this.hullsInRange, bounds = geometry.worldBounds, layers = geometry.layers;
-    const shadowLayers = light.shadowLayers;
+    const inRange = this.hullsInRange, bounds = geometry.worldBounds, layers = geometry.layers, circles = geometry.circles;
+    const shadowLayers = light.shadowLayers, reach = draw.reach;
     for (let i = 0; i < count; i++) {
       const index = grid.found[i];
       if ((layers[index] & shadowLayers) === 0) continue;
@@ -262,6 +266,9 @@ export class FramePlan {
       geometry.prepare(index);
       const k = 4 * index;
       if (bounds[k] > b[2] || bounds[k + 2] < b[0] || bounds[k + 1] > b[3] || bounds[k + 3] < b[1]) continue;
+      // Beyond the reach: the segments from the pixels within it to the disk stay within it too.
+      const dx = circles[3 * index] - lx, dy = circles[3 * index + 1] - ly, beyond = reach + circles[3 * index + 2];
+      if (dx * dx + dy * dy >= beyond * beyond) continue;
       if (bounds[k] <= lx && lx <= bounds[k + 2] && bounds[k + 1] <= ly && ly <= bounds[k + 3]
         && hulls[index].closed && isInsidePolygon(hulls[index].worldPoints, light.position)) return false;
       inRange[this.inRangeCount++] = index;

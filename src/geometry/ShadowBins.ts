@@ -58,21 +58,21 @@ export class ShadowBins {
   private bucketWidth = 1;
 
   /**
-   * Starts a frame: nothing is dirty. When released spans fill more than half the entries, drops
-   * every span and returns true: the caller must then release every row and file them all anew.
+   * Starts a frame: nothing is dirty. Returns true when released spans fill more than half the
+   * entries: the caller should then release every span (and file every light anew), which lays the
+   * spans out afresh from the start.
    */
   beginFrame(): boolean {
     this.dirtyBinRows.fill(0);
     this.dirtyEntryRows.fill(0);
-    if (this.entryEnd <= 2 * this.liveEntries + TEXTURE_WIDTH) return false;
-    this.entryEnd = this.liveEntries = 0;
-    return true;
+    return this.entryEnd > 2 * this.liveEntries + TEXTURE_WIDTH;
   }
 
-  /** Gives up a row's span of entries (its entries are left as they are, unused). */
+  /** Gives up a row's span of entries (its entries are left as they are, unused); once none is left, spans start again from the first entry. */
   releaseSpan(span: BinSpan): void {
     this.liveEntries -= span.entryCapacity;
     span.entryCapacity = 0;
+    if (this.liveEntries === 0) this.entryEnd = 0;
   }
 
   /** Starts the row of the light with the given centre, disk radius and reach (it adds nothing farther). */
@@ -174,12 +174,12 @@ export class ShadowBins {
   }
 
   /**
-   * Gives `span` room for `entries` at the end, a quarter more than asked so that a light whose
-   * entries grow a little from frame to frame stays put (the texture rows it dirties stay few).
+   * Gives `span` room for `entries` at the end, an eighth more than asked so that a light whose
+   * entries grow a little from frame to frame mostly stays put.
    */
   private moveSpan(span: BinSpan, entries: number): void {
     this.releaseSpan(span);
-    const capacity = entries + (entries >> 2), rowFloats = TEXTURE_WIDTH * ENTRY_FLOATS;
+    const capacity = entries + (entries >> 3), rowFloats = TEXTURE_WIDTH * ENTRY_FLOATS;
     span.firstEntry = this.entryEnd;
     span.entryCapacity = capacity;
     this.entryEnd += capacity;

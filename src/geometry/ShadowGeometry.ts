@@ -41,6 +41,8 @@ export class ShadowGeometry {
   validEdgeCount = 0;
   /** Counts the layouts: every hull's index and records may differ from one layout to the next. */
   layoutVersion = 0;
+  /** Counts the changes to the records: a new layout, or a hull written by {@link ShadowGeometry.prepare}. */
+  recordsVersion = 0;
   /**
    * The hulls the last `update` refreshed without a new layout, and per hull the box around its
    * coarse bounds before and after (`[minX, minY, maxX, maxY]` at `4 × k` for the k-th changed
@@ -89,6 +91,7 @@ export class ShadowGeometry {
   prepare(index: number): void {
     if (this.preparedVersions[index] === this.refreshedVersions[index]) return;
     this.preparedVersions[index] = this.refreshedVersions[index];
+    this.recordsVersion++;
     const hull = this.layoutHulls[index];
     hull.updateWorld();
     this.writeHull(hull, index);
@@ -133,6 +136,7 @@ export class ShadowGeometry {
 
   private layOut(hulls: readonly Hull[]): void {
     this.layoutHulls = hulls.slice();
+    this.recordsVersion++;
     // Records of hulls not yet prepared stay zero (no outline in the debug wireframe) rather than stale.
     this.records.fill(0);
     this.allocatePerHull(hulls.length);

@@ -1,4 +1,4 @@
-import type { ReadonlyMat4 } from 'gl-matrix';
+import { mat4, type ReadonlyMat4 } from 'gl-matrix';
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget } from '../gl/RenderTarget';
 import { shaderSources } from './shaders';
@@ -28,6 +28,9 @@ export class HullMaskPass {
   private readonly program: Program;
   /** No attributes: the vertex stage fetches the records' points. */
   private readonly emptyVertexArray: WebGLVertexArrayObject;
+  /** What the masks hold: the records' version and the view they were drawn for; null when they hold nothing yet (or were resized). */
+  private drawnRecordsVersion: number | null = null;
+  private readonly drawnView = mat4.create();
 
   /** Frees what it made before throwing when a part cannot be made. */
   constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number, lightmapWidth: number, lightmapHeight: number) {
@@ -53,10 +56,18 @@ export class HullMaskPass {
   resize(width: number, height: number, lightmapWidth: number, lightmapHeight: number): void {
     this.scene.resize(width, height);
     this.lightmap.resize(lightmapWidth, lightmapHeight);
+    this.drawnRecordsVersion = null;
   }
 
-  /** Draws the first `recordCount` records of `records` into both masks. Leaves the lightmap's mask bound. */
-  render(records: WebGLTexture, recordCount: number, viewProjection: ReadonlyMat4): void {
+  /**
+   * Draws the first `recordCount` records of `records` (`ShadowGeometry.recordsVersion`
+   * `recordsVersion`) into both masks, unless they hold those records in this view already. Leaves
+   * the lightmap's mask bound when it draws.
+   */
+  render(records: WebGLTexture, recordCount: number, recordsVersion: number, viewProjection: ReadonlyMat4): void {
+    if (recordsVersion === this.drawnRecordsVersion && mat4.exactEquals(viewProjection, this.drawnView)) return;
+    this.drawnRecordsVersion = recordsVersion;
+    mat4.copy(this.drawnView, viewProjection);
     const gl = this.gl;
     gl.disable(gl.BLEND);
     gl.disable(gl.SCISSOR_TEST);

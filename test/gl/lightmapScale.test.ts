@@ -40,6 +40,45 @@ describe('lightmapScale', () => {
     });
   }
 
+  it('at half scale, redraws the hull masks when a hull moves or the view pans, as a new renderer draws them', () => {
+    const size = 64;
+    const gl = createContext(size, size);
+    const pan = (x: number) => new Float32Array([2 / size, 0, 0, 0, 0, -2 / size, 0, 0, 0, 0, 1, 0, -1 + (2 * x) / size, 1, 0, 1]);
+    const build = (boxX: number, panX: number) => {
+      const renderer = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0], lightmapScale: 0.5, width: size, height: size, viewProjection: pan(panX) });
+      renderer.addLight(new PointLight({ position: [8.3, 32.1], range: 80, radius: 4 }));
+      const hull = renderer.addHull(new Hull([[-5.05, -11.85], [5.05, -11.85], [5.05, 11.85], [-5.05, 11.85]], { position: [boxX, 32.45] }));
+      return { renderer, hull };
+    };
+    const draw = (renderer: PenumbraRenderer) => {
+      renderer.beginDraw();
+      gl.clearColor(1, 1, 1, 1);
+      gl.clear(gl.COLOR_BUFFER_BIT);
+      renderer.draw();
+      const pixels = new Uint8Array(size * size * 4);
+      gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+      return pixels;
+    };
+    const fresh = (boxX: number, panX: number) => {
+      const { renderer } = build(boxX, panX);
+      const pixels = draw(renderer);
+      renderer.dispose();
+      return pixels;
+    };
+    const kept = build(35.35, 0);
+    const first = draw(kept.renderer);
+    expect(draw(kept.renderer)).toEqual(first);
+    kept.hull.position = [41.1, 32.45];
+    const moved = draw(kept.renderer);
+    expect(moved).not.toEqual(first);
+    expect(moved).toEqual(fresh(41.1, 0));
+    kept.renderer.viewProjection = pan(3.3);
+    expect(draw(kept.renderer)).toEqual(fresh(41.1, 3.3));
+    kept.renderer.dispose();
+    expect(gl.getError()).toBe(0);
+    destroyContext(gl);
+  });
+
   it('rejects scales outside (0, 1]', () => {
     const gl = createContext(8, 8);
     expect(() => new PenumbraRenderer(gl, { lightmapScale: 0 })).toThrow(RangeError);
