@@ -4,7 +4,7 @@ import { DirectionalLight, type Light } from '../scene/lights';
 import { HullGrid } from './HullGrid';
 import { isInsidePolygon } from './polygon';
 import { scissorOf } from './scissor';
-import { type BinSpan, DirectionalStrips, DISTANCE_BUCKETS, grow, ShadowBins } from './ShadowBins';
+import { type BinSpan, DirectionalStrips, DISTANCE_BUCKETS, ShadowBins } from './ShadowBins';
 import { BIN_COUNT } from './shadowLayout';
 import type { ShadowGeometry } from './ShadowGeometry';
 
@@ -49,9 +49,6 @@ export class FramePlan {
   drawCount = 0;
   /** Lights filed anew by the last {@link FramePlan.build} (the others drawn kept their filing). */
   filedCount = 0;
-  /** Indices of the hulls in range of the current light: the first `inRangeCount` entries. */
-  private hullsInRange = new Int32Array(64);
-  private inRangeCount = 0;
   private readonly grid = new HullGrid();
   /** Box around the bounds of every light to be filed this frame that casts shadows: the grid files only hulls inside it. */
   private readonly reach = new Float64Array(4);
@@ -193,15 +190,11 @@ export class FramePlan {
   /** Files the records of the hulls in range into the light's bins; false when the light centre is inside a hull. */
   private collectHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
     const light = draw.light;
-    this.inRangeCount = 0;
-    if (light.castsShadows && !this.findHullsInRange(draw, hulls, geometry)) return false;
-    const count = this.inRangeCount, inRange = this.hullsInRange;
-    draw.hullCount = count;
-    if (count === 0) return true;
-    const bins = this.bins;
-    bins.beginLight(light.position[0], light.position[1], light.radius, draw.reach);
-    for (let i = 0; i < count; i++) bins.addHull(geometry, inRange[i]);
-    bins.endLight(geometry, draw.filing);
+    draw.hullCount = 0;
+    if (!light.castsShadows) return true;
+    this.bins.beginLight(light.position[0], light.position[1], light.radius, draw.reach);
+    if (!this.addHullsInRange(draw, hulls, geometry)) return false;
+    if (draw.hullCount > 0) this.bins.endLight(geometry, draw.filing);
     return true;
   }
 
@@ -244,25 +237,25 @@ export class FramePlan {
   }
 
   /**
-   * Fills `hullsInRange` with the hulls whose exact bounds overlap the light's and whose circle
-   * reaches within its reach of its centre, transforming each
-   * candidate the grid finds by its coarse bounds first (see `ShadowGeometry.prepare`), so every
-   * change reaches the light this frame; false when the light centre is inside one of them. Reads
-   * the geometry's flat arrays, not the hulls: this runs for every hull in every light's range.
+   * Adds to the light's bins, as candidates, the hulls whose exact bounds overlap the light's and
+   * whose circle reaches within its reach of its centre, transforming each candidate the grid finds
+   * by its coarse bounds first (see `ShadowGeometry.prepare`), so every change reaches the light
+   * this frame; counts them in `draw.hullCount`. False when the light centre is inside one of them.
+   * Reads the geometry's flat arrays, not the hulls: this runs for every hull in every light's range.
    */
-  private findHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
-    const light = draw.light;
+  private addHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
+    const light = draw.light, bins = this.bins;
     const lx = light.position[0], ly = light.position[1];
     const b = draw.bounds;
     const grid = this.grid;
     const count = grid.search(b);
-    this.hullsInRange = grow(this.hullsInRange, 0, count);
-    const inRange = this.hullsInRange, bounds = geometry.worldBounds, layers = geometry.layers, circles = geometry.circles;
-    const shadowLayers = light.shadowLayers, reach = draw.reach;
+    const bounds = geometry.worldBounds, layers = geometry.layers, circles = geometry.circles;
+    const shadowLayers = light.shadowLayers, reach = draw.reach, ignoring = light.ignoredHulls.size > 0;
+    let added = 0;
     for (let i = 0; i < count; i++) {
       const index = grid.found[i];
       if ((layers[index] & shadowLayers) === 0) continue;
-      if (light.ignoredHulls.size > 0 && light.ignoredHulls.has(hulls[index])) continue;
+      if (ignoring && light.ignoredHulls.has(hulls[index])) continue;
       geometry.prepare(index);
       const k = 4 * index;
       if (bounds[k] > b[2] || bounds[k + 2] < b[0] || bounds[k + 1] > b[3] || bounds[k + 3] < b[1]) continue;
@@ -271,11 +264,12 @@ export class FramePlan {
       if (dx * dx + dy * dy >= beyond * beyond) continue;
       if (bounds[k] <= lx && lx <= bounds[k + 2] && bounds[k + 1] <= ly && ly <= bounds[k + 3]
         && hulls[index].closed && isInsidePolygon(hulls[index].worldPoints, light.position)) return false;
-      inRange[this.inRangeCount++] = index;
+      bins.addHull(geometry, index);
+      added++;
     }
+    draw.hullCount = added;
     return true;
   }
-
 }
 
 /**
