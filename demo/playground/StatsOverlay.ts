@@ -10,14 +10,16 @@ export interface OverlayFigures {
   cpuTime: number;
   lights: number;
   lightsDrawn: number;
+  /** Lights whose shadow casters were filed anew in the last frame (the rest reused theirs). */
+  lightsFiled: number;
   hulls: number;
   edges: number;
 }
 
-/** The stats overlay: fps, the renderer's CPU time per frame, lights (total and drawn), hulls and edges. */
+/** The stats overlay: fps, the renderer's CPU time per frame, lights (total, drawn, filed anew), hulls and edges. */
 export class StatsOverlay {
   /** The figures last shown. */
-  readonly figures: OverlayFigures = { fps: 0, cpuTime: 0, lights: 0, lightsDrawn: 0, hulls: 0, edges: 0 };
+  readonly figures: OverlayFigures = { fps: 0, cpuTime: 0, lights: 0, lightsDrawn: 0, lightsFiled: 0, hulls: 0, edges: 0 };
   private frames = 0;
   private cpuTotal = 0;
   private periodStart = performance.now();
@@ -35,12 +37,13 @@ export class StatsOverlay {
     f.cpuTime = this.cpuTotal / this.frames;
     f.lights = stats.lights;
     f.lightsDrawn = stats.lightsDrawn;
+    f.lightsFiled = stats.lightsFiled;
     f.hulls = stats.hulls;
     f.edges = stats.edges;
     this.frames = 0;
     this.cpuTotal = 0;
     this.periodStart = now;
     this.element.textContent = `${f.fps.toFixed(1)} fps · renderer CPU ${f.cpuTime.toFixed(2)} ms/frame\n`
-      + `lights ${f.lights} (drawn ${f.lightsDrawn}) · hulls ${f.hulls} · edges ${f.edges}`;
+      + `lights ${f.lights} (drawn ${f.lightsDrawn}, filed ${f.lightsFiled}) · hulls ${f.hulls} · edges ${f.edges}`;
   }
 }

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { Hull, PenumbraRenderer, PointLight, ShadowType } from '../../src/index';
 import { createContext, destroyContext } from './context';
-import { OUTLINE_SCENE_SIZE, outlineErrors, outlinePixel, renderOutlineScene } from './outlineUpsampling';
+import { drawOnWhite, OUTLINE_SCENE_SIZE, outlineErrors, outlinePixel, renderOutlineScene } from './outlineUpsampling';
 import { readTexture } from './readTexture';
 
 describe('lightmapScale', () => {
@@ -50,15 +50,7 @@ describe('lightmapScale', () => {
       const hull = renderer.addHull(new Hull([[-5.05, -11.85], [5.05, -11.85], [5.05, 11.85], [-5.05, 11.85]], { position: [boxX, 32.45] }));
       return { renderer, hull };
     };
-    const draw = (renderer: PenumbraRenderer) => {
-      renderer.beginDraw();
-      gl.clearColor(1, 1, 1, 1);
-      gl.clear(gl.COLOR_BUFFER_BIT);
-      renderer.draw();
-      const pixels = new Uint8Array(size * size * 4);
-      gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-      return pixels;
-    };
+    const draw = (renderer: PenumbraRenderer) => drawOnWhite(gl, renderer, size);
     const fresh = (boxX: number, panX: number) => {
       const { renderer } = build(boxX, panX);
       const pixels = draw(renderer);

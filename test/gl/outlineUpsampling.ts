@@ -16,13 +16,19 @@ export function renderOutlineScene(gl: WebGL2RenderingContext, lightmapScale: nu
   const renderer = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0], lightmapScale, width: size, height: size });
   renderer.addLight(new PointLight({ position: [8.3, 32.1], range: 80, radius: 4, shadowType }));
   renderer.addHull(new Hull([[30.3, 20.6], [40.4, 20.6], [40.4, 44.3], [30.3, 44.3]]));
+  const pixels = drawOnWhite(gl, renderer, size);
+  renderer.dispose();
+  return pixels;
+}
+
+/** Draws `renderer`'s frame over a white scene into the context's default framebuffer (`size` pixels square) and reads it: 8-bit RGBA, rows bottom-up. */
+export function drawOnWhite(gl: WebGL2RenderingContext, renderer: PenumbraRenderer, size: number): Uint8Array {
   renderer.beginDraw();
   gl.clearColor(1, 1, 1, 1);
   gl.clear(gl.COLOR_BUFFER_BIT);
   renderer.draw();
   const pixels = new Uint8Array(size * size * 4);
   gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-  renderer.dispose();
   return pixels;
 }
 
