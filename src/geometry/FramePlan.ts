@@ -59,6 +59,8 @@ export class FramePlan {
   private readonly filings = new Map<Light, LightFiling>();
   private readonly filingsByRow: (LightFiling | null)[] = [];
   private readonly freeRows: number[] = [];
+  /** The filings with a span, in order of their first entry, while their spans are packed. */
+  private readonly spansInOrder: LightFiling[] = [];
   /** The geometry layout the filings were made for. */
   private layoutVersion = -1;
   private frame = 0;
@@ -70,7 +72,9 @@ export class FramePlan {
     this.frame++;
     this.drawCount = 0;
     this.filedCount = 0;
-    if (this.bins.beginFrame() || geometry.layoutVersion !== this.layoutVersion) this.forgetFilings();
+    const crowded = this.bins.beginFrame();
+    if (geometry.layoutVersion !== this.layoutVersion) this.forgetFilings();
+    else if (crowded) this.packSpans();
     this.layoutVersion = geometry.layoutVersion;
     const placed = this.placeLights(lights, viewProjection, targetWidth, targetHeight);
     const toFile = this.findFilingsToRedo(placed, geometry);
@@ -158,7 +162,19 @@ export class FramePlan {
     }
   }
 
-  /** Marks every filing as not current and gives up its span (after a new layout, when released spans pile up, or when every light is filed anew). */
+  /** Packs the spans of the filings that have one (see `ShadowBins.pack`), in order of their first entry. */
+  private packSpans(): void {
+    const spans = this.spansInOrder;
+    spans.length = 0;
+    for (let row = 0; row < this.filingsByRow.length; row++) {
+      const filing = this.filingsByRow[row];
+      if (filing && filing.entryCapacity > 0) spans.push(filing);
+    }
+    spans.sort(byFirstEntry);
+    this.bins.pack(spans, spans.length);
+  }
+
+  /** Marks every filing as not current and gives up its span (after a new layout, or when every light is filed anew). */
   private forgetFilings(): void {
     for (let row = 0; row < this.filingsByRow.length; row++) {
       const filing = this.filingsByRow[row];
@@ -328,6 +344,10 @@ function writeBounds(draw: LightDraw): void {
   b[1] = Math.min(ly, q[1], q[1] + q[3], q[1] + q[5], q[1] + q[3] + q[5]);
   b[2] = Math.max(lx, q[0], q[0] + q[2], q[0] + q[4], q[0] + q[2] + q[4]);
   b[3] = Math.max(ly, q[1], q[1] + q[3], q[1] + q[5], q[1] + q[3] + q[5]);
+}
+
+function byFirstEntry(a: BinSpan, b: BinSpan): number {
+  return a.firstEntry - b.firstEntry;
 }
 
 /**

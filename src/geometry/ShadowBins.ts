@@ -59,13 +59,32 @@ export class ShadowBins {
 
   /**
    * Starts a frame: nothing is dirty. Returns true when released spans fill more than half the
-   * entries: the caller should then release every span (and file every light anew), which lays the
-   * spans out afresh from the start.
+   * entries: the caller should then {@link ShadowBins.pack} the spans.
    */
   beginFrame(): boolean {
     this.dirtyBinRows.fill(0);
     this.dirtyEntryRows.fill(0);
     return this.entryEnd > 2 * this.liveEntries + TEXTURE_WIDTH;
+  }
+
+  /**
+   * Moves the first `count` spans of `spans`, every span not released, in order of their first
+   * entry, to lie one after the other from the first entry, and their rows' bins with them: the
+   * entries stay as they were, no light is filed anew. Marks every row dirty.
+   */
+  pack(spans: readonly BinSpan[], count: number): void {
+    const entries = this.entries, bins = this.bins;
+    let end = 0;
+    for (let i = 0; i < count; i++) {
+      const span = spans[i], shift = span.firstEntry - end;
+      entries.copyWithin(end * ENTRY_FLOATS, span.firstEntry * ENTRY_FLOATS, (span.firstEntry + span.entryCapacity) * ENTRY_FLOATS);
+      for (let b = span.row * BIN_COUNT * BIN_FLOATS, last = b + BIN_COUNT * BIN_FLOATS; b < last; b += BIN_FLOATS) bins[b] -= shift;
+      span.firstEntry = end;
+      end += span.entryCapacity;
+      this.dirtyBinRows[span.row] = 1;
+    }
+    this.entryEnd = end;
+    this.dirtyEntryRows.fill(1);
   }
 
   /** Gives up a row's span of entries (its entries are left as they are, unused); once none is left, spans start again from the first entry. */

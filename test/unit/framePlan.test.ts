@@ -1,5 +1,5 @@
 import { mat4 } from 'gl-matrix';
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import { FramePlan } from '../../src/geometry/FramePlan';
 import { signedArea2 } from '../../src/geometry/polygon';
 import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, pseudoAngle, RECORD_FLOATS } from '../../src/geometry/shadowLayout';
@@ -260,6 +260,30 @@ describe('FramePlan filings kept from frame to frame', () => {
     hulls.push(square(100, 90, 2));
     expect(filed()).toBe(2);
     expect(filed()).toBe(0);
+  });
+
+  it('packs the kept filings’ entries when released spans pile up, and they still equal a new plan’s', () => {
+    const hulls: Hull[] = [];
+    for (let x = 5; x < WIDTH; x += 10) for (let y = 5; y < HEIGHT; y += 10) hulls.push(square(x, y, 3));
+    const still = new PointLight({ position: [30, 50], range: 40, radius: 2 });
+    const growing = new PointLight({ position: [150, 50], range: 50, radius: 0.5 });
+    const geometry = new ShadowGeometry(), kept = new FramePlan();
+    const pack = vi.spyOn(kept.bins, 'pack');
+    geometry.update(hulls);
+    for (let frame = 0; frame < 60; frame++) {
+      // A wider disk widens every hull's bins: the growing light's span moves to the end time and again.
+      growing.radius = 0.5 + frame * 0.25;
+      const packs = pack.mock.calls.length;
+      kept.build([growing, still], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
+      if (frame > 0) expect(kept.filedCount).toBe(1);
+      // Packed: every row is uploaded again, the kept light's bins with them.
+      if (pack.mock.calls.length > packs) {
+        expect(kept.bins.dirtyEntryRows.every((dirty) => dirty === 1)).toBe(true);
+        expect(kept.bins.dirtyBinRows[kept.draws.find((draw) => draw.light === still)!.binRow]).toBe(1);
+      }
+      expect(filings(kept), `frame ${frame}`).toEqual(filings(plan([growing, still], hulls)));
+    }
+    expect(pack).toHaveBeenCalled();
   });
 
   it('keeps filings that equal a new plan’s through random changes to lights and hulls', () => {
