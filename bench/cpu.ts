@@ -49,8 +49,15 @@ const HEAP_WARMUP_MS = 20_000;
 /** Frames run on the real context to count GL calls and time them. */
 const PROBED_FRAMES = 10;
 
-/** Runs one scene with `library`'s renderer on a headless-gl WebGL2 context, the world mapped onto small targets. */
-export function runCpu(spec: SceneSpec, library: RendererLibrary, options: CpuOptions): CpuResult {
+/** One renderer on its own headless-gl context with its own copy of the scene. */
+interface Contender {
+  gl: WebGL2RenderingContext;
+  renderer: BenchRenderer;
+  /** Advances the scene a frame and lets the rasterizer drain. */
+  step(): void;
+}
+
+function createContender(spec: SceneSpec, library: RendererLibrary): Contender {
   const width = WORLD_WIDTH / TARGET_DIVISOR, height = WORLD_HEIGHT / TARGET_DIVISOR;
   const gl = createContext(width, height);
   const renderer = new library.PenumbraRenderer(gl, {
@@ -61,42 +68,63 @@ export function runCpu(spec: SceneSpec, library: RendererLibrary, options: CpuOp
   for (const light of scene.lights) renderer.addLight(light);
   for (const hull of scene.hulls) renderer.addHull(hull);
   let frame = 0;
-  const step = () => {
-    scene.step(frame++);
-    // Let the rasterizer drain so a frame does not pay for the previous one.
-    gl.finish();
+  return {
+    gl, renderer,
+    step() {
+      scene.step(frame++);
+      // Let the rasterizer drain so a frame does not pay for the previous one.
+      gl.finish();
+    },
   };
-  for (let i = 0; i < options.warmup; i++) {
-    step();
-    renderer.renderLightmap();
+}
+
+/**
+ * Runs one scene with each of `libraries`' renderers, each on its own headless-gl WebGL2 context,
+ * the world mapped onto small targets. The timed frames run in turns (one frame of each renderer,
+ * then the next), so that the machine's drifts in speed, which reach 1.5 × within minutes on these
+ * shared machines, fall on every renderer alike and their ratio holds.
+ */
+export function runCpu(spec: SceneSpec, libraries: readonly RendererLibrary[], options: CpuOptions): CpuResult[] {
+  const contenders = libraries.map((library) => createContender(spec, library));
+  for (const { renderer, step } of contenders) {
+    for (let i = 0; i < options.warmup; i++) {
+      step();
+      renderer.renderLightmap();
+    }
   }
-  const unstub = stubCalls(gl);
-  const heapBytesPerFrame = measureHeap(renderer, step);
-  const js: number[] = [];
+  const unstubs = contenders.map(({ gl }) => stubCalls(gl));
+  const heapBytesPerFrame = contenders.map(({ renderer, step }) => measureHeap(renderer, step));
+  const js = contenders.map((): number[] => []);
   for (let i = 0; i < options.frames; i++) {
-    step();
-    const start = performance.now();
-    renderer.renderLightmap();
-    js.push(performance.now() - start);
+    contenders.forEach(({ renderer, step }, k) => {
+      step();
+      const start = performance.now();
+      renderer.renderLightmap();
+      js[k].push(performance.now() - start);
+    });
   }
-  unstub();
-  const probe = probeCalls(gl);
-  const inGL: number[] = [];
-  let calls = 0;
+  for (const unstub of unstubs) unstub();
+  const probes = contenders.map(({ gl }) => probeCalls(gl));
+  const inGL = contenders.map((): number[] => []);
+  const calls = contenders.map(() => 0);
   for (let i = 0; i < PROBED_FRAMES; i++) {
-    step();
-    probe.reset();
-    renderer.renderLightmap();
-    inGL.push(probe.time);
-    calls += probe.calls;
+    contenders.forEach(({ renderer, step }, k) => {
+      step();
+      probes[k].reset();
+      renderer.renderLightmap();
+      inGL[k].push(probes[k].time);
+      calls[k] += probes[k].calls;
+    });
   }
-  const result: CpuResult = {
-    js: summarize(js), gl: summarize(inGL), glCalls: calls / PROBED_FRAMES, heapBytesPerFrame,
-    lightsDrawn: renderer.stats.lightsDrawn, edges: renderer.stats.edges, extra: readExtraStats(renderer.stats),
-  };
-  renderer.dispose();
-  destroyContext(gl);
-  return result;
+  return contenders.map(({ gl, renderer }, k) => {
+    const result: CpuResult = {
+      js: summarize(js[k]), gl: summarize(inGL[k]), glCalls: calls[k] / PROBED_FRAMES, heapBytesPerFrame: heapBytesPerFrame[k],
+      lightsDrawn: renderer.stats.lightsDrawn, edges: renderer.stats.edges, extra: readExtraStats(renderer.stats),
+    };
+    renderer.dispose();
+    destroyContext(gl);
+    return result;
+  });
 }
 
 /**

@@ -76,14 +76,12 @@ if (!args.has('no-node')) {
       continue;
     }
     const contenders = [['new', CURRENT], ...(baselineLibrary && runsOn(spec, baselineLibrary) ? [[oldName, baselineLibrary] as const] : [])] as const;
-    const measured: CpuResult[] = [];
-    for (const [name, library] of contenders) {
-      process.stderr.write(`node ${spec.name} ${name}…\n`);
-      // Few real warm-up frames: the stubbed ones that follow warm the JIT up cheaply (see runCpu).
-      const node = runCpu(spec, library, { warmup: 5, frames: cpuFrames });
-      measured.push(node);
-      process.stderr.write(`  JS ${node.js.median.toFixed(2)} ms, ${node.glCalls} GL calls, heap ${node.heapBytesPerFrame} B/frame\n`);
-    }
+    process.stderr.write(`node ${spec.name}: ${contenders.map(([name]) => name).join(', ')}, frames in turns…\n`);
+    // Few real warm-up frames: the stubbed ones that follow warm the JIT up cheaply (see runCpu).
+    const measured = runCpu(spec, contenders.map(([, library]) => library), { warmup: 5, frames: cpuFrames });
+    measured.forEach((node, k) => {
+      process.stderr.write(`  ${contenders[k][0]}: JS ${node.js.median.toFixed(2)} ms, ${node.glCalls} GL calls, heap ${node.heapBytesPerFrame} B/frame\n`);
+    });
     results[i].node = { current: measured[0], baseline: measured[1] };
   }
 }
