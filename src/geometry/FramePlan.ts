@@ -171,7 +171,7 @@ export class FramePlan {
       if (filing && filing.entryCapacity > 0) spans.push(filing);
     }
     spans.sort(byFirstEntry);
-    this.bins.pack(spans, spans.length);
+    this.bins.pack(spans);
   }
 
   /** Marks every filing as not current and gives up its span (after a new layout, or when every light is filed anew). */

@@ -68,14 +68,13 @@ export class ShadowBins {
   }
 
   /**
-   * Moves the first `count` spans of `spans`, every span not released, in order of their first
-   * entry, to lie one after the other from the first entry, and their rows' bins with them: the
+   * Moves `spans`, every span not released, in order of their first entry, to lie one after the other from the first entry, and their rows' bins with them: the
    * entries stay as they were, no light is filed anew. Marks every row dirty.
    */
-  pack(spans: readonly BinSpan[], count: number): void {
+  pack(spans: readonly BinSpan[]): void {
     const entries = this.entries, bins = this.bins;
     let end = 0;
-    for (let i = 0; i < count; i++) {
+    for (let i = 0; i < spans.length; i++) {
       const span = spans[i], shift = span.firstEntry - end;
       entries.copyWithin(end * ENTRY_FLOATS, span.firstEntry * ENTRY_FLOATS, (span.firstEntry + span.entryCapacity) * ENTRY_FLOATS);
       for (let b = span.row * BIN_COUNT * BIN_FLOATS, last = b + BIN_COUNT * BIN_FLOATS; b < last; b += BIN_FLOATS) bins[b] -= shift;

@@ -44,11 +44,10 @@ export class ShadowGeometry {
   /** Counts the changes to the records: a new layout, or a hull written by {@link ShadowGeometry.prepare}. */
   recordsVersion = 0;
   /**
-   * The hulls the last `update` refreshed without a new layout, and per hull the box around its
-   * coarse bounds before and after (`[minX, minY, maxX, maxY]` at `4 × k` for the k-th changed
-   * hull): every light whose range that box misses is unaffected by the change.
+   * Per hull the last `update` refreshed without a new layout, the box around its coarse bounds
+   * before and after (`[minX, minY, maxX, maxY]` at `4 × k` for the k-th): every light whose range
+   * that box misses is unaffected by the change.
    */
-  changedHulls = new Int32Array(0);
   changedBoxes = new Float64Array(0);
   changedCount = 0;
   private layoutHulls: Hull[] = [];
@@ -62,7 +61,6 @@ export class ShadowGeometry {
   /** Forgets the layout so the next update rewrites and re-uploads everything (e.g. after a context loss). */
   invalidate(): void {
     this.layoutHulls = [];
-    this.layoutVersion++;
   }
 
   /**
@@ -79,7 +77,6 @@ export class ShadowGeometry {
       this.layOut(hulls);
       this.refresh(hulls);
       this.changedCount = 0;
-      this.layoutVersion++;
     }
   }
 
@@ -117,7 +114,6 @@ export class ShadowGeometry {
     hull.updateCoarseBounds();
     const from = hull.coarseBounds, to = this.coarseBounds;
     const changed = this.changedCount++, box = this.changedBoxes;
-    this.changedHulls[changed] = index;
     box[4 * changed] = Math.min(from[0], to[4 * index]);
     box[4 * changed + 1] = Math.min(from[1], to[4 * index + 1]);
     box[4 * changed + 2] = Math.max(from[2], to[4 * index + 2]);
@@ -136,6 +132,7 @@ export class ShadowGeometry {
 
   private layOut(hulls: readonly Hull[]): void {
     this.layoutHulls = hulls.slice();
+    this.layoutVersion++;
     this.recordsVersion++;
     // Records of hulls not yet prepared stay zero (no outline in the debug wireframe) rather than stale.
     this.records.fill(0);
@@ -172,7 +169,6 @@ export class ShadowGeometry {
       this.refreshedVersions = new Float64Array(capacity);
       this.preparedVersions = new Float64Array(capacity);
       this.countedEdges = new Int32Array(capacity);
-      this.changedHulls = new Int32Array(capacity);
       this.changedBoxes = new Float64Array(4 * capacity);
     }
     this.refreshedVersions.fill(-1);

@@ -60,7 +60,7 @@ export class HullMaskPass {
   }
 
   /**
-   * Draws the first `recordCount` records of `records` (`ShadowGeometry.recordsVersion`
+   * Draws the first `recordCount` records of `records` (as of `ShadowGeometry.recordsVersion`
    * `recordsVersion`) into both masks, unless they hold those records in this view already. Leaves
    * the lightmap's mask bound when it draws.
    */
