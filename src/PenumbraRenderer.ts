@@ -84,7 +84,8 @@ export interface FrameStats {
   /**
    * Lights whose shadow casters were found and filed anew for the last lightmap. A light keeps the
    * previous lightmap's filing (and uploads nothing) while it, the hulls near it and the list of
-   * hulls are unchanged; a directional light is filed every time.
+   * hulls are unchanged, or while it moves within the margin its speed gave its filing (see
+   * docs/shadows.md); a directional light is filed every time.
    */
   lightsFiled: number;
   /** Hulls added to the renderer. */

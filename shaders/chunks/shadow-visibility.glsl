@@ -27,8 +27,9 @@
 // light it takes a second pass, lit as from inside that hull (the holder): of the holder's records,
 // only their outline edges facing the pixel hide anything (see seenFromHolder).
 //
-// Needs: v_world (the pixel's world position), v_shadow (light centre xy, disk radius, bin row) and
-// v_shadowType (SHADOW_SOLID, SHADOW_ILLUMINATED or SHADOW_OCCLUDED).
+// Needs: v_world (the pixel's world position), v_shadow (light centre xy, disk radius, bin row),
+// v_binning (how the bins were filed, below) and v_shadowType (SHADOW_SOLID, SHADOW_ILLUMINATED or
+// SHADOW_OCCLUDED).
 uniform highp sampler2D u_records;
 uniform highp sampler2D u_recordTags;
 uniform highp sampler2D u_entries;
@@ -36,11 +37,14 @@ uniform highp sampler2D u_bins;
 
 flat in vec4 v_shadow;
 flat in float v_shadowType;
+// A light's bins were filed for a disk of radius v_binning.z ≥ r around v_binning.xy, which holds
+// the light's disk (a moving light keeps its filing while its disk stays inside, see FramePlan): bins
+// and distance buckets are taken from that centre, the shadows from the light's own disk.
+flat in vec3 v_binning;
 #ifdef DIRECTIONAL
 // A directional light: v_shadow holds the unit direction it travels, sin α (α its angular radius)
-// and its row; v_strips its strips (DirectionalStrips in src/geometry/ShadowBins.ts): the least
+// and its row; v_binning its strips (DirectionalStrips in src/geometry/ShadowBins.ts): the least
 // coordinate across the travel, a strip's width, and where the first distance bucket starts along it.
-flat in vec3 v_strips;
 vec2 travel;
 #endif
 
@@ -160,6 +164,8 @@ bool pixelInsideRecord() {
 int binFirst;
 int binCount;
 float bucketWidth;
+// The pixel's distance from the centre its light's bins were filed around (v_binning.xy).
+float distanceToBinOrigin;
 
 // Whether the last entry recordsOfEntry read holds a whole convex hull's fan of records.
 bool entryIsFan;
@@ -176,7 +182,7 @@ ivec2 recordsOfEntry(int i) {
 #ifdef DIRECTIONAL
   // The strip's list is ordered by buckets of where each hull starts along the travel: one bucket
   // beyond the pixel, this hull and all after it lie wholly downstream of it.
-  float hullStart = dot(entry.yz, travel) - hullRadius - v_strips.z, pixelAlong = dot(pixel, travel) - v_strips.z;
+  float hullStart = dot(entry.yz, travel) - hullRadius - v_binning.z, pixelAlong = dot(pixel, travel) - v_binning.z;
   if (pixelAlong < (floor(hullStart / bucketWidth) - 1.0) * bucketWidth) return ivec2(-1);
   // The hull must meet the wedge of directions within α of the light's, upstream of the pixel:
   // within its radius of the axis widened by tan α per unit upstream (ρ / cos α ≤ ρ (1 + tan α)).
@@ -184,11 +190,13 @@ ivec2 recordsOfEntry(int i) {
   bool between = upstream > -hullRadius
     && abs(cross2(travel, hull)) <= hullRadius * (1.0 + tangent) + max(upstream + hullRadius, 0.0) * tangent + 1e-3;
 #else
+  // A segment between two points within ρ ≥ r' of the filing's centre stays within ρ: a hull
+  // farther than the pixel and the filed disk (radius r') cannot reach a segment between them. The
+  // list is ordered by distance buckets from that centre (ShadowBins), so one bucket beyond the
+  // pixel, all the rest are too.
+  float filedNearest = length(entry.yz - v_binning.xy) - hullRadius;
+  if (filedNearest > v_binning.z + bucketWidth && distanceToBinOrigin < (floor(filedNearest / bucketWidth) - 1.0) * bucketWidth) return ivec2(-1);
   float nearest = length(entry.yz - centre) - hullRadius;
-  // A segment between two points within ρ ≥ r of the centre stays within ρ: a hull farther than
-  // the pixel and the disk cannot reach a segment between them. The list is ordered by distance
-  // buckets (ShadowBins), so one bucket beyond the pixel, all the rest are too.
-  if (nearest > radius + bucketWidth && distanceToLight < (floor(nearest / bucketWidth) - 1.0) * bucketWidth) return ivec2(-1);
   // The hull must meet the region between the pixel and the disk, which lies within r of the
   // segment from the pixel to the centre and nearer to the pixel than the disk's far side.
   float along = clamp(dot(hull, toCentre) / max(dot(toCentre, toCentre), 1e-20), 0.0, 1.0);
@@ -338,9 +346,11 @@ float coveredBetween(float low, float high) {
   return covered;
 }
 
-// Pseudo-angle of a direction, in [0, 4), as `pseudoAngle` in src/geometry/shadowLayout.ts.
+// Pseudo-angle of a direction, in [0, 4), as `pseudoAngle` in src/geometry/shadowLayout.ts (0 for
+// the zero vector: a pixel at the bins' origin lies inside the filed disk, where every bin lists
+// every hull that can shade it).
 float pseudoAngle(vec2 d) {
-  float p = d.y / (abs(d.x) + abs(d.y));
+  float p = d.y / max(abs(d.x) + abs(d.y), 1e-30);
   return d.x < 0.0 ? 2.0 - p : (d.y < 0.0 ? 4.0 + p : p);
 }
 
@@ -399,7 +409,7 @@ void beginShadow() {
   toLight = -travel / radius;
   distanceInRadii = 1.0 / radius;
   insideDisk = false;
-  float strip = floor((cross2(travel, pixel) - v_strips.x) / v_strips.y);
+  float strip = floor((cross2(travel, pixel) - v_binning.x) / v_binning.y);
   int bin = int(clamp(strip, 0.0, float(BIN_COUNT - 1)));
 #else
   centre = v_shadow.xy;
@@ -409,7 +419,9 @@ void beginShadow() {
   toLight = c / radius;
   distanceInRadii = distanceToLight / radius;
   insideDisk = distanceInRadii <= 1.0;
-  int bin = min(int(pseudoAngle(-c) * (float(BIN_COUNT) / 4.0)), BIN_COUNT - 1);
+  vec2 fromBinOrigin = pixel - v_binning.xy;
+  distanceToBinOrigin = length(fromBinOrigin);
+  int bin = min(int(pseudoAngle(fromBinOrigin) * (float(BIN_COUNT) / 4.0)), BIN_COUNT - 1);
 #endif
   vec4 binEntries = texelFetch(u_bins, ivec2(bin, int(v_shadow.w)), 0);
   binFirst = int(binEntries.x);

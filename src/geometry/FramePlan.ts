@@ -61,6 +61,9 @@ export class FramePlan {
   private readonly freeRows: number[] = [];
   /** The filings with a span, in order of their first entry, while their spans are packed. */
   private readonly spansInOrder: LightFiling[] = [];
+  /** The draws (by number) whose light moved within its kept filing this frame, `movedCount` of them: their centres are checked against the hulls. */
+  private moved = new Int32Array(64);
+  private movedCount = 0;
   /** The geometry layout the filings were made for. */
   private layoutVersion = -1;
   private frame = 0;
@@ -79,14 +82,15 @@ export class FramePlan {
     const placed = this.placeLights(lights, viewProjection, targetWidth, targetHeight);
     const toFile = this.findFilingsToRedo(placed, geometry);
     // Every light filed anew: their spans are laid out afresh, packed from the first entry.
-    if (toFile === placed) this.forgetFilings();
-    if (toFile > 0) this.grid.build(geometry.coarseBounds, geometry.castsShadow, hulls.length, this.reach);
+    if (toFile === placed) this.releaseSpans();
+    if (toFile > 0 || this.movedCount > 0) this.grid.build(geometry.coarseBounds, geometry.castsShadow, hulls.length, this.reach);
+    this.checkMovedCentres(hulls, geometry);
     // Keeps the placed lights whose centre is not inside a hull, in order.
     for (let i = 0; i < placed; i++) {
       const draw = this.draws[i], filing = draw.filing;
-      if (!filing.current) {
+      if (filing.pending) {
+        filing.pending = false;
         this.filedCount++;
-        filing.record(draw);
         if (draw.light instanceof DirectionalLight) this.collectDirectionalHulls(draw, hulls, geometry);
         else filing.skipped = !this.collectHulls(draw, hulls, geometry);
         filing.hullCount = draw.hullCount;
@@ -102,8 +106,9 @@ export class FramePlan {
 
   /**
    * Gives each placed light its filing, marks the filings whose light or whose hulls changed (see
-   * {@link FramePlan}) as not current, and puts those lights' shadow casters' bounds together in
-   * `reach`; returns how many are not current.
+   * {@link FramePlan}) as not current and records them anew (to be filed), lists in `moved` the
+   * kept filings of lights that moved, and puts the bounds of both kinds of light's shadow casters
+   * together in `reach`; returns how many are to be filed.
    */
   private findFilingsToRedo(placed: number, geometry: ShadowGeometry): number {
     for (let i = 0; i < placed; i++) {
@@ -116,27 +121,59 @@ export class FramePlan {
     // Every changed hull against every kept filing: few changes in a scene that keeps many.
     const boxes = geometry.changedBoxes, changed = geometry.changedCount;
     for (let i = 0; i < placed; i++) {
-      const filing = this.draws[i].filing, b = this.draws[i].bounds;
+      const filing = this.draws[i].filing, b = filing.filedBounds;
       for (let k = 0; filing.current && k < changed; k++) {
-        if (!(boxes[4 * k] > b[2] || boxes[4 * k + 2] < b[0] || boxes[4 * k + 1] > b[3] || boxes[4 * k + 3] < b[1])) filing.current = false;
+        if (!(boxes[4 * k] > b[2] || boxes[4 * k + 2] < b[0] || boxes[4 * k + 1] > b[3] || boxes[4 * k + 3] < b[1])) filing.endByHulls();
       }
     }
     const reach = this.reach;
     reach[0] = reach[1] = Infinity;
     reach[2] = reach[3] = -Infinity;
     let count = 0;
+    this.movedCount = 0;
+    if (this.moved.length < placed) this.moved = new Int32Array(2 * placed);
     for (let i = 0; i < placed; i++) {
-      const draw = this.draws[i];
-      if (draw.filing.current) continue;
-      count++;
-      if (!draw.light.castsShadows) continue;
-      const b = draw.light instanceof DirectionalLight ? writeUpstreamBox(draw, this.upstreamBox) : draw.bounds;
+      const draw = this.draws[i], filing = draw.filing;
+      let b: Float64Array;
+      if (!filing.current) {
+        count++;
+        filing.record(draw, this.frame);
+        if (!draw.light.castsShadows) continue;
+        b = draw.light instanceof DirectionalLight ? writeUpstreamBox(draw, this.upstreamBox) : filing.filedBounds;
+      } else if (!filing.skipped && filing.centreMoved()) {
+        this.moved[this.movedCount++] = i;
+        b = draw.bounds;
+      } else continue;
       if (b[0] < reach[0]) reach[0] = b[0];
       if (b[1] < reach[1]) reach[1] = b[1];
       if (b[2] > reach[2]) reach[2] = b[2];
       if (b[3] > reach[3]) reach[3] = b[3];
     }
     return count;
+  }
+
+  /**
+   * Checks the centres of the lights that moved within their kept filing (see `moved`): a light
+   * whose centre is now inside a hull that shadows it is filed anew (which skips it).
+   */
+  private checkMovedCentres(hulls: readonly Hull[], geometry: ShadowGeometry): void {
+    const grid = this.grid, point = this.reach;
+    for (let m = 0; m < this.movedCount; m++) {
+      const draw = this.draws[this.moved[m]], filing = draw.filing, light = draw.light;
+      const x = light.position[0], y = light.position[1];
+      point[0] = point[2] = x;
+      point[1] = point[3] = y;
+      const count = grid.search(point);
+      let inside = false;
+      for (let i = 0; i < count && !inside; i++) {
+        const index = grid.found[i];
+        if ((geometry.layers[index] & light.shadowLayers) === 0 || light.ignoredHulls.has(hulls[index])) continue;
+        geometry.prepare(index);
+        inside = isInsideHull(hulls, geometry, index, x, y);
+      }
+      if (inside) filing.record(draw, this.frame);
+      else filing.checked();
+    }
   }
 
   /** The light's filing, a new one (on a free row) when it has none. */
@@ -174,13 +211,20 @@ export class FramePlan {
     this.bins.pack(spans);
   }
 
-  /** Marks every filing as not current and gives up its span (after a new layout, or when every light is filed anew). */
+  /** Marks every filing as not current and gives up its span (after a new layout). */
   private forgetFilings(): void {
     for (let row = 0; row < this.filingsByRow.length; row++) {
       const filing = this.filingsByRow[row];
-      if (!filing) continue;
-      filing.current = false;
-      this.bins.releaseSpan(filing);
+      if (filing) filing.current = false;
+    }
+    this.releaseSpans();
+  }
+
+  /** Gives up every filing's span (after a new layout, or when every light is filed anew: the spans are then laid out afresh). */
+  private releaseSpans(): void {
+    for (let row = 0; row < this.filingsByRow.length; row++) {
+      const filing = this.filingsByRow[row];
+      if (filing) this.bins.releaseSpan(filing);
     }
   }
 
@@ -205,10 +249,10 @@ export class FramePlan {
 
   /** Files the records of the hulls in range into the light's bins; false when the light centre is inside a hull. */
   private collectHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
-    const light = draw.light;
+    const light = draw.light, filing = draw.filing;
     draw.hullCount = 0;
     if (!light.castsShadows) return true;
-    this.bins.beginLight(light.position[0], light.position[1], light.radius, draw.reach);
+    this.bins.beginLight(filing.originX, filing.originY, filing.filedRadius, filing.filedReach);
     if (!this.addHullsInRange(draw, hulls, geometry)) return false;
     if (draw.hullCount > 0) this.bins.endLight(geometry, draw.filing);
     return true;
@@ -253,20 +297,21 @@ export class FramePlan {
   }
 
   /**
-   * Adds to the light's bins, as candidates, the hulls whose exact bounds overlap the light's and
-   * whose circle reaches within its reach of its centre, transforming each candidate the grid finds
-   * by its coarse bounds first (see `ShadowGeometry.prepare`), so every change reaches the light
-   * this frame; counts them in `draw.hullCount`. False when the light centre is inside one of them.
-   * Reads the geometry's flat arrays, not the hulls: this runs for every hull in every light's range.
+   * Adds to the light's bins, as candidates, the hulls whose exact bounds overlap its filed bounds
+   * and whose circle reaches within its filed reach of its centre (see `LightFiling`), transforming
+   * each candidate the grid finds by its coarse bounds first (see `ShadowGeometry.prepare`), so every
+   * change reaches the light this frame; counts them in `draw.hullCount`. False when the light
+   * centre is inside one of them. Reads the geometry's flat arrays, not the hulls: this runs for
+   * every hull in every light's range.
    */
   private addHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
-    const light = draw.light, bins = this.bins;
-    const lx = light.position[0], ly = light.position[1];
-    const b = draw.bounds;
+    const light = draw.light, bins = this.bins, filing = draw.filing;
+    const lx = filing.originX, ly = filing.originY;
+    const b = filing.filedBounds;
     const grid = this.grid;
     const count = grid.search(b);
     const bounds = geometry.worldBounds, layers = geometry.layers, circles = geometry.circles;
-    const shadowLayers = light.shadowLayers, reach = draw.reach, ignoring = light.ignoredHulls.size > 0;
+    const shadowLayers = light.shadowLayers, reach = filing.filedReach, ignoring = light.ignoredHulls.size > 0;
     let added = 0;
     for (let i = 0; i < count; i++) {
       const index = grid.found[i];
@@ -278,8 +323,7 @@ export class FramePlan {
       // Beyond the reach: the segments from the pixels within it to the disk stay within it too.
       const dx = circles[3 * index] - lx, dy = circles[3 * index + 1] - ly, beyond = reach + circles[3 * index + 2];
       if (dx * dx + dy * dy >= beyond * beyond) continue;
-      if (bounds[k] <= lx && lx <= bounds[k + 2] && bounds[k + 1] <= ly && ly <= bounds[k + 3]
-        && hulls[index].closed && isInsidePolygon(hulls[index].worldPoints, light.position)) return false;
+      if (isInsideHull(hulls, geometry, index, lx, ly)) return false;
       bins.addHull(geometry, index);
       added++;
     }
@@ -346,57 +390,142 @@ function writeBounds(draw: LightDraw): void {
   b[3] = Math.max(ly, q[1], q[1] + q[3], q[1] + q[5], q[1] + q[3] + q[5]);
 }
 
+/** Whether (x, y) is inside the closed hull at `index` (prepared): its exact bounds first, then its outline. */
+function isInsideHull(hulls: readonly Hull[], geometry: ShadowGeometry, index: number, x: number, y: number): boolean {
+  const bounds = geometry.worldBounds, k = 4 * index;
+  if (bounds[k] > x || x > bounds[k + 2] || bounds[k + 1] > y || y > bounds[k + 3] || !hulls[index].closed) return false;
+  const point = INSIDE_TEST_POINT;
+  point[0] = x;
+  point[1] = y;
+  return isInsidePolygon(hulls[index].worldPoints, point);
+}
+
+/** The point `isInsideHull` tests, reused: no pair per test. */
+const INSIDE_TEST_POINT = new Float64Array(2);
+
 function byFirstEntry(a: BinSpan, b: BinSpan): number {
   return a.firstEntry - b.firstEntry;
 }
 
 /**
+ * How many frames a moving light's filing should last at the speed it last moved: its margin is
+ * that many frames of travel (see {@link LightFiling}).
+ */
+const MARGIN_FRAMES = 8;
+/** A filing's margin is at most this share of the light's reach: a fast light is filed more often rather than with ever wider bins. */
+const MAX_MARGIN_SHARE = 1 / 16;
+
+/**
  * A light's filing as of the frame it was made (see {@link FramePlan}): what it depends on, and what
  * it gave: the hull count, whether the light is skipped, its row of bins and span of entries.
+ *
+ * A point light is filed for a disk and a reach a margin wider than its own, around its centre
+ * then (the bins' origin): every segment from a pixel in its reach to its disk is one from a pixel
+ * in the wider reach to the wider disk, so the filing holds, unchanged, while the light's disk and
+ * reach stay inside the wider ones and its quad inside the filed bounds; the shader takes bins and
+ * distance buckets from the origin (the chunk shadow-visibility). The margin is 0 for a light that
+ * has not moved, and for one that moved, {@link MARGIN_FRAMES} frames of the speed it moved at
+ * between its last two filings, at most {@link MAX_MARGIN_SHARE} of its reach: a light that keeps
+ * moving is filed anew every few frames, and its bins are wider by the margin's angle, which costs
+ * its pixels a few more hulls to look at. A filing ended by a change to a hull near the light is
+ * made anew without a margin: where hulls keep changing, no filing lasts, and wider bins would only
+ * cost.
  */
 class LightFiling implements BinSpan {
   /** Whether the filing still holds: false until made, and once something it depends on changed. */
   current = false;
+  /** Whether the filing was recorded this frame and is still to be filed. */
+  pending = false;
   skipped = false;
   hullCount = 0;
   firstEntry = 0;
   entryCapacity = 0;
   /** The last frame the light was placed in. */
   usedFrame = 0;
-  private x = 0;
-  private y = 0;
-  private radius = 0;
-  private reach = 0;
+  /** The centre the bins were filed around: the light's centre when filed. */
+  originX = 0;
+  originY = 0;
+  /** The disk radius and the reach the bins were filed for: the light's, plus the margin. */
+  filedRadius = 0;
+  filedReach = 0;
+  /** The light's quad bounds when filed, a margin wider: the hulls were searched in this box. */
+  readonly filedBounds = new Float64Array(4);
+  /** Whether the last filing was ended by a changed hull near the light. */
+  private endedByHulls = false;
+  /** The frame the filing was made (0: never). */
+  private filedFrame = 0;
+  /** The light's centre when last checked against the hulls. */
+  private checkedX = 0;
+  private checkedY = 0;
   private castsShadows = false;
   private shadowLayers = 0;
-  private readonly bounds = new Float64Array(4);
   private readonly ignoredHulls: Hull[] = [];
 
   constructor(readonly light: Light, readonly row: number) {}
 
-  /** Records what the filing made now depends on (`draw` is the light's, placed this frame). */
-  record(draw: LightDraw): void {
-    const light = this.light;
+  /** Records what the filing about to be made depends on (`draw` is the light's, placed this frame), with its margin; marks it pending. */
+  record(draw: LightDraw, frame: number): void {
+    const light = this.light, x = light.position[0], y = light.position[1];
+    const moved = this.filedFrame > 0 ? Math.hypot(x - this.originX, y - this.originY) : 0;
+    const speed = moved / Math.max(1, frame - this.filedFrame);
+    const margin = light instanceof DirectionalLight || this.endedByHulls ? 0 : Math.min(MARGIN_FRAMES * speed, MAX_MARGIN_SHARE * draw.reach);
+    this.endedByHulls = false;
+    this.filedFrame = frame;
     this.current = true;
-    this.x = light.position[0];
-    this.y = light.position[1];
-    this.radius = light.radius;
-    this.reach = draw.reach;
+    this.pending = true;
+    this.originX = this.checkedX = x;
+    this.originY = this.checkedY = y;
+    this.filedRadius = light.radius + margin;
+    this.filedReach = draw.reach + margin;
+    const b = draw.bounds, own = this.filedBounds;
+    own[0] = b[0] - margin;
+    own[1] = b[1] - margin;
+    own[2] = b[2] + margin;
+    own[3] = b[3] + margin;
     this.castsShadows = light.castsShadows;
     this.shadowLayers = light.shadowLayers;
-    this.bounds.set(draw.bounds);
     this.ignoredHulls.length = 0;
     light.ignoredHulls.forEach(this.addIgnoredHull, this);
   }
 
-  /** Whether the light, placed as `draw`, is as it was when filed (a directional light never is: its strips follow the view). */
+  /**
+   * Whether the filing holds for the light placed as `draw`: its disk, reach and quad within the
+   * filed ones, a skipped light's centre where it was (a directional light's filing never holds:
+   * its strips follow the view).
+   */
   matches(draw: LightDraw): boolean {
-    const light = this.light, b = draw.bounds, own = this.bounds;
-    return !(light instanceof DirectionalLight)
-      && light.position[0] === this.x && light.position[1] === this.y && light.radius === this.radius
-      && draw.reach === this.reach && light.castsShadows === this.castsShadows && light.shadowLayers === this.shadowLayers
-      && b[0] === own[0] && b[1] === own[1] && b[2] === own[2] && b[3] === own[3]
-      && this.sameIgnoredHulls();
+    const light = this.light;
+    if (light instanceof DirectionalLight || light.castsShadows !== this.castsShadows
+      || light.shadowLayers !== this.shadowLayers || !this.sameIgnoredHulls()) return false;
+    const dx = light.position[0] - this.originX, dy = light.position[1] - this.originY;
+    if (this.skipped) return dx === 0 && dy === 0;
+    const moved = Math.sqrt(dx * dx + dy * dy), b = draw.bounds, own = this.filedBounds;
+    return moved + light.radius <= this.filedRadius && moved + draw.reach <= this.filedReach
+      && b[0] >= own[0] && b[1] >= own[1] && b[2] <= own[2] && b[3] <= own[3];
+  }
+
+  /** Marks the filing as not current because a hull near the light changed. */
+  endByHulls(): void {
+    this.current = false;
+    this.endedByHulls = true;
+  }
+
+  /** Whether the light's centre moved since the filing was made or last {@link LightFiling.checked}. */
+  centreMoved(): boolean {
+    return this.light.position[0] !== this.checkedX || this.light.position[1] !== this.checkedY;
+  }
+
+  /** Notes that the light's centre, where it is now, was found inside no hull that shadows it. */
+  checked(): void {
+    this.checkedX = this.light.position[0];
+    this.checkedY = this.light.position[1];
+  }
+
+  /** Writes the bins' origin and the disk radius they were filed for (the shader's `u_binning` for a light with a centre). */
+  writeBinning(out: Float32Array): void {
+    out[0] = this.originX;
+    out[1] = this.originY;
+    out[2] = this.filedRadius;
   }
 
   /** Whether `light.ignoredHulls` holds the hulls it held when filed: as many, and each of those. */

@@ -224,6 +224,29 @@ describe('lights whose shadows did not change', () => {
     fresh.dispose();
   });
 
+  it('a moving light keeps its filing while its disk stays within the margin, and lights as a new renderer does', () => {
+    // Posts 7 apart: the bins from the wrong centre would miss some of them.
+    const boxes = (target: PenumbraRenderer) => {
+      for (let x = 4; x < W; x += 7) for (let y = 4; y < H; y += 7) target.addHull(new Hull([[-1, -1], [1, -1], [1, 1], [-1, 1]], { position: [x, y] }));
+    };
+    boxes(renderer);
+    const light = renderer.addLight(new PointLight({ position: [40.5, 30], range: 48, radius: 3 }));
+    const fresh = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0] });
+    boxes(fresh);
+    let copy: PointLight | null = null, filed = 0;
+    for (let step = 0; step < 24; step++) {
+      light.setPosition(40.5 + 0.5 * step, 30 + 0.3 * step);
+      const moving = frame();
+      filed += renderer.stats.lightsFiled;
+      // A new light where it is: filed without a margin.
+      if (copy) fresh.removeLight(copy);
+      copy = fresh.addLight(new PointLight({ position: [light.position[0], light.position[1]], range: 48, radius: 3 }));
+      expect(maxDifference(moving, renderLightmap(gl, fresh, W, H)), `step ${step}`).toBeLessThan(1e-3);
+    }
+    expect(filed).toBeLessThan(24 / 3);
+    fresh.dispose();
+  });
+
   it('upload changed rows where they belong, past the first row of each texture too', () => {
     // More than a row of records (512): 600 specks along the bottom, in range, then the box.
     const specks = (target: PenumbraRenderer) => {
