@@ -118,12 +118,15 @@ export class FramePlan {
       filing.usedFrame = this.frame;
       if (filing.current && !filing.matches(draw)) filing.current = false;
     }
-    // Every changed hull against every kept filing: few changes in a scene that keeps many.
+    // Every changed hull against every filing, kept or left by its light (the next one then has no
+    // margin, see LightFiling): few changes in a scene that keeps many.
     const boxes = geometry.changedBoxes, changed = geometry.changedCount;
     for (let i = 0; i < placed; i++) {
       const filing = this.draws[i].filing, b = filing.filedBounds;
-      for (let k = 0; filing.current && k < changed; k++) {
-        if (!(boxes[4 * k] > b[2] || boxes[4 * k + 2] < b[0] || boxes[4 * k + 1] > b[3] || boxes[4 * k + 3] < b[1])) filing.endByHulls();
+      for (let k = 0; k < changed; k++) {
+        if (boxes[4 * k] > b[2] || boxes[4 * k + 2] < b[0] || boxes[4 * k + 1] > b[3] || boxes[4 * k + 3] < b[1]) continue;
+        filing.endByHulls();
+        break;
       }
     }
     const reach = this.reach;
@@ -427,9 +430,9 @@ const MAX_MARGIN_SHARE = 1 / 16;
  * has not moved, and for one that moved, {@link MARGIN_FRAMES} frames of the speed it moved at
  * between its last two filings, at most {@link MAX_MARGIN_SHARE} of its reach: a light that keeps
  * moving is filed anew every few frames, and its bins are wider by the margin's angle, which costs
- * its pixels a few more hulls to look at. A filing ended by a change to a hull near the light is
- * made anew without a margin: where hulls keep changing, no filing lasts, and wider bins would only
- * cost.
+ * its pixels a few more hulls to look at. A light is filed without a margin when a hull within its
+ * last filing's bounds changed (whether or not the light also left it): where hulls keep changing,
+ * no filing lasts, and wider bins would only cost.
  */
 class LightFiling implements BinSpan {
   /** Whether the filing still holds: false until made, and once something it depends on changed. */
@@ -450,7 +453,7 @@ class LightFiling implements BinSpan {
   filedReach = 0;
   /** The light's quad bounds when filed, a margin wider: the hulls were searched in this box. */
   readonly filedBounds = new Float64Array(4);
-  /** Whether the last filing was ended by a changed hull near the light. */
+  /** Whether a hull near the light changed while the last filing held (it ended it, or would have). */
   private endedByHulls = false;
   /** The frame the filing was made (0: never). */
   private filedFrame = 0;
@@ -466,7 +469,8 @@ class LightFiling implements BinSpan {
   /** Records what the filing about to be made depends on (`draw` is the light's, placed this frame), with its margin; marks it pending. */
   record(draw: LightDraw, frame: number): void {
     const light = this.light, x = light.position[0], y = light.position[1];
-    const moved = this.filedFrame > 0 ? Math.hypot(x - this.originX, y - this.originY) : 0;
+    const dx = x - this.originX, dy = y - this.originY;
+    const moved = this.filedFrame > 0 ? Math.sqrt(dx * dx + dy * dy) : 0;
     const speed = moved / Math.max(1, frame - this.filedFrame);
     const margin = light instanceof DirectionalLight || this.endedByHulls ? 0 : Math.min(MARGIN_FRAMES * speed, MAX_MARGIN_SHARE * draw.reach);
     this.endedByHulls = false;
@@ -504,7 +508,7 @@ class LightFiling implements BinSpan {
       && b[0] >= own[0] && b[1] >= own[1] && b[2] <= own[2] && b[3] <= own[3];
   }
 
-  /** Marks the filing as not current because a hull near the light changed. */
+  /** Marks the filing as not current because a hull within its bounds changed. */
   endByHulls(): void {
     this.current = false;
     this.endedByHulls = true;
