@@ -76,11 +76,11 @@ export const BIN_FLOATS = 4;
 /**
  * The pseudo-angle of the direction (x, y), in [0, 4): 0 along +x, 1 along +y, 2 along −x, 3 along −y,
  * increasing counter-clockwise (in x-right, y-up axes) and within a factor 2 of proportional to the
- * angle: it grows at most 1 per radian; 0 for (0, 0). One division, and the same in GLSL
- * (shadow-visibility).
+ * angle: it grows at most 1 per radian. One division, and the same in GLSL (shadow-visibility),
+ * which also gives 0 for (0, 0) (here NaN: the filing, which calls this twice per light and hull, never asks).
  */
 export function pseudoAngle(x: number, y: number): number {
-  const p = y / Math.max(Math.abs(x) + Math.abs(y), 1e-30);
+  const p = y / (Math.abs(x) + Math.abs(y));
   return x < 0 ? 2 - p : y < 0 ? 4 + p : p;
 }
 

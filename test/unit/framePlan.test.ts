@@ -264,7 +264,8 @@ describe('FramePlan filings kept from frame to frame', () => {
   function hullsVisited(framePlan: FramePlan, geometry: ShadowGeometry, draw: FramePlan['draws'][number], x: number, y: number): Set<number> {
     const { bins, entries } = framePlan.bins, filing = draw.filing, visited = new Set<number>();
     const dx = x - filing.originX, dy = y - filing.originY, distance = Math.hypot(dx, dy);
-    const bin = Math.min(Math.floor(pseudoAngle(dx, dy) * (BIN_COUNT / 4)), BIN_COUNT - 1);
+    // The shader's pseudo-angle of the zero vector is 0.
+    const bin = distance === 0 ? 0 : Math.min(Math.floor(pseudoAngle(dx, dy) * (BIN_COUNT / 4)), BIN_COUNT - 1);
     const b = (draw.binRow * BIN_COUNT + bin) * BIN_FLOATS, bucketWidth = bins[b + 2];
     for (let e = bins[b]; e < bins[b] + bins[b + 1]; e++) {
       const [code, hx, hy, rho] = entries.subarray(e * ENTRY_FLOATS, (e + 1) * ENTRY_FLOATS);
