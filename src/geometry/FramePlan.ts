@@ -53,6 +53,8 @@ export class FramePlan {
   /** Box around the bounds of every light to be filed this frame that casts shadows: the grid files only hulls inside it. */
   private readonly reach = new Float64Array(4);
   private readonly inverseViewProjection = mat4.create();
+  /** The centre of the light being filed or checked, for `isInsideHull`. */
+  private readonly centre = new Float64Array(2);
   /** The box a directional light's search covers: the view swept upstream. */
   private readonly upstreamBox = new Float64Array(4);
   /** Filings by light, and by their row of bins (null where free). */
@@ -160,19 +162,18 @@ export class FramePlan {
    * whose centre is now inside a hull that shadows it is filed anew (which skips it).
    */
   private checkMovedCentres(hulls: readonly Hull[], geometry: ShadowGeometry): void {
-    const grid = this.grid, point = this.reach;
+    const grid = this.grid, box = this.reach, centre = this.centre;
     for (let m = 0; m < this.movedCount; m++) {
       const draw = this.draws[this.moved[m]], filing = draw.filing, light = draw.light;
-      const x = light.position[0], y = light.position[1];
-      point[0] = point[2] = x;
-      point[1] = point[3] = y;
-      const count = grid.search(point);
+      centre[0] = box[0] = box[2] = light.position[0];
+      centre[1] = box[1] = box[3] = light.position[1];
+      const count = grid.search(box);
       let inside = false;
       for (let i = 0; i < count && !inside; i++) {
         const index = grid.found[i];
         if ((geometry.layers[index] & light.shadowLayers) === 0 || light.ignoredHulls.has(hulls[index])) continue;
         geometry.prepare(index);
-        inside = isInsideHull(hulls, geometry, index, x, y);
+        inside = isInsideHull(hulls, geometry, index, centre);
       }
       if (inside) filing.record(draw, this.frame);
       else filing.checked();
@@ -310,6 +311,8 @@ export class FramePlan {
   private addHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
     const light = draw.light, bins = this.bins, filing = draw.filing;
     const lx = filing.originX, ly = filing.originY;
+    this.centre[0] = lx;
+    this.centre[1] = ly;
     const b = filing.filedBounds;
     const grid = this.grid;
     const count = grid.search(b);
@@ -326,7 +329,8 @@ export class FramePlan {
       // Beyond the reach: the segments from the pixels within it to the disk stay within it too.
       const dx = circles[3 * index] - lx, dy = circles[3 * index + 1] - ly, beyond = reach + circles[3 * index + 2];
       if (dx * dx + dy * dy >= beyond * beyond) continue;
-      if (isInsideHull(hulls, geometry, index, lx, ly)) return false;
+      if (bounds[k] <= lx && lx <= bounds[k + 2] && bounds[k + 1] <= ly && ly <= bounds[k + 3]
+        && isInsideHull(hulls, geometry, index, this.centre)) return false;
       bins.addHull(geometry, index);
       added++;
     }
@@ -393,18 +397,15 @@ function writeBounds(draw: LightDraw): void {
   b[3] = Math.max(ly, q[1], q[1] + q[3], q[1] + q[5], q[1] + q[3] + q[5]);
 }
 
-/** Whether (x, y) is inside the closed hull at `index` (prepared): its exact bounds first, then its outline. */
-function isInsideHull(hulls: readonly Hull[], geometry: ShadowGeometry, index: number, x: number, y: number): boolean {
-  const bounds = geometry.worldBounds, k = 4 * index;
+/**
+ * Whether `point` is inside the closed hull at `index` (prepared): its exact bounds first, then its
+ * outline. The point comes in an array: V8 boxes a double passed to a function it does not inline.
+ */
+function isInsideHull(hulls: readonly Hull[], geometry: ShadowGeometry, index: number, point: Float64Array): boolean {
+  const bounds = geometry.worldBounds, k = 4 * index, x = point[0], y = point[1];
   if (bounds[k] > x || x > bounds[k + 2] || bounds[k + 1] > y || y > bounds[k + 3] || !hulls[index].closed) return false;
-  const point = INSIDE_TEST_POINT;
-  point[0] = x;
-  point[1] = y;
   return isInsidePolygon(hulls[index].worldPoints, point);
 }
-
-/** The point `isInsideHull` tests, reused: no pair per test. */
-const INSIDE_TEST_POINT = new Float64Array(2);
 
 function byFirstEntry(a: BinSpan, b: BinSpan): number {
   return a.firstEntry - b.firstEntry;
