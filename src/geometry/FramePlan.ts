@@ -309,18 +309,18 @@ export class FramePlan {
    * every hull in every light's range.
    */
   private addHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
-    const light = draw.light, bins = this.bins, filing = draw.filing;
+    const light = draw.light, filing = draw.filing;
     const lx = filing.originX, ly = filing.originY;
     this.centre[0] = lx;
     this.centre[1] = ly;
     const b = filing.filedBounds;
     const grid = this.grid;
-    const count = grid.search(b);
+    const count = grid.search(b), found = grid.found;
     const bounds = geometry.worldBounds, layers = geometry.layers, circles = geometry.circles;
     const shadowLayers = light.shadowLayers, reach = filing.filedReach, ignoring = light.ignoredHulls.size > 0;
     let added = 0;
     for (let i = 0; i < count; i++) {
-      const index = grid.found[i];
+      const index = found[i];
       if ((layers[index] & shadowLayers) === 0) continue;
       if (ignoring && light.ignoredHulls.has(hulls[index])) continue;
       geometry.prepare(index);
@@ -331,9 +331,11 @@ export class FramePlan {
       if (dx * dx + dy * dy >= beyond * beyond) continue;
       if (bounds[k] <= lx && lx <= bounds[k + 2] && bounds[k + 1] <= ly && ly <= bounds[k + 3]
         && isInsideHull(hulls, geometry, index, this.centre)) return false;
-      bins.addHull(geometry, index);
-      added++;
+      found[added++] = index;
     }
+    // Filed in a loop of its own: inlined here, the bins' arithmetic would pass doubles to helpers
+    // V8 no longer inlines (its budget per function spent), boxing them for every hull.
+    this.bins.addHulls(geometry, found, added);
     draw.hullCount = added;
     return true;
   }

@@ -1,11 +1,11 @@
 import type { ShadowGeometry } from './ShadowGeometry';
-import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, entryCode, pseudoAngle, TEXTURE_WIDTH } from './shadowLayout';
+import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, entryCode, TEXTURE_WIDTH } from './shadowLayout';
 
 /** Distance buckets of the counting sort that orders each bin's list, nearest first. */
 export const DISTANCE_BUCKETS = 32;
 /** Pseudo-angle margin on each side of a hull's bins, far above the shader's float32 rounding (~1e-6). */
 const ANGLE_MARGIN = 1e-3;
-/** asin(x) ≤ x + ASIN_CUBIC · x³ on [0, 1] (the series' coefficients are positive and sum to π/2 at 1). */
+/** asin(x) ≤ x + ASIN_CUBIC · x³ on [0, 1] (see `addHull`). */
 const ASIN_CUBIC = Math.PI / 2 - 1;
 
 /**
@@ -102,22 +102,39 @@ export class ShadowBins {
     this.candidateCount = 0;
   }
 
+  /** Adds the hulls `indices[0 .. count)` (prepared) as candidates of the current light. */
+  addHulls(geometry: ShadowGeometry, indices: Int32Array, count: number): void {
+    for (let i = 0; i < count; i++) this.addHull(geometry, indices[i]);
+  }
+
   /** Adds the hull at `index` (prepared) as a candidate of the current light. */
-  addHull(geometry: ShadowGeometry, index: number): void {
+  private addHull(geometry: ShadowGeometry, index: number): void {
     const circles = geometry.circles;
     const dx = circles[3 * index] - this.lightX, dy = circles[3 * index + 1] - this.lightY, hullRadius = circles[3 * index + 2];
     const distance = Math.sqrt(dx * dx + dy * dy), nearest = distance - hullRadius, radius = this.lightRadius;
     let bucket = 0, firstBin = 0, binCount = BIN_COUNT;
     if (nearest > radius) {
       bucket = Math.min(DISTANCE_BUCKETS - 1, Math.floor(nearest / this.bucketWidth));
-      const halfWidth = asinBound(hullRadius / distance) + asinBound(radius / nearest) + ANGLE_MARGIN;
+      // No helper calls here, only arithmetic: V8 boxes the doubles passed to (and returned by) a
+      // call it does not inline, which it stops doing once a function's inlining budget is spent;
+      // this runs for every light and hull.
+      // asin(x) ≤ x + ASIN_CUBIC · x³ on [0, 1] (the series' coefficients are positive and sum to
+      // π/2 at 1): within 0.6% below x = 0.3, no trigonometry per hull.
+      const hullSine = Math.min(hullRadius / distance, 1), diskSine = Math.min(radius / nearest, 1);
+      const halfWidth = hullSine + ASIN_CUBIC * hullSine * hullSine * hullSine + diskSine + ASIN_CUBIC * diskSine * diskSine * diskSine + ANGLE_MARGIN;
       if (halfWidth < MAX_TURNED_HALF_WIDTH) {
         // The directions within halfWidth of (dx, dy) lie between it turned by ± atan(t) ≥ halfWidth:
-        // their pseudo-angles, which grow with the angle, bound the bins. (Adding halfWidth to the
-        // pseudo-angle would do too, as it grows at most 1 per radian, but half as fast diagonally.)
-        const t = tanBound(halfWidth);
-        const from = Math.floor(pseudoAngle(dx + t * dy, dy - t * dx) * (BIN_COUNT / 4));
-        let to = Math.floor(pseudoAngle(dx - t * dy, dy + t * dx) * (BIN_COUNT / 4));
+        // their pseudo-angles (pseudoAngle in shadowLayout), which grow with the angle, bound the bins.
+        // (Adding halfWidth to the pseudo-angle would do too, as it grows at most 1 per radian, but
+        // half as fast diagonally.) t ≥ tan(halfWidth) by Becker–Stark: π²x / (π² − 4x²).
+        const t = (PI_SQUARED * halfWidth) / (PI_SQUARED - 4 * halfWidth * halfWidth);
+        let from = 0, to = 0;
+        for (let side = -1; side <= 1; side += 2) {
+          const x = dx - side * t * dy, y = dy + side * t * dx, p = y / (Math.abs(x) + Math.abs(y));
+          const bin = Math.floor((x < 0 ? 2 - p : y < 0 ? 4 + p : p) * (BIN_COUNT / 4));
+          if (side < 0) from = bin;
+          else to = bin;
+        }
         if (to < from) to += BIN_COUNT;
         firstBin = from;
         binCount = to - from + 1;
@@ -306,19 +323,11 @@ export class DirectionalStrips {
 /** A strip's share of margin on each side of a hull's strips, and of its radius (see `addDirectionalHull`). */
 const STRIP_MARGIN = 1e-3;
 
-/** The widest half width of a hull's bins taken from its turned directions (below π/2, so that tanBound is finite); wider ones take every bin. */
+/** The widest half width of a hull's bins taken from its turned directions (below π/2, where the tangent's bound is finite); wider ones take every bin. */
 const MAX_TURNED_HALF_WIDTH = 1.5;
 
-/** An upper bound of tan(x) for 0 ≤ x < π/2 (Becker–Stark): x + 0.41 x³ near 0 against tan's x + 0.33 x³. */
-function tanBound(x: number): number {
-  return (Math.PI * Math.PI * x) / (Math.PI * Math.PI - 4 * x * x);
-}
-
-/** An upper bound of asin(min(x, 1)) for x ≥ 0, within 0.6% below x = 0.3: no trigonometry per hull. */
-function asinBound(x: number): number {
-  const y = Math.min(x, 1);
-  return y + ASIN_CUBIC * y * y * y;
-}
+/** π², for the Becker–Stark bound of the tangent (x + 0.41 x³ near 0 against tan's x + 0.33 x³). */
+const PI_SQUARED = Math.PI * Math.PI;
 
 /** `array`, or a grown copy of its first `used` entries, with room for `extra` more (length a multiple of `granule`). */
 export function grow<T extends Int32Array<ArrayBuffer> | Float64Array<ArrayBuffer> | Float32Array<ArrayBuffer> | Uint32Array<ArrayBuffer> | Uint8Array<ArrayBuffer>>(array: T, used: number, extra: number, granule = 1): T {

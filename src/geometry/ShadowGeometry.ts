@@ -202,7 +202,7 @@ export class ShadowGeometry {
       const triangles = hull.worldTriangles;
       for (let k = 0; k < triangles.length; k += 3, record++) {
         // Records have positive area: the triangulation keeps the hull's winding, but say so here.
-        const flip = signedAreaOfTriangle(world, triangles[k], triangles[k + 1], triangles[k + 2]) < 0;
+        const flip = isClockwise(world, triangles[k], triangles[k + 1], triangles[k + 2]);
         const a = triangles[k], b = triangles[k + (flip ? 2 : 1)], c = triangles[k + (flip ? 1 : 2)];
         this.startRecord(record);
         this.addPoint(record, world, a);
@@ -307,7 +307,8 @@ function isOutlineEdge(a: number, b: number, count: number): boolean {
   return step === 1 || step === count - 1;
 }
 
-function signedAreaOfTriangle(world: Float32Array, a: number, b: number, c: number): number {
+/** Whether the triangle of points a, b, c has negative area (a boolean: a double returned from a call V8 does not inline is boxed). */
+function isClockwise(world: Float32Array, a: number, b: number, c: number): boolean {
   const ax = world[2 * a], ay = world[2 * a + 1];
-  return (world[2 * b] - ax) * (world[2 * c + 1] - ay) - (world[2 * b + 1] - ay) * (world[2 * c] - ax);
+  return (world[2 * b] - ax) * (world[2 * c + 1] - ay) - (world[2 * b + 1] - ay) * (world[2 * c] - ax) < 0;
 }

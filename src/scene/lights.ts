@@ -130,7 +130,8 @@ export abstract class Light {
   private _castsShadows = true;
   private _shadowType: ShadowType = ShadowType.Illuminated;
   private _falloff: Falloff = Falloff.Linear;
-  private _height: number | null = null;
+  /** The height set, NaN while it follows the range: a double field (null beside numbers made reading it box a number each frame). */
+  private _height = NaN;
   private _shadowLayers = ALL_LAYERS;
   private _litLayers = ALL_LAYERS;
   private _shadowColor: readonly [number, number, number] = Object.freeze([0, 0, 0] as const);
@@ -265,14 +266,14 @@ export abstract class Light {
    * `range` until a height is set; assign `null` to go back to that.
    */
   get height(): number {
-    return this._height ?? this._range * DEFAULT_HEIGHT_PER_RANGE;
+    return Number.isNaN(this._height) ? this._range * DEFAULT_HEIGHT_PER_RANGE : this._height;
   }
   set height(value: number | null) {
-    this._height = value === null ? null : assertNonNegative(`${this.className}.height`, value);
+    this._height = value === null ? NaN : assertNonNegative(`${this.className}.height`, value);
   }
   /** The height that was set, or `null` while it follows the range. */
   get givenHeight(): number | null {
-    return this._height;
+    return Number.isNaN(this._height) ? null : this._height;
   }
 
   /** The hull layers that shadow this light; see {@link LightOptions.shadowLayers}. */
