@@ -42,7 +42,9 @@ const UNPACK_DEFAULTS = Int32Array.of(4, 0, 0, 0, 0, 0, 0, 0);
  *   returns that same raw name, which `bindSampler` takes).
  * - `PIXEL_UNPACK_BUFFER_BINDING` answers 0 (its `bindBuffer` rejects the target): nothing to restore.
  * - `blendEquation` rejects MIN/MAX: the renderer uses neither, and puts back only what the host set.
- * In browsers every answer is an object or `null`, and the restore is exact.
+ * In browsers every answer is an object or `null`, and the restore is exact, but for one case GL
+ * itself rules out: a program the host deleted while it was current is freed once the renderer
+ * uses its own, so none is current afterwards (putting it back would be an INVALID_VALUE error).
  */
 export class HostState {
   private readonly enabled = new Uint8Array(CAPABILITIES.length);
@@ -97,7 +99,11 @@ export class HostState {
     this.stencilBackMask = gl.getParameter(gl.STENCIL_BACK_WRITEMASK);
     this.cullFaceMode = gl.getParameter(gl.CULL_FACE_MODE);
     this.frontFace = gl.getParameter(gl.FRONT_FACE);
-    this.program = gl.getParameter(gl.CURRENT_PROGRAM);
+    const program: WebGLProgram | null = gl.getParameter(gl.CURRENT_PROGRAM);
+    // A program deleted while current stays current until unbound, and is freed then: it cannot be
+    // made current again, so none is put back. (WebGL's isProgram says false for it; headless-gl's,
+    // like GL's, says true until it is freed, and DELETE_STATUS says it is going.)
+    this.program = program && gl.isProgram(program) && !gl.getProgramParameter(program, gl.DELETE_STATUS) ? program : null;
     const vertexArray: unknown = gl.getParameter(gl.VERTEX_ARRAY_BINDING);
     if (typeof vertexArray === 'object') this.vertexArray = vertexArray as WebGLVertexArrayObject | null;
     else this.unrestorableVertexArray(vertexArray);

@@ -150,6 +150,19 @@ describe('host GL state', () => {
     });
   }
 
+  it('leaves no GL error when the host deleted the program it left current (GL frees it once unbound: none is current after)', () => {
+    const program = hostProgram();
+    gl.useProgram(program);
+    gl.deleteProgram(program);
+    expect(gl.getError()).toBe(0);
+    const other = new PenumbraRenderer(gl, { ambientColor: [0.1, 0.1, 0.1] });
+    expect(gl.getError()).toBe(0);
+    other.renderLightmap();
+    expect(gl.getError()).toBe(0);
+    expect(gl.getParameter(gl.CURRENT_PROGRAM)).toBe(null);
+    other.dispose();
+  });
+
   it('on a context that answers VERTEX_ARRAY_BINDING with a raw name, warns once when it cannot restore the host\'s vertex array', () => {
     expect(typeof gl.getParameter(gl.VERTEX_ARRAY_BINDING)).toBe('number'); // headless-gl, unpatched
     const warnings: unknown[] = [];
