@@ -37,10 +37,11 @@ export class LightDraw {
  *
  * A point light's filing (its bins, entries, hull count, or that it is skipped) is kept from one
  * frame to the next while it is drawn, and filed anew only when something it depends on changed:
- * the light's centre, disk, reach, quad, shadow layers, ignored hulls or `castsShadows`, a hull
- * whose coarse bounds (before or after the change) overlap the light's, or the hulls' layout. A
- * kept filing equals a new one but for the order of hulls within a distance bucket. Directional
- * lights are filed every frame: their strips follow the view.
+ * the light's disk, reach or quad left the ones it was filed for (a moving light's are a margin
+ * wider, see {@link LightFiling}), its shadow layers, ignored hulls or `castsShadows` changed, a
+ * hull whose coarse bounds (before or after the change) overlap the filed bounds changed, or the
+ * hulls' layout did. A filing without a margin equals a new one but for the order of hulls within
+ * a distance bucket. Directional lights are filed every frame: their strips follow the view.
  */
 export class FramePlan {
   /** The records in range of each shadowed light, filed into angular bins. */
