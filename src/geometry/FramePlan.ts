@@ -91,8 +91,7 @@ export class FramePlan {
     // Keeps the placed lights whose centre is not inside a hull, in order.
     for (let i = 0; i < placed; i++) {
       const draw = this.draws[i], filing = draw.filing;
-      if (filing.pending) {
-        filing.pending = false;
+      if (filing.filedFrame === this.frame) {
         this.filedCount++;
         if (draw.light instanceof DirectionalLight) this.collectDirectionalHulls(draw, hulls, geometry);
         else filing.skipped = !this.collectHulls(draw, hulls, geometry);
@@ -172,7 +171,7 @@ export class FramePlan {
       let inside = false;
       for (let i = 0; i < count && !inside; i++) {
         const index = grid.found[i];
-        if ((geometry.layers[index] & light.shadowLayers) === 0 || light.ignoredHulls.has(hulls[index])) continue;
+        if (!shadows(light, hulls, geometry, index)) continue;
         geometry.prepare(index);
         inside = isInsideHull(hulls, geometry, index, centre);
       }
@@ -277,11 +276,9 @@ export class FramePlan {
     const count = grid.search(box);
     writeStrips(draw, light, grid.extent, strips);
     bins.beginDirectional(strips);
-    const layers = geometry.layers, shadowLayers = light.shadowLayers;
     for (let i = 0; i < count; i++) {
       const index = grid.found[i];
-      if ((layers[index] & shadowLayers) === 0) continue;
-      if (light.ignoredHulls.size > 0 && light.ignoredHulls.has(hulls[index])) continue;
+      if (!shadows(light, hulls, geometry, index)) continue;
       geometry.prepare(index);
       if (bins.addDirectionalHull(geometry, index)) draw.hullCount++;
     }
@@ -317,21 +314,18 @@ export class FramePlan {
     const b = filing.filedBounds;
     const grid = this.grid;
     const count = grid.search(b), found = grid.found;
-    const bounds = geometry.worldBounds, layers = geometry.layers, circles = geometry.circles;
-    const shadowLayers = light.shadowLayers, reach = filing.filedReach, ignoring = light.ignoredHulls.size > 0;
+    const bounds = geometry.worldBounds, circles = geometry.circles, reach = filing.filedReach;
     let added = 0;
     for (let i = 0; i < count; i++) {
       const index = found[i];
-      if ((layers[index] & shadowLayers) === 0) continue;
-      if (ignoring && light.ignoredHulls.has(hulls[index])) continue;
+      if (!shadows(light, hulls, geometry, index)) continue;
       geometry.prepare(index);
       const k = 4 * index;
       if (bounds[k] > b[2] || bounds[k + 2] < b[0] || bounds[k + 1] > b[3] || bounds[k + 3] < b[1]) continue;
       // Beyond the reach: the segments from the pixels within it to the disk stay within it too.
       const dx = circles[3 * index] - lx, dy = circles[3 * index + 1] - ly, beyond = reach + circles[3 * index + 2];
       if (dx * dx + dy * dy >= beyond * beyond) continue;
-      if (bounds[k] <= lx && lx <= bounds[k + 2] && bounds[k + 1] <= ly && ly <= bounds[k + 3]
-        && isInsideHull(hulls, geometry, index, this.centre)) return false;
+      if (isInsideHull(hulls, geometry, index, this.centre)) return false;
       found[added++] = index;
     }
     // Filed in a loop of its own: inlined here, the bins' arithmetic would pass doubles to helpers
@@ -400,6 +394,11 @@ function writeBounds(draw: LightDraw): void {
   b[3] = Math.max(ly, q[1], q[1] + q[3], q[1] + q[5], q[1] + q[3] + q[5]);
 }
 
+/** Whether the hull at `index` shadows `light`: it is in one of the light's shadow layers and not ignored by it. */
+function shadows(light: Light, hulls: readonly Hull[], geometry: ShadowGeometry, index: number): boolean {
+  return (geometry.layers[index] & light.shadowLayers) !== 0 && !(light.ignoredHulls.size > 0 && light.ignoredHulls.has(hulls[index]));
+}
+
 /**
  * Whether `point` is inside the closed hull at `index` (prepared): its exact bounds first, then its
  * outline. The point comes in an array: V8 boxes a double passed to a function it does not inline.
@@ -441,8 +440,6 @@ const MAX_MARGIN_SHARE = 1 / 16;
 class LightFiling implements BinSpan {
   /** Whether the filing still holds: false until made, and once something it depends on changed. */
   current = false;
-  /** Whether the filing was recorded this frame and is still to be filed. */
-  pending = false;
   skipped = false;
   hullCount = 0;
   firstEntry = 0;
@@ -459,8 +456,8 @@ class LightFiling implements BinSpan {
   readonly filedBounds = new Float64Array(4);
   /** Whether a hull near the light changed while the last filing held (it ended it, or would have). */
   private endedByHulls = false;
-  /** The frame the filing was made (0: never). */
-  private filedFrame = 0;
+  /** The frame the filing was last recorded (0: never): the plan files it in that frame. */
+  filedFrame = 0;
   /** The light's centre when last checked against the hulls. */
   private checkedX = 0;
   private checkedY = 0;
@@ -470,7 +467,7 @@ class LightFiling implements BinSpan {
 
   constructor(readonly light: Light, readonly row: number) {}
 
-  /** Records what the filing about to be made depends on (`draw` is the light's, placed this frame), with its margin; marks it pending. */
+  /** Records what the filing about to be made this frame depends on (`draw` is the light's, placed this frame), with its margin. */
   record(draw: LightDraw, frame: number): void {
     const light = this.light, x = light.position[0], y = light.position[1];
     const dx = x - this.originX, dy = y - this.originY;
@@ -480,7 +477,6 @@ class LightFiling implements BinSpan {
     this.endedByHulls = false;
     this.filedFrame = frame;
     this.current = true;
-    this.pending = true;
     this.originX = this.checkedX = x;
     this.originY = this.checkedY = y;
     this.filedRadius = light.radius + margin;

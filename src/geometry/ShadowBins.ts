@@ -68,8 +68,9 @@ export class ShadowBins {
   }
 
   /**
-   * Moves `spans`, every span not released, in order of their first entry, to lie one after the other from the first entry, and their rows' bins with them: the
-   * entries stay as they were, no light is filed anew. Marks every row dirty.
+   * Moves `spans`, every span not released, in order of their first entry, to lie one after the
+   * other from the first entry, and their rows' bins with them: the entries stay as they were, no
+   * light is filed anew. Marks every row dirty.
    */
   pack(spans: readonly BinSpan[]): void {
     const entries = this.entries, bins = this.bins;

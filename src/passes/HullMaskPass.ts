@@ -60,9 +60,9 @@ export class HullMaskPass {
   }
 
   /**
-   * Draws the first `recordCount` records of `records` (as of `ShadowGeometry.recordsVersion`
-   * `recordsVersion`) into both masks, unless they hold those records in this view already. Leaves
-   * the lightmap's mask bound when it draws.
+   * Draws the first `recordCount` records of `records` (`recordsVersion`, as
+   * `ShadowGeometry.recordsVersion` counts them) into both masks, unless they hold those records in
+   * this view already. Leaves the lightmap's mask bound when it draws.
    */
   render(records: WebGLTexture, recordCount: number, recordsVersion: number, viewProjection: ReadonlyMat4): void {
     if (recordsVersion === this.drawnRecordsVersion && mat4.exactEquals(viewProjection, this.drawnView)) return;
