@@ -13,7 +13,7 @@ uniform vec3 u_lightColor; // colour × intensity
 uniform vec4 u_shadow; // position xy, disk radius, row of the light's shadow bins
 uniform float u_shadowType; // how the light treats the inside of hulls: SHADOW_SOLID, … (src/geometry/shadowLayout.ts)
 uniform vec3 u_shadowKept; // the fraction of each channel a pixel in full shadow keeps (Light.writeShadowKept)
-uniform vec3 u_binning; // how the shadow bins were filed: centre xy and disk radius; a directional light's strips: perpBase, width, alongBase (DirectionalStrips)
+uniform vec4 u_binning; // how the shadow bins were filed: centre xy, disk radius and distance bucket width; a directional light's strips: perpBase, width, alongBase, bucketWidth (DirectionalStrips)
 uniform vec2 u_falloff; // the falloff's code and inverse-square core (see the chunk light-common)
 #ifdef NORMALS
 uniform vec4 u_towardsLight; // position xy and height, w 0; a directional light's unit vector towards it, w 1
@@ -27,7 +27,7 @@ flat out vec3 v_color;
 flat out vec4 v_shadow;
 flat out float v_shadowType;
 flat out vec3 v_shadowKept;
-flat out vec3 v_binning;
+flat out vec4 v_binning;
 flat out vec2 v_falloff;
 
 void main() {

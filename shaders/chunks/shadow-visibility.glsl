@@ -39,12 +39,14 @@ flat in vec4 v_shadow;
 flat in float v_shadowType;
 // A light's bins were filed for a disk of radius v_binning.z ≥ r around v_binning.xy, which holds
 // the light's disk (a moving light keeps its filing while its disk stays inside, see FramePlan): bins
-// and distance buckets are taken from that centre, the shadows from the light's own disk.
-flat in vec3 v_binning;
+// and distance buckets (v_binning.w wide) are taken from that centre, the shadows from the light's
+// own disk.
+flat in vec4 v_binning;
 #ifdef DIRECTIONAL
 // A directional light: v_shadow holds the unit direction it travels, sin α (α its angular radius)
 // and its row; v_binning its strips (DirectionalStrips in src/geometry/ShadowBins.ts): the least
-// coordinate across the travel, a strip's width, and where the first distance bucket starts along it.
+// coordinate across the travel, a strip's width, where the first distance bucket starts along it,
+// and a bucket's width.
 vec2 travel;
 #endif
 
@@ -160,8 +162,13 @@ bool pixelInsideRecord() {
   return all(greaterThanEqual(xs * nextYs - ys * nextXs, vec4(0.0)));
 }
 
-// The light's bin for this pixel: its first entry, count and distance bucket width.
+// The light's bin for this pixel: two lists, each ordered nearest first (the hulls that stood
+// still, then those that moved lately; see src/geometry/shadowLayout.ts), walked as one of binCount
+// entries: entry i < stillCount is the still list's i-th, from binFirst, and the others the moving
+// list's, from movingFirst. And the distance buckets' width.
 int binFirst;
+int stillCount;
+int movingFirst;
 int binCount;
 float bucketWidth;
 // The pixel's distance from the centre its light's bins were filed around (v_binning.xy).
@@ -173,10 +180,17 @@ bool entryIsFan;
 // the pixel are left to find.
 bool seekingHolders;
 
+// The last entry of the list that entry `i` of the pixel's bin is in: where a walk that found that
+// hull and all after it in its list farther than the pixel goes on from.
+int lastOfList(int i) {
+  return i < stillCount ? stillCount - 1 : binCount - 1;
+}
+
 // The records of entry `i` of the pixel's bin, first and last: (-1, -1) when that hull and all after
-// it are farther from the centre than the pixel, (0, -1) when this one cannot hide anything from it.
+// it in its list are farther from the centre than the pixel (see lastOfList), (0, -1) when this one
+// cannot hide anything from it.
 ivec2 recordsOfEntry(int i) {
-  vec4 entry = texelAt(u_entries, binFirst + i);
+  vec4 entry = texelAt(u_entries, i < stillCount ? binFirst + i : movingFirst + i);
   vec2 hull = entry.yz - pixel, toCentre = centre - pixel;
   float hullRadius = entry.w;
 #ifdef DIRECTIONAL
@@ -425,8 +439,10 @@ void beginShadow() {
 #endif
   vec4 binEntries = texelFetch(u_bins, ivec2(bin, int(v_shadow.w)), 0);
   binFirst = int(binEntries.x);
-  binCount = int(binEntries.y);
-  bucketWidth = binEntries.z;
+  stillCount = int(binEntries.y);
+  movingFirst = int(binEntries.z) - stillCount;
+  binCount = stillCount + int(binEntries.w);
+  bucketWidth = v_binning.w;
 }
 
 // The fraction of the disk visible from the pixel, in one pass over the pixel's bin (see
@@ -440,7 +456,10 @@ float visibleFraction(int shadowType, out int heldBy) {
   bool seeksHolder = shadowType != SHADOW_SOLID && holderFirst < 0;
   for (int i = 0; i < binCount; i++) {
     ivec2 records = recordsOfEntry(i);
-    if (records.x < 0) break;
+    if (records.x < 0) {
+      i = lastOfList(i);
+      continue;
+    }
     for (int record = records.x; record <= records.y; record++) {
 #ifdef SHADOW_STATISTICS
       visitedRecords++;
@@ -473,7 +492,7 @@ float visibleFraction(int shadowType, out int heldBy) {
 }
 
 // The fraction of the disk visible from the pixel. One pass over the pixel's bin merges the records
-// in front into the union, stopping at the first hull farther from the light than the pixel; where
+// in front into the union, leaving each list at its first hull farther from the light than the pixel; where
 // records are seen past, the quadrature adds what they hide. An Occluded light's pixel found inside
 // a hull takes a second pass as from inside it (one call site in a loop: the pass is inlined once).
 float shadowVisibility() {

@@ -4,8 +4,8 @@ import { DirectionalLight, type Light } from '../scene/lights';
 import { HullGrid } from './HullGrid';
 import { isInsidePolygon } from './polygon';
 import { scissorOf } from './scissor';
-import { type BinSpan, DirectionalStrips, DISTANCE_BUCKETS, ShadowBins } from './ShadowBins';
-import { BIN_COUNT } from './shadowLayout';
+import { type BinSpan, bucketWidthOf, DirectionalStrips, DISTANCE_BUCKETS, grow, ShadowBins } from './ShadowBins';
+import { BIN_COUNT, MOVING_LIST, STATIC_LIST } from './shadowLayout';
 import type { ShadowGeometry } from './ShadowGeometry';
 
 /** What the passes need to draw one light: its quad, scissor, and the row of its shadow bins. */
@@ -19,7 +19,7 @@ export class LightDraw {
   readonly scissor = new Int32Array(4);
   /** Distance from the light's position beyond which it adds nothing (`Light.reach`). */
   reach = 0;
-  /** Number of hulls in range that shadow this light. */
+  /** Number of hulls in range that shadow this light (in both its lists). */
   hullCount = 0;
   /** The light's row in the plan's `bins`, when `hullCount > 0`. */
   binRow = 0;
@@ -35,13 +35,19 @@ export class LightDraw {
  * (one it does not ignore, in one of its `shadowLayers`). The shadow bins of all drawn lights share
  * the arrays of one {@link ShadowBins}.
  *
- * A point light's filing (its bins, entries, hull count, or that it is skipped) is kept from one
- * frame to the next while it is drawn, and filed anew only when something it depends on changed:
- * the light's disk, reach or quad left the ones it was filed for (a moving light's are a margin
- * wider, see {@link LightFiling}), its shadow layers, ignored hulls or `castsShadows` changed, a
- * hull whose coarse bounds (before or after the change) overlap the filed bounds changed, or the
- * hulls' layout did. A filing without a margin equals a new one but for the order of hulls within
- * a distance bucket. Directional lights are filed every frame: their strips follow the view.
+ * Each bin holds two lists (see shadowLayout): the hulls that stood still for the last
+ * {@link MOVING_FRAMES} frames, and the moving ones, those that changed within them. A point
+ * light's filing (its still hulls' list, their count, or that a still hull holds its centre) is
+ * kept from one frame to the next while it is drawn, and filed anew only when something it depends
+ * on changed: the light's disk, reach or quad left the ones it was filed for (a moving light's are a
+ * margin wider, see {@link LightFiling}), its shadow layers, ignored hulls or `castsShadows`
+ * changed, a hull whose coarse bounds overlap the filed bounds started or stopped moving (a still
+ * hull's before and after its first change), or the hulls' layout changed. Its list of moving hulls
+ * is filed every frame, around the same origin, for the same disk and reach; a light whose centre
+ * is inside a moving hull is skipped for that frame. A filing without a margin holds the same hulls
+ * as a new one (split between the lists otherwise) but for their order within a distance bucket.
+ * Directional lights are filed every frame, every hull in the first list: their strips follow the
+ * view.
  */
 export class FramePlan {
   /** The records in range of each shadowed light, filed into angular bins. */
@@ -50,20 +56,38 @@ export class FramePlan {
   drawCount = 0;
   /** Lights filed anew by the last {@link FramePlan.build} (the others drawn kept their filing). */
   filedCount = 0;
+  /** The still hulls, those that cast shadows and stood still for {@link MOVING_FRAMES} frames. */
   private readonly grid = new HullGrid();
+  /** The moving hulls that cast shadows (see `movingHulls`). */
+  private readonly movingGrid = new HullGrid();
   /** Box around the bounds of every light to be filed this frame that casts shadows: the grid files only hulls inside it. */
   private readonly reach = new Float64Array(4);
+  /** Box around the filed bounds of every placed light that casts shadows: the moving grid files only hulls inside it. */
+  private readonly movingReach = new Float64Array(4);
+  /** Per hull (by index in the layout): the last frame it changed, {@link NEVER} when it has not since the layout. */
+  private hullChangedFrames = new Int32Array(0);
+  /** The moving hulls, `movingHullCount` of them: those that changed within the last {@link MOVING_FRAMES} frames. */
+  private movingHulls = new Int32Array(64);
+  private movingHullCount = 0;
+  /** Per hull: 1 when it casts shadows and stands still; and when it casts shadows and moves (what the two grids file). */
+  private stillCasters = new Uint8Array(0);
+  private movingCasters = new Uint8Array(0);
+  /** Boxes (`[minX, minY, maxX, maxY]` each) of the hulls that started or stopped moving this frame, `endingCount` of them: the filings they overlap end. */
+  private endingBoxes = new Float64Array(64);
+  private endingCount = 0;
   private readonly inverseViewProjection = mat4.create();
   /** The centre of the light being filed or checked, for `isInsideHull`. */
   private readonly centre = new Float64Array(2);
   /** The box a directional light's search covers: the view swept upstream. */
   private readonly upstreamBox = new Float64Array(4);
+  /** The box of the hulls both grids filed, for a directional light's strips. */
+  private readonly hullsExtent = new Float64Array(4);
   /** Filings by light, and by their row of bins (null where free). */
   private readonly filings = new Map<Light, LightFiling>();
   private readonly filingsByRow: (LightFiling | null)[] = [];
   private readonly freeRows: number[] = [];
-  /** The filings with a span, in order of their first entry, while their spans are packed. */
-  private readonly spansInOrder: LightFiling[] = [];
+  /** The filings' spans that hold entries, in order of their first entry, while they are packed. */
+  private readonly spansInOrder: BinSpan[] = [];
   /** The draws (by number) whose light moved within its kept filing this frame, `movedCount` of them: their centres are checked against the hulls. */
   private moved = new Int32Array(64);
   private movedCount = 0;
@@ -79,14 +103,18 @@ export class FramePlan {
     this.drawCount = 0;
     this.filedCount = 0;
     const crowded = this.bins.beginFrame();
-    if (geometry.layoutVersion !== this.layoutVersion) this.forgetFilings();
-    else if (crowded) this.packSpans();
+    if (geometry.layoutVersion !== this.layoutVersion) {
+      this.forgetFilings();
+      this.forgetHullChanges(geometry, hulls.length);
+    } else if (crowded) this.packSpans();
     this.layoutVersion = geometry.layoutVersion;
+    this.updateMovingHulls(geometry);
     const placed = this.placeLights(lights, viewProjection, targetWidth, targetHeight);
-    const toFile = this.findFilingsToRedo(placed, geometry);
+    const toFile = this.findFilingsToRedo(placed);
     // Every light filed anew: their spans are laid out afresh, packed from the first entry.
     if (toFile === placed) this.releaseSpans();
-    if (toFile > 0 || this.movedCount > 0) this.grid.build(geometry.coarseBounds, geometry.castsShadow, hulls.length, this.reach);
+    if (toFile > 0 || this.movedCount > 0) this.grid.build(geometry.coarseBounds, this.stillCasters, hulls.length, this.reach);
+    if (this.movingHullCount > 0) this.movingGrid.build(geometry.coarseBounds, this.movingCasters, hulls.length, this.movingReach);
     this.checkMovedCentres(hulls, geometry);
     // Keeps the placed lights whose centre is not inside a hull, in order.
     for (let i = 0; i < placed; i++) {
@@ -95,10 +123,9 @@ export class FramePlan {
         this.filedCount++;
         if (draw.light instanceof DirectionalLight) this.collectDirectionalHulls(draw, hulls, geometry);
         else filing.skipped = !this.collectHulls(draw, hulls, geometry);
-        filing.hullCount = draw.hullCount;
       }
-      if (filing.skipped) continue;
-      draw.hullCount = filing.hullCount;
+      if (filing.skipped || !this.fileMovingHulls(draw, hulls, geometry)) continue;
+      draw.hullCount = filing.hullCount + filing.movingCount;
       draw.binRow = filing.row;
       this.draws[i] = this.draws[this.drawCount];
       this.draws[this.drawCount++] = draw;
@@ -110,9 +137,10 @@ export class FramePlan {
    * Gives each placed light its filing, marks the filings whose light or whose hulls changed (see
    * {@link FramePlan}) as not current and records them anew (to be filed), lists in `moved` the
    * kept filings of lights that moved, and puts the bounds of both kinds of light's shadow casters
-   * together in `reach`; returns how many are to be filed.
+   * together in `reach`, and those of every placed light that casts shadows in `movingReach`;
+   * returns how many are to be filed.
    */
-  private findFilingsToRedo(placed: number, geometry: ShadowGeometry): number {
+  private findFilingsToRedo(placed: number): number {
     for (let i = 0; i < placed; i++) {
       const draw = this.draws[i];
       const filing = this.filingOf(draw.light);
@@ -120,46 +148,98 @@ export class FramePlan {
       filing.usedFrame = this.frame;
       if (filing.current && !filing.matches(draw)) filing.current = false;
     }
-    // Every changed hull against every filing, kept or left by its light (the next one then has no
-    // margin, see LightFiling): few changes in a scene that keeps many.
-    const boxes = geometry.changedBoxes, changed = geometry.changedCount;
+    // Every hull that started or stopped moving against every filing, kept or left by its light (the
+    // next one then has no margin, see LightFiling): few in a scene that keeps many.
+    const boxes = this.endingBoxes, ending = this.endingCount;
     for (let i = 0; i < placed; i++) {
       const filing = this.draws[i].filing, b = filing.filedBounds;
-      for (let k = 0; k < changed; k++) {
+      for (let k = 0; k < ending; k++) {
         if (boxes[4 * k] > b[2] || boxes[4 * k + 2] < b[0] || boxes[4 * k + 1] > b[3] || boxes[4 * k + 3] < b[1]) continue;
         filing.endByHulls();
         break;
       }
     }
-    const reach = this.reach;
-    reach[0] = reach[1] = Infinity;
-    reach[2] = reach[3] = -Infinity;
+    const reach = this.reach, movingReach = this.movingReach;
+    emptyBox(reach);
+    emptyBox(movingReach);
     let count = 0;
     this.movedCount = 0;
     if (this.moved.length < placed) this.moved = new Int32Array(2 * placed);
     for (let i = 0; i < placed; i++) {
       const draw = this.draws[i], filing = draw.filing;
-      let b: Float64Array;
       if (!filing.current) {
         count++;
         filing.record(draw, this.frame);
-        if (!draw.light.castsShadows) continue;
-        b = draw.light instanceof DirectionalLight ? writeUpstreamBox(draw, this.upstreamBox) : filing.filedBounds;
       } else if (!filing.skipped && filing.centreMoved()) {
         this.moved[this.movedCount++] = i;
-        b = draw.bounds;
-      } else continue;
-      if (b[0] < reach[0]) reach[0] = b[0];
-      if (b[1] < reach[1]) reach[1] = b[1];
-      if (b[2] > reach[2]) reach[2] = b[2];
-      if (b[3] > reach[3]) reach[3] = b[3];
+        extendBox(reach, draw.bounds);
+      }
+      if (!draw.light.castsShadows) continue;
+      const b = draw.light instanceof DirectionalLight ? writeUpstreamBox(draw, this.upstreamBox) : filing.filedBounds;
+      if (filing.filedFrame === this.frame) extendBox(reach, b);
+      extendBox(movingReach, b);
     }
     return count;
   }
 
   /**
+   * Sorts the hulls that changed this frame and those that stood still for {@link MOVING_FRAMES}
+   * frames between moving and still (the two grids' casters), and lists in `endingBoxes` the boxes of
+   * those that started or stopped moving: a still hull's before and after its change, where the
+   * still hulls' lists may hold it; a hull that stopped, where they now should.
+   */
+  private updateMovingHulls(geometry: ShadowGeometry): void {
+    const frame = this.frame, changedFrames = this.hullChangedFrames, castsShadow = geometry.castsShadow;
+    this.endingCount = 0;
+    for (let m = 0; m < this.movingHullCount;) {
+      const index = this.movingHulls[m];
+      if (frame - changedFrames[index] <= MOVING_FRAMES) {
+        m++;
+        continue;
+      }
+      this.movingHulls[m] = this.movingHulls[--this.movingHullCount];
+      this.movingCasters[index] = 0;
+      this.stillCasters[index] = castsShadow[index];
+      if (castsShadow[index] !== 0) this.addEndingBox(geometry.coarseBounds, 4 * index);
+    }
+    for (let k = 0; k < geometry.changedCount; k++) {
+      const index = geometry.changedIndices[k];
+      if (frame - changedFrames[index] > MOVING_FRAMES) {
+        if (this.movingHullCount === this.movingHulls.length) this.movingHulls = grow(this.movingHulls, this.movingHullCount, this.movingHullCount);
+        this.movingHulls[this.movingHullCount++] = index;
+        if (this.stillCasters[index] !== 0) this.addEndingBox(geometry.changedBoxes, 4 * k);
+      }
+      changedFrames[index] = frame;
+      this.stillCasters[index] = 0;
+      this.movingCasters[index] = castsShadow[index];
+    }
+  }
+
+  /** Adds `boxes[at .. at + 3]` to `endingBoxes`. */
+  private addEndingBox(boxes: Float64Array, at: number): void {
+    const k = 4 * this.endingCount++;
+    if (k === this.endingBoxes.length) this.endingBoxes = grow(this.endingBoxes, k, k);
+    for (let i = 0; i < 4; i++) this.endingBoxes[k + i] = boxes[at + i];
+  }
+
+  /** After a new layout: every hull stands still. */
+  private forgetHullChanges(geometry: ShadowGeometry, hullCount: number): void {
+    if (this.hullChangedFrames.length < hullCount) {
+      const capacity = Math.ceil(hullCount * 1.5);
+      this.hullChangedFrames = new Int32Array(capacity);
+      this.stillCasters = new Uint8Array(capacity);
+      this.movingCasters = new Uint8Array(capacity);
+    }
+    this.hullChangedFrames.fill(NEVER);
+    this.stillCasters.set(geometry.castsShadow.subarray(0, hullCount));
+    this.movingCasters.fill(0);
+    this.movingHullCount = 0;
+  }
+
+  /**
    * Checks the centres of the lights that moved within their kept filing (see `moved`): a light
-   * whose centre is now inside a hull that shadows it is filed anew (which skips it).
+   * whose centre is now inside a still hull that shadows it is filed anew (which skips it). The
+   * moving hulls are checked with every light each frame (`fileMovingHulls`).
    */
   private checkMovedCentres(hulls: readonly Hull[], geometry: ShadowGeometry): void {
     const grid = this.grid, box = this.reach, centre = this.centre;
@@ -196,20 +276,22 @@ export class FramePlan {
     for (let row = 0; row < this.filingsByRow.length; row++) {
       const filing = this.filingsByRow[row];
       if (!filing || filing.usedFrame === this.frame) continue;
-      this.bins.releaseSpan(filing);
+      this.bins.releaseSpan(filing.stillSpan);
+      this.bins.releaseSpan(filing.movingSpan);
       this.filings.delete(filing.light);
       this.filingsByRow[row] = null;
       this.freeRows.push(row);
     }
   }
 
-  /** Packs the spans of the filings that have one (see `ShadowBins.pack`), in order of their first entry. */
+  /** Packs the filings' spans that hold entries (see `ShadowBins.pack`), in order of their first entry. */
   private packSpans(): void {
     const spans = this.spansInOrder;
     spans.length = 0;
     for (let row = 0; row < this.filingsByRow.length; row++) {
       const filing = this.filingsByRow[row];
-      if (filing && filing.entryCapacity > 0) spans.push(filing);
+      if (filing && filing.stillSpan.entryCapacity > 0) spans.push(filing.stillSpan);
+      if (filing && filing.movingSpan.entryCapacity > 0) spans.push(filing.movingSpan);
     }
     spans.sort(byFirstEntry);
     this.bins.pack(spans);
@@ -228,7 +310,9 @@ export class FramePlan {
   private releaseSpans(): void {
     for (let row = 0; row < this.filingsByRow.length; row++) {
       const filing = this.filingsByRow[row];
-      if (filing) this.bins.releaseSpan(filing);
+      if (!filing) continue;
+      this.bins.releaseSpan(filing.stillSpan);
+      this.bins.releaseSpan(filing.movingSpan);
     }
   }
 
@@ -251,14 +335,42 @@ export class FramePlan {
     return placed;
   }
 
-  /** Files the records of the hulls in range into the light's bins; false when the light centre is inside a hull. */
+  /**
+   * Files the still hulls in range into the light's first list (empty when it has none, as the
+   * moving list may not be); false when the light's centre is inside one.
+   */
   private collectHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
     const light = draw.light, filing = draw.filing;
-    draw.hullCount = 0;
+    filing.hullCount = 0;
     if (!light.castsShadows) return true;
-    this.bins.beginLight(filing.originX, filing.originY, filing.filedRadius, filing.filedReach);
-    if (!this.addHullsInRange(draw, hulls, geometry)) return false;
-    if (draw.hullCount > 0) this.bins.endLight(geometry, draw.filing);
+    this.bins.beginLight(filing.originX, filing.originY, filing.filedRadius, filing.bucketWidth);
+    const count = this.addHullsInRange(draw, hulls, geometry, this.grid);
+    if (count < 0) return false;
+    filing.hullCount = count;
+    this.bins.endLight(geometry, filing.stillSpan);
+    return true;
+  }
+
+  /**
+   * Files the moving hulls in range into a point light's moving list, around its filing's origin, for
+   * its filed disk and reach (see {@link LightFiling}); writes the list only when it holds hulls or
+   * did. False when the light's centre is inside one (the light is skipped this frame). A directional
+   * light's moving list stays empty: its first list holds every hull.
+   */
+  private fileMovingHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
+    const light = draw.light, filing = draw.filing;
+    let count = 0;
+    if (light.castsShadows && this.movingHullCount > 0 && !(light instanceof DirectionalLight)) {
+      this.bins.beginLight(filing.originX, filing.originY, filing.filedRadius, filing.bucketWidth);
+      count = this.addHullsInRange(draw, hulls, geometry, this.movingGrid);
+      if (count < 0) {
+        filing.movingCount = UNWRITTEN;
+        return false;
+      }
+    }
+    if (count > 0) this.bins.endLight(geometry, filing.movingSpan);
+    else if (filing.movingCount !== 0) this.bins.emptyList(filing.movingSpan);
+    filing.movingCount = count;
     return true;
   }
 
@@ -268,21 +380,28 @@ export class FramePlan {
    * not ignored. Never skips the light: it has no centre to be inside a hull.
    */
   private collectDirectionalHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): void {
-    const light = draw.light as DirectionalLight;
-    draw.hullCount = 0;
+    const light = draw.light as DirectionalLight, filing = draw.filing;
+    filing.hullCount = 0;
     if (!light.castsShadows) return;
-    const strips = draw.strips, bins = this.bins, grid = this.grid;
-    const box = writeUpstreamBox(draw, this.upstreamBox);
-    const count = grid.search(box);
-    writeStrips(draw, light, grid.extent, strips);
-    bins.beginDirectional(strips);
+    const box = writeUpstreamBox(draw, this.upstreamBox), extent = this.hullsExtent;
+    extent.set(this.grid.extent);
+    if (this.movingHullCount > 0) extendBox(extent, this.movingGrid.extent);
+    writeStrips(draw, light, extent, draw.strips);
+    this.bins.beginDirectional(draw.strips);
+    this.addDirectionalHulls(draw, hulls, geometry, this.grid, box);
+    if (this.movingHullCount > 0) this.addDirectionalHulls(draw, hulls, geometry, this.movingGrid, box);
+    this.bins.endLight(geometry, filing.stillSpan);
+  }
+
+  /** Adds the hulls `grid` finds in `box` whose shadow can reach the view to the directional light's candidates, counting them in its filing. */
+  private addDirectionalHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry, grid: HullGrid, box: Float64Array): void {
+    const light = draw.light, count = grid.search(box);
     for (let i = 0; i < count; i++) {
       const index = grid.found[i];
       if (!shadows(light, hulls, geometry, index)) continue;
       geometry.prepare(index);
-      if (bins.addDirectionalHull(geometry, index)) draw.hullCount++;
+      if (this.bins.addDirectionalHull(geometry, index)) draw.filing.hullCount++;
     }
-    if (draw.hullCount > 0) bins.endLight(geometry, draw.filing);
   }
 
   /** Writes the view rectangle's world quad: clip space's corner (−1, −1) and its two edges, through the inverse view-projection. */
@@ -299,20 +418,19 @@ export class FramePlan {
   }
 
   /**
-   * Adds to the light's bins, as candidates, the hulls whose exact bounds overlap its filed bounds
-   * and whose circle reaches within its filed reach of its centre (see `LightFiling`), transforming
-   * each candidate the grid finds by its coarse bounds first (see `ShadowGeometry.prepare`), so every
-   * change reaches the light this frame; counts them in `draw.hullCount`. False when the light
-   * centre is inside one of them. Reads the geometry's flat arrays, not the hulls: this runs for
-   * every hull in every light's range.
+   * Adds to the light's bins, as candidates, the hulls of `grid` whose exact bounds overlap its filed
+   * bounds and whose circle reaches within its filed reach of its centre (see `LightFiling`),
+   * transforming each candidate the grid finds by its coarse bounds first (see
+   * `ShadowGeometry.prepare`), so every change reaches the light this frame; returns how many, or -1
+   * when the light centre is inside one of them. Reads the geometry's flat arrays, not the hulls:
+   * this runs for every hull in every light's range.
    */
-  private addHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
+  private addHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry, grid: HullGrid): number {
     const light = draw.light, filing = draw.filing;
     const lx = filing.originX, ly = filing.originY;
     this.centre[0] = lx;
     this.centre[1] = ly;
     const b = filing.filedBounds;
-    const grid = this.grid;
     const count = grid.search(b), found = grid.found;
     const bounds = geometry.worldBounds, circles = geometry.circles, reach = filing.filedReach;
     let added = 0;
@@ -325,14 +443,13 @@ export class FramePlan {
       // Beyond the reach: the segments from the pixels within it to the disk stay within it too.
       const dx = circles[3 * index] - lx, dy = circles[3 * index + 1] - ly, beyond = reach + circles[3 * index + 2];
       if (dx * dx + dy * dy >= beyond * beyond) continue;
-      if (isInsideHull(hulls, geometry, index, this.centre)) return false;
+      if (isInsideHull(hulls, geometry, index, this.centre)) return -1;
       found[added++] = index;
     }
     // Filed in a loop of its own: inlined here, the bins' arithmetic would pass doubles to helpers
     // V8 no longer inlines (its budget per function spent), boxing them for every hull.
     this.bins.addHulls(geometry, found, added);
-    draw.hullCount = added;
-    return true;
+    return added;
   }
 }
 
@@ -394,6 +511,20 @@ function writeBounds(draw: LightDraw): void {
   b[3] = Math.max(ly, q[1], q[1] + q[3], q[1] + q[5], q[1] + q[3] + q[5]);
 }
 
+/** Sets `box` to the empty box (inside out), which {@link extendBox} grows. */
+function emptyBox(box: Float64Array): void {
+  box[0] = box[1] = Infinity;
+  box[2] = box[3] = -Infinity;
+}
+
+/** Grows `box` to hold `other` (both `[minX, minY, maxX, maxY]`). */
+function extendBox(box: Float64Array, other: Float64Array): void {
+  if (other[0] < box[0]) box[0] = other[0];
+  if (other[1] < box[1]) box[1] = other[1];
+  if (other[2] > box[2]) box[2] = other[2];
+  if (other[3] > box[3]) box[3] = other[3];
+}
+
 /** Whether the hull at `index` shadows `light`: it is in one of the light's shadow layers and not ignored by it. */
 function shadows(light: Light, hulls: readonly Hull[], geometry: ShadowGeometry, index: number): boolean {
   return (geometry.layers[index] & light.shadowLayers) !== 0 && !(light.ignoredHulls.size > 0 && light.ignoredHulls.has(hulls[index]));
@@ -414,6 +545,17 @@ function byFirstEntry(a: BinSpan, b: BinSpan): number {
 }
 
 /**
+ * A hull that changed within this many frames is a moving one: filed into every light's moving list
+ * each frame rather than kept in the filings (which it would end at every change). A hull that
+ * starts or stops moving ends the filings it overlaps once.
+ */
+const MOVING_FRAMES = 30;
+/** `hullChangedFrames` of a hull that has not changed since the layout: it stands still. */
+const NEVER = -(2 ** 30);
+/** A filing's `movingCount` when its moving list in the bins is not known to be written. */
+const UNWRITTEN = -1;
+
+/**
  * How many frames a moving light's filing should last at the speed it last moved: its margin is
  * that many frames of travel (see {@link LightFiling}).
  */
@@ -423,7 +565,8 @@ const MAX_MARGIN_SHARE = 1 / 16;
 
 /**
  * A light's filing as of the frame it was made (see {@link FramePlan}): what it depends on, and what
- * it gave: the hull count, whether the light is skipped, its row of bins and span of entries.
+ * it gave: the still hulls' count, whether the light is skipped, its row of bins and the spans of
+ * its two lists' entries.
  *
  * A point light is filed for a disk and a reach a margin wider than its own, around its centre
  * then (the bins' origin): every segment from a pixel in its reach to its disk is one from a pixel
@@ -437,13 +580,15 @@ const MAX_MARGIN_SHARE = 1 / 16;
  * last filing's bounds changed (whether or not the light also left it): where hulls keep changing,
  * no filing lasts, and wider bins would only cost.
  */
-class LightFiling implements BinSpan {
+class LightFiling {
   /** Whether the filing still holds: false until made, and once something it depends on changed. */
   current = false;
   skipped = false;
+  /** Hulls in the still hulls' list, and in the moving list as last written ({@link UNWRITTEN}: not known). */
   hullCount = 0;
-  firstEntry = 0;
-  entryCapacity = 0;
+  movingCount = UNWRITTEN;
+  readonly stillSpan: BinSpan;
+  readonly movingSpan: BinSpan;
   /** The last frame the light was placed in. */
   usedFrame = 0;
   /** The centre the bins were filed around: the light's centre when filed. */
@@ -452,6 +597,8 @@ class LightFiling implements BinSpan {
   /** The disk radius and the reach the bins were filed for: the light's, plus the margin. */
   filedRadius = 0;
   filedReach = 0;
+  /** The width of the lists' distance buckets: the filed reach's (see `bucketWidthOf`). */
+  bucketWidth = 1;
   /** The light's quad bounds when filed, a margin wider: the hulls were searched in this box. */
   readonly filedBounds = new Float64Array(4);
   /** Whether a hull near the light changed while the last filing held (it ended it, or would have). */
@@ -465,7 +612,10 @@ class LightFiling implements BinSpan {
   private shadowLayers = 0;
   private readonly ignoredHulls: Hull[] = [];
 
-  constructor(readonly light: Light, readonly row: number) {}
+  constructor(readonly light: Light, readonly row: number) {
+    this.stillSpan = new EntrySpan(row, STATIC_LIST);
+    this.movingSpan = new EntrySpan(row, MOVING_LIST);
+  }
 
   /** Records what the filing about to be made this frame depends on (`draw` is the light's, placed this frame), with its margin. */
   record(draw: LightDraw, frame: number): void {
@@ -481,6 +631,8 @@ class LightFiling implements BinSpan {
     this.originY = this.checkedY = y;
     this.filedRadius = light.radius + margin;
     this.filedReach = draw.reach + margin;
+    this.bucketWidth = bucketWidthOf(this.filedReach);
+    this.movingCount = UNWRITTEN;
     const b = draw.bounds, own = this.filedBounds;
     own[0] = b[0] - margin;
     own[1] = b[1] - margin;
@@ -525,11 +677,12 @@ class LightFiling implements BinSpan {
     this.checkedY = this.light.position[1];
   }
 
-  /** Writes the bins' origin and the disk radius they were filed for (the shader's `u_binning` for a light with a centre). */
+  /** Writes the bins' origin, the disk radius they were filed for and their bucket width (the shader's `u_binning` for a light with a centre). */
   writeBinning(out: Float32Array): void {
     out[0] = this.originX;
     out[1] = this.originY;
     out[2] = this.filedRadius;
+    out[3] = this.bucketWidth;
   }
 
   /** Whether `light.ignoredHulls` holds the hulls it held when filed: as many, and each of those. */
@@ -543,4 +696,12 @@ class LightFiling implements BinSpan {
   private addIgnoredHull(hull: Hull): void {
     this.ignoredHulls.push(hull);
   }
+}
+
+/** One of a filing's two lists (see {@link BinSpan}). */
+class EntrySpan implements BinSpan {
+  firstEntry = 0;
+  entryCapacity = 0;
+
+  constructor(readonly row: number, readonly list: number) {}
 }

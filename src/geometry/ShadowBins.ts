@@ -3,6 +3,11 @@ import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, entryCode, TEXT
 
 /** Distance buckets of the counting sort that orders each bin's list, nearest first. */
 export const DISTANCE_BUCKETS = 32;
+
+/** The width of a light's distance buckets: a light adds nothing beyond its (filed) `reach`. */
+export function bucketWidthOf(reach: number): number {
+  return Math.max(reach, 1e-9) / DISTANCE_BUCKETS;
+}
 /** Pseudo-angle margin on each side of a hull's bins, far above the shader's float32 rounding (~1e-6). */
 const ANGLE_MARGIN = 1e-3;
 /** asin(x) ≤ x + ASIN_CUBIC · x³ on [0, 1] (see `addHull`). */
@@ -69,7 +74,7 @@ export class ShadowBins {
 
   /**
    * Moves `spans`, every span not released, in order of their first entry, to lie one after the
-   * other from the first entry, and their rows' bins with them: the entries stay as they were, no
+   * other from the first entry, and their lists' first entries in the bins with them: the entries stay as they were, no
    * light is filed anew. Marks every row dirty.
    */
   pack(spans: readonly BinSpan[]): void {
@@ -78,7 +83,7 @@ export class ShadowBins {
     for (let i = 0; i < spans.length; i++) {
       const span = spans[i], shift = span.firstEntry - end;
       entries.copyWithin(end * ENTRY_FLOATS, span.firstEntry * ENTRY_FLOATS, (span.firstEntry + span.entryCapacity) * ENTRY_FLOATS);
-      for (let b = span.row * BIN_COUNT * BIN_FLOATS, last = b + BIN_COUNT * BIN_FLOATS; b < last; b += BIN_FLOATS) bins[b] -= shift;
+      for (let b = span.row * BIN_COUNT * BIN_FLOATS + span.list, last = b + BIN_COUNT * BIN_FLOATS; b < last; b += BIN_FLOATS) bins[b] -= shift;
       span.firstEntry = end;
       end += span.entryCapacity;
       this.dirtyBinRows[span.row] = 1;
@@ -94,12 +99,15 @@ export class ShadowBins {
     if (this.liveEntries === 0) this.entryEnd = 0;
   }
 
-  /** Starts the row of the light with the given centre, disk radius and reach (it adds nothing farther). */
-  beginLight(x: number, y: number, radius: number, reach: number): void {
+  /**
+   * Starts a list of the light with the given centre and disk radius, ordered by distance buckets
+   * `bucketWidth` wide ({@link bucketWidthOf} its reach: it adds nothing farther).
+   */
+  beginLight(x: number, y: number, radius: number, bucketWidth: number): void {
     this.lightX = x;
     this.lightY = y;
     this.lightRadius = radius;
-    this.bucketWidth = Math.max(reach, 1e-9) / DISTANCE_BUCKETS;
+    this.bucketWidth = bucketWidth;
     this.candidateCount = 0;
   }
 
@@ -150,16 +158,12 @@ export class ShadowBins {
   }
 
   /**
-   * Files the current light's candidates into the bins of `span.row` and its span of entries,
-   * moving the span to the end when they no longer fit, and marks what it wrote dirty.
+   * Files the current light's candidates into `span`'s list of the bins of `span.row` and its span of
+   * entries, moving the span to the end when they no longer fit, and marks what it wrote dirty.
    */
   endLight(geometry: ShadowGeometry, span: BinSpan): void {
     const row = span.row, rowFloats = BIN_COUNT * BIN_FLOATS;
-    if (this.bins.length < (row + 1) * rowFloats) {
-      this.bins = grow(this.bins, this.bins.length, (row + 1) * rowFloats - this.bins.length, rowFloats);
-      this.dirtyBinRows = grow(this.dirtyBinRows, this.dirtyBinRows.length, this.bins.length / rowFloats - this.dirtyBinRows.length);
-    }
-    this.dirtyBinRows[row] = 1;
+    this.markBinRow(row);
     this.sortByBucket();
     const count = this.candidateCount, firstBins = this.candidateFirstBins, binCounts = this.candidateBinCounts, hulls = this.candidateHulls;
     const recordCounts = geometry.recordCounts, firstRecords = geometry.firstRecords, convex = geometry.convex;
@@ -183,10 +187,9 @@ export class ShadowBins {
     const bins = this.bins;
     for (let bin = 0, start = firstEntry, size = wrapping; bin < BIN_COUNT; bin++) {
       size += cursors[bin];
-      const b = row * rowFloats + bin * BIN_FLOATS;
+      const b = row * rowFloats + bin * BIN_FLOATS + span.list;
       bins[b] = start;
       bins[b + 1] = size;
-      bins[b + 2] = this.bucketWidth;
       cursors[bin] = start;
       start += size;
     }
@@ -207,6 +210,26 @@ export class ShadowBins {
         }
       }
     }
+  }
+
+  /** Empties `span`'s list in every bin of its row (a list no hull is filed in), and marks the row dirty. */
+  emptyList(span: BinSpan): void {
+    this.markBinRow(span.row);
+    const bins = this.bins;
+    for (let b = span.row * BIN_COUNT * BIN_FLOATS + span.list, last = b + BIN_COUNT * BIN_FLOATS; b < last; b += BIN_FLOATS) {
+      bins[b] = span.firstEntry;
+      bins[b + 1] = 0;
+    }
+  }
+
+  /** Marks the bins' `row` dirty, growing the bins to hold it. */
+  private markBinRow(row: number): void {
+    const rowFloats = BIN_COUNT * BIN_FLOATS;
+    if (this.bins.length < (row + 1) * rowFloats) {
+      this.bins = grow(this.bins, this.bins.length, (row + 1) * rowFloats - this.bins.length, rowFloats);
+      this.dirtyBinRows = grow(this.dirtyBinRows, this.dirtyBinRows.length, this.bins.length / rowFloats - this.dirtyBinRows.length);
+    }
+    this.dirtyBinRows[row] = 1;
   }
 
   /**
@@ -289,10 +312,15 @@ export class ShadowBins {
   }
 }
 
-/** Where a light's shadow data lives, kept from frame to frame: its row of bins and its span of entries. */
+/**
+ * Where one of a light's lists lives, kept from frame to frame: its row of bins, the list's place in
+ * each bin, and its span of entries.
+ */
 export interface BinSpan {
   /** The light's row in {@link ShadowBins.bins}. */
   readonly row: number;
+  /** Which list of each bin the span holds, as its first float in the bin: `STATIC_LIST` or `MOVING_LIST` (shadowLayout). */
+  readonly list: number;
   /** The first entry of its span and how many entries the span holds (0: no span yet). */
   firstEntry: number;
   entryCapacity: number;

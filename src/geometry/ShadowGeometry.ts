@@ -46,9 +46,10 @@ export class ShadowGeometry {
   /**
    * Per hull the last `update` refreshed without a new layout, the box around its coarse bounds
    * before and after (`[minX, minY, maxX, maxY]` at `4 × k` for the k-th): every light whose range
-   * that box misses is unaffected by the change.
+   * that box misses is unaffected by the change; the k-th hull's index is `changedIndices[k]`.
    */
   changedBoxes = new Float64Array(0);
+  changedIndices = new Int32Array(0);
   changedCount = 0;
   private layoutHulls: Hull[] = [];
   /** Per hull: `hull.version` when `coarseBounds`, `castsShadow` and `convex` were last refreshed. */
@@ -114,6 +115,7 @@ export class ShadowGeometry {
     hull.updateCoarseBounds();
     const from = hull.coarseBounds, to = this.coarseBounds;
     const changed = this.changedCount++, box = this.changedBoxes;
+    this.changedIndices[changed] = index;
     box[4 * changed] = Math.min(from[0], to[4 * index]);
     box[4 * changed + 1] = Math.min(from[1], to[4 * index + 1]);
     box[4 * changed + 2] = Math.max(from[2], to[4 * index + 2]);
@@ -170,6 +172,7 @@ export class ShadowGeometry {
       this.preparedVersions = new Float64Array(capacity);
       this.countedEdges = new Int32Array(capacity);
       this.changedBoxes = new Float64Array(4 * capacity);
+      this.changedIndices = new Int32Array(capacity);
     }
     this.refreshedVersions.fill(-1);
     this.preparedVersions.fill(-1);

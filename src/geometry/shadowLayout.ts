@@ -18,7 +18,10 @@ import type { ShadowType } from '../scene/lights';
  *   {@link ENTRY_MAX_RECORDS} records takes several entries.
  * - **Bins** (per frame): one row per shadowed light, {@link BIN_COUNT} texels; bin `k` holds the
  *   directions from the light's centre whose pseudo-angle (see `pseudoAngle`) lies in
- *   `[4k / N, 4(k + 1) / N)`: `(first entry, entry count, distance bucket width, 0)`.
+ *   `[4k / N, 4(k + 1) / N)`: two lists of entries, each ordered nearest first, as
+ *   `(first entry, entry count)` at {@link STATIC_LIST} and at {@link MOVING_LIST}: the hulls that
+ *   stood still (kept with the light's filing) and those that moved lately (filed every frame). The
+ *   width of the distance buckets is the light's uniform `u_binning.w`.
  *
  * - **Record tags** (one R32F texel per record, {@link RECORDS_PER_ROW} per row like the records,
  *   changed with them): which hull a record belongs to and which of its edges lie on that hull's
@@ -72,6 +75,10 @@ export const SHADOW_TYPE_CODES = { solid: 0, illuminated: 1, occluded: 2 } as co
 export const BIN_COUNT = 32;
 /** Floats per bin. */
 export const BIN_FLOATS = 4;
+/** Where a bin's list of hulls that stood still starts, in floats: the texel's x and y. */
+export const STATIC_LIST = 0;
+/** Where a bin's list of hulls that moved lately starts, in floats: the texel's z and w. */
+export const MOVING_LIST = 2;
 
 /**
  * The pseudo-angle of the direction (x, y), in [0, 4): 0 along +x, 1 along +y, 2 along −x, 3 along −y,

@@ -43,7 +43,7 @@ export class LightPass {
   private readonly lightPositionAndRange = new Float32Array(3);
   private readonly shadow = new Float32Array(4);
   private readonly shadowKept = new Float32Array(3);
-  private readonly binning = new Float32Array(3);
+  private readonly binning = new Float32Array(4);
   private readonly falloff = new Float32Array(2);
   private readonly direction = new Float32Array(2);
   private readonly coneHalfAngle = new Float32Array(1);
@@ -163,7 +163,7 @@ export class LightPass {
       gl.uniform1f(uniforms.u_shadowType, SHADOW_TYPE_CODES[light.shadowType]);
       gl.uniform3fv(uniforms.u_shadowKept, this.shadowKept);
     }
-    if (uniforms.u_binning) gl.uniform3fv(uniforms.u_binning, this.binning);
+    if (uniforms.u_binning) gl.uniform4fv(uniforms.u_binning, this.binning);
     if (uniforms.u_falloff) gl.uniform2fv(uniforms.u_falloff, this.falloff);
     if (this.normals) gl.uniform4fv(uniforms.u_towardsLight, this.towardsLight);
     if (light instanceof Spotlight) {
@@ -220,6 +220,7 @@ export class LightPass {
     this.binning[0] = strips.perpBase;
     this.binning[1] = strips.width;
     this.binning[2] = strips.alongBase;
+    this.binning[3] = strips.bucketWidth;
     const cosElevation = Math.cos(light.elevation);
     this.towardsLight[0] = -strips.travelX * cosElevation;
     this.towardsLight[1] = -strips.travelY * cosElevation;

@@ -67,7 +67,9 @@ export class Hull {
   private pivotRadius = NaN;
 
   /**
-   * Bumped by every change; the renderer compares it to decide what to rebuild.
+   * Bumped by every change (setting a property to the value it has is none); the renderer compares
+   * it to decide what to rebuild, and a hull it has not seen change for a while stands still (kept in
+   * the lights' filings).
    * @internal
    */
   version = 0;
@@ -135,11 +137,14 @@ export class Hull {
     return this._position;
   }
   set position(value: Vec2Like) {
-    this._position = frozenVec2('Hull.position', value);
+    const position = frozenVec2('Hull.position', value);
+    if (position[0] === this._position[0] && position[1] === this._position[1]) return;
+    this._position = position;
     this.touch();
   }
-  /** Moves the hull; allocates only the frozen pair that `position` then returns. */
+  /** Moves the hull; allocates only the frozen pair that `position` then returns (nothing when it is already there). */
   setPosition(x: number, y: number): this {
+    if (x === this._position[0] && y === this._position[1]) return this;
     this._position = frozenPair('Hull.position', x, y);
     this.touch();
     return this;
@@ -160,7 +165,8 @@ export class Hull {
     return this._rotation;
   }
   set rotation(value: number) {
-    this._rotation = assertFinite('Hull.rotation', value);
+    if (assertFinite('Hull.rotation', value) === this._rotation) return;
+    this._rotation = value;
     this.touch();
   }
 
@@ -179,7 +185,8 @@ export class Hull {
     return this._enabled;
   }
   set enabled(value: boolean) {
-    this._enabled = assertBoolean('Hull.enabled', value);
+    if (assertBoolean('Hull.enabled', value) === this._enabled) return;
+    this._enabled = value;
     this.touch();
   }
 
@@ -188,7 +195,8 @@ export class Hull {
     return this._layers;
   }
   set layers(value: number) {
-    this._layers = assertLayerMask('Hull.layers', value);
+    if (assertLayerMask('Hull.layers', value) === this._layers) return;
+    this._layers = value;
     this.touch();
   }
 

@@ -247,6 +247,51 @@ describe('lights whose shadows did not change', () => {
     fresh.dispose();
   });
 
+  it('hulls that keep moving are filed every frame beside the kept filings, and light as a new renderer does', () => {
+    const posts = (target: PenumbraRenderer) => {
+      for (let x = 4; x < W; x += 7) for (let y = 4; y < H; y += 9) target.addHull(new Hull([[-1, -1], [1, -1], [1, 1], [-1, 1]], { position: [x, y] }));
+    };
+    const lights = (target: PenumbraRenderer) => {
+      target.addLight(new PointLight({ position: [30.5, 30], range: 40, radius: 3 }));
+      target.addLight(new PointLight({ position: [66, 34], range: 36, radius: 2 }));
+    };
+    posts(renderer);
+    lights(renderer);
+    // Two crates cross the room for 40 frames, the first through the first light's centre (which is
+    // then skipped), then stand still; a third, beside the second light, is disabled at step 20 (it
+    // leaves the kept lists) and enabled again at step 30.
+    const crate = (): [number, number][] => [[-2, -2], [2, -2], [2, 2], [-2, 2]];
+    const crates = [0, 1, 2].map((i) => renderer.addHull(new Hull(crate(), { position: [10 + 20 * i, 30 + 8 * i] })));
+    const fresh = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0] });
+    lights(fresh);
+    const filed: number[] = [];
+    let skipped = 0;
+    for (let step = 0; step < 75; step++) {
+      const t = Math.min(step, 40);
+      for (const [i, hull] of crates.slice(0, 2).entries()) {
+        hull.position = [10 + t + 20 * i, 30 + 8 * i];
+        hull.rotation = 0.05 * t;
+      }
+      crates[2].enabled = step < 20 || step >= 30;
+      const kept = frame();
+      filed.push(renderer.stats.lightsFiled);
+      const drawn = renderer.stats.lightsDrawn;
+      // Hulls added anew: a new layout, every light filed with every hull standing still.
+      for (const hull of [...fresh.hulls]) fresh.removeHull(hull);
+      posts(fresh);
+      for (const hull of crates) fresh.addHull(new Hull(crate(), { position: [hull.position[0], hull.position[1]], rotation: hull.rotation, enabled: hull.enabled }));
+      expect(maxDifference(kept, renderLightmap(gl, fresh, W, H)), `step ${step}`).toBeLessThan(1e-3);
+      expect(drawn, `step ${step}`).toBe(fresh.stats.lightsDrawn);
+      skipped += 2 - drawn;
+    }
+    expect(skipped).toBeGreaterThan(0);
+    // Filed when first drawn and when a hull near them starts moving (or changing) or has stood still
+    // for 30 frames since (steps 61 and 71); not while hulls move.
+    const refiled = new Set([0, 1, 20, 61, 71]);
+    expect(filed.every((count, step) => count === 0 || refiled.has(step)), filed.join(' ')).toBe(true);
+    fresh.dispose();
+  });
+
   it('upload changed rows where they belong, past the first row of each texture too', () => {
     // More than a row of records (512): 600 specks along the bottom, in range, then the box.
     const specks = (target: PenumbraRenderer) => {

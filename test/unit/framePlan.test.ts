@@ -2,7 +2,7 @@ import { mat4 } from 'gl-matrix';
 import { describe, expect, it, vi } from 'vitest';
 import { FramePlan } from '../../src/geometry/FramePlan';
 import { signedArea2 } from '../../src/geometry/polygon';
-import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, pseudoAngle, RECORD_FLOATS } from '../../src/geometry/shadowLayout';
+import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, MOVING_LIST, pseudoAngle, RECORD_FLOATS, STATIC_LIST } from '../../src/geometry/shadowLayout';
 import { ShadowGeometry } from '../../src/geometry/ShadowGeometry';
 import { Hull, PointLight, TexturedLight, type Light } from '../../src/index';
 
@@ -84,12 +84,19 @@ describe('FramePlan culling', () => {
   });
 });
 
+/** The entries of bin `bin` of the draw's light, its still hulls' list then its moving list's, each nearest first (as the shader walks them). */
+function entriesOfBin(framePlan: FramePlan, draw: FramePlan['draws'][number], bin: number): number[] {
+  const bins = framePlan.bins.bins, b = (draw.binRow * BIN_COUNT + bin) * BIN_FLOATS;
+  const out: number[] = [];
+  for (const list of [STATIC_LIST, MOVING_LIST]) for (let e = bins[b + list]; e < bins[b + list] + bins[b + list + 1]; e++) out.push(e);
+  return out;
+}
+
 /** The entries of bin `bin` of the first draw's light: `[first record, record count, circle x, y, radius, fan (1 or 0)]` each. */
 function binEntries(framePlan: FramePlan, bin: number): number[][] {
-  const { bins, entries } = framePlan.bins;
-  const b = (framePlan.draws[0].binRow * BIN_COUNT + bin) * BIN_FLOATS;
+  const entries = framePlan.bins.entries;
   const out: number[][] = [];
-  for (let e = bins[b]; e < bins[b] + bins[b + 1]; e++) {
+  for (const e of entriesOfBin(framePlan, framePlan.draws[0], bin)) {
     const code = entries[e * ENTRY_FLOATS], records = Math.floor(code / 2);
     out.push([Math.floor(records / ENTRY_MAX_RECORDS), (records % ENTRY_MAX_RECORDS) + 1, ...entries.subarray(e * ENTRY_FLOATS + 1, e * ENTRY_FLOATS + 4), code % 2]);
   }
@@ -167,8 +174,8 @@ describe('FramePlan shadow bins', () => {
     const listed = binEntries(framePlan, binAt(centre, 0));
     expect(listed.map(([record]) => record)).toEqual([2, 1, 0]);
     expect(listed[1].slice(2, 5)).toEqual([95, 50, Math.fround(Math.hypot(5, 5))]);
-    // Distance buckets of 160 / 32 = 5 units (the bins' third value).
-    expect(framePlan.bins.bins[framePlan.draws[0].binRow * BIN_COUNT * BIN_FLOATS + 2]).toBe(5);
+    // Distance buckets of 160 / 32 = 5 units.
+    expect(framePlan.draws[0].filing.bucketWidth).toBe(5);
     for (let bin = 0; bin < BIN_COUNT; bin++) expect(binEntries(framePlan, bin)[0].slice(0, 2)).toEqual([2, 1]);
   });
 
@@ -204,18 +211,16 @@ describe('FramePlan shadow bins', () => {
 });
 
 describe('FramePlan filings kept from frame to frame', () => {
-  /** Per drawn light: its hull count and, per bin, its entries sorted (a kept filing may order a distance bucket differently) and the bin's bucket width. */
+  /** Per drawn light: its hull count, bucket width and, per bin, its entries in both lists sorted (a kept filing may order a distance bucket differently). */
   function filings(framePlan: FramePlan): Map<Light, string> {
-    const { bins, entries } = framePlan.bins;
+    const entries = framePlan.bins.entries;
     const out = new Map<Light, string>();
     for (let d = 0; d < framePlan.drawCount; d++) {
       const draw = framePlan.draws[d];
-      const perBin: string[] = [`hulls ${draw.hullCount}`];
+      const perBin: string[] = [`hulls ${draw.hullCount}, buckets ${draw.filing.bucketWidth}`];
       for (let bin = 0; draw.hullCount > 0 && bin < BIN_COUNT; bin++) {
-        const b = (draw.binRow * BIN_COUNT + bin) * BIN_FLOATS;
-        const listed: string[] = [];
-        for (let e = bins[b]; e < bins[b] + bins[b + 1]; e++) listed.push(entries.subarray(e * ENTRY_FLOATS, (e + 1) * ENTRY_FLOATS).join(' '));
-        perBin.push(`${bins[b + 2]}: ${listed.sort().join(', ')}`);
+        const listed = entriesOfBin(framePlan, draw, bin).map((e) => entries.subarray(e * ENTRY_FLOATS, (e + 1) * ENTRY_FLOATS).join(' '));
+        perBin.push(listed.sort().join(', '));
       }
       out.set(draw.light, perBin.join('\n'));
     }
@@ -257,22 +262,24 @@ describe('FramePlan filings kept from frame to frame', () => {
   }
 
   /**
-   * The hulls (by index) the shader visits for the pixel (x, y) of a drawn light: its bin's entries
-   * from the bins' origin, until the first one a distance bucket farther than the pixel (as the
-   * chunk shadow-visibility walks them).
+   * The hulls (by index) the shader visits for the pixel (x, y) of a drawn light: each of its bin's
+   * two lists from the bins' origin, until the first entry a distance bucket farther than the pixel
+   * (as the chunk shadow-visibility walks them).
    */
   function hullsVisited(framePlan: FramePlan, geometry: ShadowGeometry, draw: FramePlan['draws'][number], x: number, y: number): Set<number> {
     const { bins, entries } = framePlan.bins, filing = draw.filing, visited = new Set<number>();
     const dx = x - filing.originX, dy = y - filing.originY, distance = Math.hypot(dx, dy);
     // The shader's pseudo-angle of the zero vector is 0.
     const bin = distance === 0 ? 0 : Math.min(Math.floor(pseudoAngle(dx, dy) * (BIN_COUNT / 4)), BIN_COUNT - 1);
-    const b = (draw.binRow * BIN_COUNT + bin) * BIN_FLOATS, bucketWidth = bins[b + 2];
-    for (let e = bins[b]; e < bins[b] + bins[b + 1]; e++) {
-      const [code, hx, hy, rho] = entries.subarray(e * ENTRY_FLOATS, (e + 1) * ENTRY_FLOATS);
-      const nearest = Math.hypot(hx - filing.originX, hy - filing.originY) - rho;
-      if (nearest > filing.filedRadius + bucketWidth && distance < (Math.floor(nearest / bucketWidth) - 1) * bucketWidth) break;
-      const first = Math.floor(Math.floor(code / 2) / ENTRY_MAX_RECORDS);
-      visited.add(geometry.firstRecords.findIndex((record, index) => record === first && geometry.recordCounts[index] > 0));
+    const b = (draw.binRow * BIN_COUNT + bin) * BIN_FLOATS, bucketWidth = filing.bucketWidth;
+    for (const list of [STATIC_LIST, MOVING_LIST]) {
+      for (let e = bins[b + list]; e < bins[b + list] + bins[b + list + 1]; e++) {
+        const [code, hx, hy, rho] = entries.subarray(e * ENTRY_FLOATS, (e + 1) * ENTRY_FLOATS);
+        const nearest = Math.hypot(hx - filing.originX, hy - filing.originY) - rho;
+        if (nearest > filing.filedRadius + bucketWidth && distance < (Math.floor(nearest / bucketWidth) - 1) * bucketWidth) break;
+        const first = Math.floor(Math.floor(code / 2) / ENTRY_MAX_RECORDS);
+        visited.add(geometry.firstRecords.findIndex((record, index) => record === first && geometry.recordCounts[index] > 0));
+      }
     }
     return visited;
   }

@@ -73,6 +73,20 @@ describe('Hull dirty tracking', () => {
     }
   });
 
+  it('does not count setting a position, rotation, enabled or layers to the value it has as a change', () => {
+    const hull = new Hull(triangle, { position: [3, 4], rotation: 1, layers: 2 });
+    const before = hull.version;
+    hull.position = [3, 4];
+    hull.setPosition(3, 4);
+    hull.rotation = 1;
+    hull.enabled = true;
+    hull.layers = 2;
+    expect(hull.version).toBe(before);
+    // Still validated.
+    expect(() => hull.setPosition(NaN, 4)).toThrow(/Hull\.position/);
+    expect(() => { hull.rotation = Infinity; }).toThrow(/Hull\.rotation/);
+  });
+
   it('recomputes world points only when changed', () => {
     const hull = new Hull(triangle);
     expect(hull.updateWorld()).toBe(true);
