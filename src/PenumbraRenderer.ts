@@ -83,9 +83,11 @@ export interface FrameStats {
   lightsDrawn: number;
   /**
    * Lights whose shadow casters were found and filed anew for the last lightmap. A light keeps the
-   * previous lightmap's filing (and uploads nothing) while it, the hulls near it and the list of
-   * hulls are unchanged, or while it moves within the margin its speed gave its filing (see
-   * docs/shadows.md); a directional light is filed every time.
+   * previous lightmap's filing of the hulls that stood still (and uploads none of it) while it and
+   * the list of hulls are unchanged and no hull near it started or stopped moving, or while it moves
+   * within the margin its speed gave its filing; the hulls that changed within the last 30 frames
+   * are filed for every light every frame (see docs/shadows.md). A directional light is filed every
+   * time.
    */
   lightsFiled: number;
   /** Hulls added to the renderer. */

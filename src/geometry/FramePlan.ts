@@ -562,6 +562,12 @@ const UNWRITTEN = -1;
 const MARGIN_FRAMES = 8;
 /** A filing's margin is at most this share of the light's reach: a fast light is filed more often rather than with ever wider bins. */
 const MAX_MARGIN_SHARE = 1 / 16;
+/**
+ * And at most this share of the light's disk radius: the bins a hull near the light covers widen
+ * with the filed disk (and the hulls within it are in every bin), which every pixel pays for. A
+ * hard light (radius 0) that moves is filed every frame.
+ */
+const MAX_MARGIN_RADIUS_SHARE = 1 / 4;
 
 /**
  * A light's filing as of the frame it was made (see {@link FramePlan}): what it depends on, and what
@@ -574,11 +580,11 @@ const MAX_MARGIN_SHARE = 1 / 16;
  * reach stay inside the wider ones and its quad inside the filed bounds; the shader takes bins and
  * distance buckets from the origin (the chunk shadow-visibility). The margin is 0 for a light that
  * has not moved, and for one that moved, {@link MARGIN_FRAMES} frames of the speed it moved at
- * between its last two filings, at most {@link MAX_MARGIN_SHARE} of its reach: a light that keeps
- * moving is filed anew every few frames, and its bins are wider by the margin's angle, which costs
- * its pixels a few more hulls to look at. A light is filed without a margin when a hull within its
- * last filing's bounds changed (whether or not the light also left it): where hulls keep changing,
- * no filing lasts, and wider bins would only cost.
+ * between its last two filings, at most {@link MAX_MARGIN_SHARE} of its reach and
+ * {@link MAX_MARGIN_RADIUS_SHARE} of its radius: a light that keeps moving is filed anew every few
+ * frames, and its bins are wider by the margin's angle, which costs its pixels a few more hulls to
+ * look at. A light is filed without a margin when a hull within its last filing's bounds started or
+ * stopped moving (whether or not the light also left it).
  */
 class LightFiling {
   /** Whether the filing still holds: false until made, and once something it depends on changed. */
@@ -623,7 +629,7 @@ class LightFiling {
     const dx = x - this.originX, dy = y - this.originY;
     const moved = this.filedFrame > 0 ? Math.sqrt(dx * dx + dy * dy) : 0;
     const speed = moved / Math.max(1, frame - this.filedFrame);
-    const margin = light instanceof DirectionalLight || this.endedByHulls ? 0 : Math.min(MARGIN_FRAMES * speed, MAX_MARGIN_SHARE * draw.reach);
+    const margin = light instanceof DirectionalLight || this.endedByHulls ? 0 : Math.min(MARGIN_FRAMES * speed, MAX_MARGIN_SHARE * draw.reach, MAX_MARGIN_RADIUS_SHARE * light.radius);
     this.endedByHulls = false;
     this.filedFrame = frame;
     this.current = true;

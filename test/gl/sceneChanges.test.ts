@@ -230,7 +230,7 @@ describe('lights whose shadows did not change', () => {
       for (let x = 4; x < W; x += 7) for (let y = 4; y < H; y += 7) target.addHull(new Hull([[-1, -1], [1, -1], [1, 1], [-1, 1]], { position: [x, y] }));
     };
     boxes(renderer);
-    const light = renderer.addLight(new PointLight({ position: [40.5, 30], range: 48, radius: 3 }));
+    const light = renderer.addLight(new PointLight({ position: [40.5, 30], range: 48, radius: 12 }));
     const fresh = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0] });
     boxes(fresh);
     let copy: PointLight | null = null, filed = 0;
@@ -240,7 +240,7 @@ describe('lights whose shadows did not change', () => {
       filed += renderer.stats.lightsFiled;
       // A new light where it is: filed without a margin.
       if (copy) fresh.removeLight(copy);
-      copy = fresh.addLight(new PointLight({ position: [light.position[0], light.position[1]], range: 48, radius: 3 }));
+      copy = fresh.addLight(new PointLight({ position: [light.position[0], light.position[1]], range: 48, radius: 12 }));
       expect(maxDifference(moving, renderLightmap(gl, fresh, W, H)), `step ${step}`).toBeLessThan(1e-3);
     }
     expect(filed).toBeLessThan(24 / 3);

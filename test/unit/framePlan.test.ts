@@ -341,7 +341,7 @@ describe('FramePlan filings kept from frame to frame', () => {
   it('keeps a moving light\'s filing while its disk stays within the margin its speed gave it', () => {
     const hulls: Hull[] = [];
     for (let x = 5; x < WIDTH; x += 12) for (let y = 5; y < HEIGHT; y += 12) hulls.push(square(x, y, 3));
-    const light = new PointLight({ position: [40, 50], range: 48, radius: 2 });
+    const light = new PointLight({ position: [40, 50], range: 48, radius: 12 });
     const geometry = new ShadowGeometry(), framePlan = new FramePlan();
     geometry.update(hulls);
     let filed = 0;
@@ -351,16 +351,16 @@ describe('FramePlan filings kept from frame to frame', () => {
       filed += framePlan.filedCount;
       expectShadingHullsVisited(framePlan, geometry, hulls, `frame ${frame}`);
     }
-    // Half a pixel a frame and a margin of 8 frames' travel (at most 48 / 16 = 3): filed every 5 or 6 frames.
+    // Half a pixel a frame and a margin of 8 frames' travel (at most 48 / 16 = 12 / 4 = 3): filed every 5 or 6 frames.
     expect(filed).toBeGreaterThan(60 / 8);
     expect(filed).toBeLessThan(60 / 4);
     // A still light is filed with no margin again after its next filing.
-    light.radius = 5;
+    light.radius = 16;
     framePlan.build([light], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
-    expect(framePlan.draws[0].filing.filedRadius).toBeGreaterThan(5);
-    light.radius = 9;
+    expect(framePlan.draws[0].filing.filedRadius).toBeGreaterThan(16);
+    light.radius = 20;
     framePlan.build([light], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
-    expect(framePlan.draws[0].filing.filedRadius).toBe(9);
+    expect(framePlan.draws[0].filing.filedRadius).toBe(20);
   });
 
   it('packs the kept filings’ entries when released spans pile up, and they still equal a new plan’s', () => {
