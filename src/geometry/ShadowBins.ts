@@ -15,8 +15,10 @@ const ASIN_CUBIC = Math.PI / 2 - 1;
 
 /**
  * Per shadowed light, the hulls that can hide part of its disk, filed into angular bins around its
- * centre (see shadowLayout), each bin's list ordered nearest first. A pixel looks up the bin of its
- * direction from the light and visits that list until the hulls are farther than itself.
+ * centre (see shadowLayout), in two lists per bin (the still hulls and the moving ones, each filed
+ * between a `beginLight` and an `endLight` into its own {@link BinSpan}), each ordered nearest
+ * first. A pixel looks up the bin of its direction from the light and visits each list until the
+ * hulls are farther than itself.
  *
  * Which pixels a hull can shade: a segment from a pixel p to a disk point q meets the hull only if p
  * lies on a ray from q through a hull point h, beyond it. Seen from the centre c, such a p lies
