@@ -92,10 +92,6 @@ float nextBreak(float after, float limit) {
   }
   for (int i = 0; i < binCount; i++) {
     ivec2 records = recordsOfEntry(i);
-    if (records.x < 0) {
-      i = lastOfList(i);
-      continue;
-    }
     for (int record = records.x; record <= records.y; record++) {
       if (!loadRecord(record)) continue;
       next = nextRecordBreak(after, next);
@@ -134,10 +130,6 @@ float hiddenAlong(float angle) {
   }
   for (int i = 0; i < (pastCount == 1 ? 0 : binCount); i++) {
     ivec2 records = recordsOfEntry(i);
-    if (records.x < 0) {
-      i = lastOfList(i);
-      continue;
-    }
     for (int record = records.x; record <= records.y; record++) {
       if (!loadRecord(record)) continue;
       nearest = min(nearest, entryDistance(direction));

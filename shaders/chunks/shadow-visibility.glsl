@@ -165,12 +165,11 @@ bool pixelInsideRecord() {
 // The light's bin for this pixel: two lists, each ordered nearest first (the hulls that stood
 // still, then those that moved lately; see src/geometry/shadowLayout.ts), walked as one of binCount
 // entries: entry i < stillCount is the still list's i-th, from binFirst, and the others the moving
-// list's, from movingFirst. And the distance buckets' width.
+// list's, from movingFirst.
 int binFirst;
 int stillCount;
 int movingFirst;
 int binCount;
-float bucketWidth;
 // The pixel's distance from the centre its light's bins were filed around (v_binning.xy).
 float distanceToBinOrigin;
 
@@ -180,24 +179,19 @@ bool entryIsFan;
 // the pixel are left to find.
 bool seekingHolders;
 
-// The last entry of the list that entry `i` of the pixel's bin is in: where a walk that found that
-// hull and all after it in its list farther than the pixel goes on from.
-int lastOfList(int i) {
-  return i < stillCount ? stillCount - 1 : binCount - 1;
-}
-
-// The records of entry `i` of the pixel's bin, first and last: (-1, -1) when that hull and all after
-// it in its list are farther from the centre than the pixel (see lastOfList), (0, -1) when this one
-// cannot hide anything from it.
-ivec2 recordsOfEntry(int i) {
+// The records of entry `i` of the pixel's bin, first and last, or (0, -1) when this hull cannot hide
+// anything from the pixel. When it and all after it in its list are farther from the centre than the
+// pixel, moves `i` to the last entry of that list, so that a walk's next step leaves the list.
+ivec2 recordsOfEntry(inout int i) {
   vec4 entry = texelAt(u_entries, i < stillCount ? binFirst + i : movingFirst + i);
   vec2 hull = entry.yz - pixel, toCentre = centre - pixel;
-  float hullRadius = entry.w;
+  float hullRadius = entry.w, bucketWidth = v_binning.w;
+  bool farther;
 #ifdef DIRECTIONAL
   // The strip's list is ordered by buckets of where each hull starts along the travel: one bucket
   // beyond the pixel, this hull and all after it lie wholly downstream of it.
   float hullStart = dot(entry.yz, travel) - hullRadius - v_binning.z, pixelAlong = dot(pixel, travel) - v_binning.z;
-  if (pixelAlong < (floor(hullStart / bucketWidth) - 1.0) * bucketWidth) return ivec2(-1);
+  farther = pixelAlong < (floor(hullStart / bucketWidth) - 1.0) * bucketWidth;
   // The hull must meet the wedge of directions within α of the light's, upstream of the pixel:
   // within its radius of the axis widened by tan α per unit upstream (ρ / cos α ≤ ρ (1 + tan α)).
   float upstream = -dot(hull, travel), tangent = radius * inversesqrt(max(1.0 - radius * radius, 1e-12));
@@ -209,7 +203,7 @@ ivec2 recordsOfEntry(int i) {
   // list is ordered by distance buckets from that centre (ShadowBins), so one bucket beyond the
   // pixel, all the rest are too.
   float filedNearest = length(entry.yz - v_binning.xy) - hullRadius;
-  if (filedNearest > v_binning.z + bucketWidth && distanceToBinOrigin < (floor(filedNearest / bucketWidth) - 1.0) * bucketWidth) return ivec2(-1);
+  farther = filedNearest > v_binning.z + bucketWidth && distanceToBinOrigin < (floor(filedNearest / bucketWidth) - 1.0) * bucketWidth;
   float nearest = length(entry.yz - centre) - hullRadius;
   // The hull must meet the region between the pixel and the disk, which lies within r of the
   // segment from the pixel to the centre and nearer to the pixel than the disk's far side.
@@ -219,6 +213,10 @@ ivec2 recordsOfEntry(int i) {
     && (nearest <= radius || distanceToLight >= nearest);
 #endif
   if (seekingHolders) between = length(hull) <= hullRadius;
+  if (farther) {
+    i = i < stillCount ? stillCount - 1 : binCount - 1;
+    between = false;
+  }
   int code = int(entry.x);
   entryIsFan = code % 2 == 1;
   int records = code / 2;
@@ -442,7 +440,6 @@ void beginShadow() {
   stillCount = int(binEntries.y);
   movingFirst = int(binEntries.z) - stillCount;
   binCount = stillCount + int(binEntries.w);
-  bucketWidth = v_binning.w;
 }
 
 // The fraction of the disk visible from the pixel, in one pass over the pixel's bin (see
@@ -456,10 +453,6 @@ float visibleFraction(int shadowType, out int heldBy) {
   bool seeksHolder = shadowType != SHADOW_SOLID && holderFirst < 0;
   for (int i = 0; i < binCount; i++) {
     ivec2 records = recordsOfEntry(i);
-    if (records.x < 0) {
-      i = lastOfList(i);
-      continue;
-    }
     for (int record = records.x; record <= records.y; record++) {
 #ifdef SHADOW_STATISTICS
       visitedRecords++;
