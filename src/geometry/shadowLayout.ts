@@ -91,8 +91,21 @@ export function pseudoAngle(x: number, y: number): number {
   return x < 0 ? 2 - p : y < 0 ? 4 + p : p;
 }
 
+/**
+ * Tiles per side of a shadowed point light's grid (see `LightTiles`): its filed bounds cut into
+ * TILE_GRID² tiles, whose classes are a row of TILE_GRID² bytes of the tile classes texture (R8, one
+ * row per light, the row of its bins), tile (i, j) at `j × TILE_GRID + i`.
+ */
+export const TILE_GRID = 32;
+/**
+ * A tile's class, what the light pass draws it with: nothing (outside the light's reach, or dark
+ * where the shadows keep nothing), the plain light program (lit; dark with the colour the shadows
+ * keep), or the exact shadow program.
+ */
+export const TILE_CLASSES = { outside: 0, lit: 1, dark: 2, exact: 3 } as const;
+
 /** The layout constants the shader reads, as `#define`s. */
 export const SHADOW_DEFINES: Readonly<Record<string, number>> = {
-  RECORD_TEXELS, TEXTURE_WIDTH, RECORDS_PER_ROW, BIN_COUNT, ENTRY_MAX_RECORDS, TAG_EDGE_BITS,
+  RECORD_TEXELS, TEXTURE_WIDTH, RECORDS_PER_ROW, BIN_COUNT, ENTRY_MAX_RECORDS, TAG_EDGE_BITS, TILE_GRID,
   SHADOW_SOLID: SHADOW_TYPE_CODES.solid, SHADOW_ILLUMINATED: SHADOW_TYPE_CODES.illuminated, SHADOW_OCCLUDED: SHADOW_TYPE_CODES.occluded,
 };

@@ -1,0 +1,152 @@
+import { describe, expect, it } from 'vitest';
+import { LightTiles } from '../../src/geometry/LightTiles';
+import { TILE_CLASSES, TILE_GRID } from '../../src/geometry/shadowLayout';
+import { ShadowGeometry } from '../../src/geometry/ShadowGeometry';
+import { Hull } from '../../src/index';
+import { createRandom } from '../reference/randomScenes';
+import { diskSamples, shareOfSamplesSeen } from '../reference/softShadowReference';
+import { box, type Point } from '../reference/scenes';
+
+/**
+ * The tile classes against disk sampling, independent of the classification's geometry: every
+ * point of a lit tile (corners, edges and inside, 5×5 per tile) sees every disk sample, every point
+ * of a dark tile outside the hulls sees none. Samples: 1,024 per disk, plus its rim (the
+ * tangent points a lit tile's corner may graze).
+ */
+const SAMPLES_PER_SIDE = 3;
+
+interface Case {
+  hulls: Point[][];
+  centre: Point;
+  radius: number;
+  reach: number;
+  solid: boolean;
+}
+
+function classify({ hulls, centre, radius, reach, solid }: Case): { classes: Uint8Array; bounds: Float64Array } {
+  const geometry = new ShadowGeometry();
+  const made = hulls.map((points) => new Hull(points));
+  geometry.update(made);
+  const indices = Int32Array.from(made.keys());
+  for (const i of indices) geometry.prepare(i);
+  const tiles = new LightTiles();
+  const bounds = Float64Array.of(centre[0] - reach, centre[1] - reach, centre[0] + reach, centre[1] + reach);
+  tiles.beginLight(bounds, centre[0], centre[1], radius, reach, true, solid);
+  tiles.addStillHulls(geometry, indices, indices.length);
+  tiles.endLight(0);
+  return { classes: tiles.classes.slice(0, TILE_GRID * TILE_GRID), bounds };
+}
+
+function samplesWithRim(centre: Point, radius: number): Float64Array {
+  const inside = diskSamples(centre[0], centre[1], radius, 512);
+  const rim = new Float64Array(2 * 256);
+  for (let k = 0; k < 256; k++) {
+    rim[2 * k] = centre[0] + radius * Math.cos((2 * Math.PI * k) / 256);
+    rim[2 * k + 1] = centre[1] + radius * Math.sin((2 * Math.PI * k) / 256);
+  }
+  const all = new Float64Array(inside.length + rim.length);
+  all.set(inside);
+  all.set(rim, inside.length);
+  return all;
+}
+
+function edgesOf(hulls: Point[][]): Float64Array {
+  const edges: number[] = [];
+  for (const points of hulls) {
+    for (let k = 0; k < points.length; k++) edges.push(...points[k], ...points[(k + 1) % points.length]);
+  }
+  return Float64Array.from(edges);
+}
+
+function insideAny(hulls: Point[][], x: number, y: number): boolean {
+  return hulls.some((points) => {
+    let inside = false;
+    for (let i = 0, j = points.length - 1; i < points.length; j = i++) {
+      const [xi, yi] = points[i], [xj, yj] = points[j];
+      if ((yi > y) !== (yj > y) && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) inside = !inside;
+    }
+    return inside;
+  });
+}
+
+/** Wrong tiles of `c`'s classification, and how many tiles of each class it has. */
+function check(c: Case): { wrong: string[]; counts: number[] } {
+  const { classes, bounds } = classify(c);
+  const samples = samplesWithRim(c.centre, Math.max(c.radius, 1e-3));
+  const edges = edgesOf(c.hulls);
+  const tw = (bounds[2] - bounds[0]) / TILE_GRID, th = (bounds[3] - bounds[1]) / TILE_GRID;
+  const wrong: string[] = [];
+  const counts = [0, 0, 0, 0];
+  for (let j = 0; j < TILE_GRID; j++) {
+    for (let i = 0; i < TILE_GRID; i++) {
+      const value = classes[j * TILE_GRID + i];
+      counts[value]++;
+      if (value !== TILE_CLASSES.lit && value !== TILE_CLASSES.dark) continue;
+      for (let a = 0; a < SAMPLES_PER_SIDE; a++) {
+        for (let b = 0; b < SAMPLES_PER_SIDE; b++) {
+          const x = bounds[0] + (i + a / (SAMPLES_PER_SIDE - 1)) * tw, y = bounds[1] + (j + b / (SAMPLES_PER_SIDE - 1)) * th;
+          if (value === TILE_CLASSES.dark && insideAny(c.hulls, x, y)) continue;
+          const seen = shareOfSamplesSeen(x, y, samples, edges, edges.length);
+          if (value === TILE_CLASSES.lit && seen < 1) wrong.push(`lit tile (${i}, ${j}) at (${x.toFixed(2)}, ${y.toFixed(2)}) sees ${seen}`);
+          if (value === TILE_CLASSES.dark && seen > 0) wrong.push(`dark tile (${i}, ${j}) at (${x.toFixed(2)}, ${y.toFixed(2)}) sees ${seen}`);
+        }
+      }
+    }
+  }
+  return { wrong, counts };
+}
+
+/** A convex polygon of 3–6 corners around (x, y), counter-clockwise in x-right, y-up axes. */
+function convexAround(random: () => number, x: number, y: number, size: number): Point[] {
+  const count = 3 + Math.floor(random() * 4);
+  const points: Point[] = [];
+  for (let k = 0; k < count; k++) {
+    const angle = ((k + (random() - 0.5) * 0.5) / count) * 2 * Math.PI;
+    points.push([x + size * Math.cos(angle), y + size * Math.sin(angle)]);
+  }
+  return points;
+}
+
+describe('LightTiles', () => {
+  it('classifies a box before a light: lit beside it, dark behind it, exact in its penumbra', () => {
+    const c: Case = { hulls: [box(120, 90, 20, 20)], centre: [100, 100], radius: 4, reach: 80, solid: true };
+    const { wrong, counts } = check(c);
+    expect(wrong).toEqual([]);
+    expect(counts[TILE_CLASSES.lit]).toBeGreaterThan(500);
+    expect(counts[TILE_CLASSES.dark]).toBeGreaterThan(20);
+    expect(counts[TILE_CLASSES.outside]).toBeGreaterThan(150);
+  });
+
+  it('never calls a tile lit or dark wrongly in random scenes (disks of radius 0 to 30, walls, posts, overlapping disks)', () => {
+    const random = createRandom(7);
+    let lit = 0, dark = 0;
+    for (let scene = 0; scene < 30; scene++) {
+      const centre: Point = [200, 200];
+      const radius = scene % 5 === 0 ? 0 : random() * 30;
+      const hulls: Point[][] = [];
+      for (let k = 0, n = 1 + Math.floor(random() * 6); k < n; k++) {
+        const x = 200 + (random() - 0.5) * 240, y = 200 + (random() - 0.5) * 240;
+        if (k % 3 === 2) hulls.push(box(x, y, 2 + random() * 4, 30 + random() * 60)); // a thin wall
+        else hulls.push(convexAround(random, x, y, 3 + random() * 20));
+      }
+      const { wrong, counts } = check({ hulls, centre, radius, reach: 150, solid: scene % 2 === 0 });
+      expect(wrong.slice(0, 3), `scene ${scene}`).toEqual([]);
+      lit += counts[TILE_CLASSES.lit];
+      dark += counts[TILE_CLASSES.dark];
+    }
+    // Not everything exact: the classification must decide most of the light's area.
+    expect(lit).toBeGreaterThan(30 * 300);
+    expect(dark).toBeGreaterThan(30 * 5);
+  });
+
+  it('keeps dark tiles with a hull in them exact for a light that lights the inside of hulls', () => {
+    const hulls = [box(120, 80, 10, 40), box(160, 95, 8, 8)];
+    const solid = classify({ hulls, centre: [100, 100], radius: 3, reach: 90, solid: true }).classes;
+    const lit = classify({ hulls, centre: [100, 100], radius: 3, reach: 90, solid: false }).classes;
+    // The crate's tile behind the wall: dark for a Solid light, exact otherwise.
+    const bounds = [10, 10];
+    const tile = Math.floor((99 - bounds[1]) / (180 / TILE_GRID)) * TILE_GRID + Math.floor((164 - bounds[0]) / (180 / TILE_GRID));
+    expect(solid[tile]).toBe(TILE_CLASSES.dark);
+    expect(lit[tile]).toBe(TILE_CLASSES.exact);
+  });
+});
