@@ -1,8 +1,8 @@
 // Shared by the light passes: the light's values and its visible fraction. Built with SHADOWED for
 // lights with hulls in range (see the chunk shadow-visibility), and with NORMALS for a renderer with
 // normals: then it also writes the highlights at location 1 and weights the light by the surface's
-// normal (docs/normal-maps.md). The light's values come from the vertex stage (light.vert.glsl) as
-// flat varyings rather than uniforms read per fragment.
+// normal (docs/normal-maps.md). The light's values are uniforms, the pixel's come from the vertex
+// stage (light.vert.glsl).
 in vec2 v_world; // the pixel's world position
 #ifdef SHADOWED
 #include "shadow-visibility"
@@ -10,29 +10,29 @@ in vec2 v_world; // the pixel's world position
 
 in vec2 v_fromLight; // from the light's position to the pixel, in ranges
 in vec2 v_uv;
-flat in vec3 v_color;
+uniform vec3 u_lightColor; // colour × intensity
 layout(location = 0) out vec4 o_light;
 
-flat in vec2 v_falloff; // the curve's code (FALLOFF_LINEAR, …: src/passes/lightLayout.ts), the inverse-square core in ranges
+uniform vec2 u_falloff; // the curve's code (FALLOFF_LINEAR, …: src/passes/lightLayout.ts), the inverse-square core in ranges
 
 // The light's strength by distance (Falloff in src/scene/lights.ts, and falloffAt there on the
 // CPU): 1 at the centre, 0 from the range on. A branch on a value the whole draw shares.
 float distanceFalloff() {
   float t = length(v_fromLight);
-  int curve = int(v_falloff.x);
+  int curve = int(u_falloff.x);
   if (curve == FALLOFF_SMOOTH) {
     float window = max(0.0, 1.0 - t * t);
     return window * window;
   }
   if (curve == FALLOFF_INVERSE_SQUARE) {
-    float t2 = t * t, window = max(0.0, 1.0 - t2 * t2), core2 = v_falloff.y * v_falloff.y;
+    float t2 = t * t, window = max(0.0, 1.0 - t2 * t2), core2 = u_falloff.y * u_falloff.y;
     return window * window * core2 / (core2 + t2);
   }
   return max(0.0, 1.0 - t);
 }
 
 #ifdef SHADOWED
-flat in vec3 v_shadowKept;
+uniform vec3 u_shadowKept; // the fraction of each channel a pixel in full shadow keeps (Light.writeShadowKept)
 #endif
 
 #ifdef NORMALS
@@ -41,7 +41,7 @@ uniform sampler2D u_normals;  // the scene's normals, premultiplied by coverage 
 uniform sampler2D u_material; // specular, shininess code, emissive, coverage, premultiplied
 uniform vec3 u_surfaceFrame;  // 1 / lightmap width, 1 / lightmap height, 1 when the surface's row 0 is the top of the view
 // Positional lights: position xy and height, w 0. Directional: the unit vector towards the light, w 1.
-flat in vec4 v_towardsLight;
+uniform vec4 u_towardsLight;
 
 // The surface's texel under this lightmap pixel: the surface covers the same view at its own size
 // (the renderer's), so with lightmapScale below 1 one surface pixel stands for several. Fetched
@@ -62,7 +62,7 @@ void writeThroughSurface(vec3 light) {
   vec3 normal = coverage > 0.0 ? encodedNormal.rgb / coverage * 2.0 - 1.0 : vec3(0.0, 0.0, 1.0);
   float normalLength = length(normal);
   normal = normalLength > 1e-4 ? normal / normalLength : vec3(0.0, 0.0, 1.0);
-  vec3 towardsLight = v_towardsLight.w > 0.5 ? v_towardsLight.xyz : normalize(vec3(v_towardsLight.xy - v_world, v_towardsLight.z));
+  vec3 towardsLight = u_towardsLight.w > 0.5 ? u_towardsLight.xyz : normalize(vec3(u_towardsLight.xy - v_world, u_towardsLight.z));
   float diffuse = max(dot(normal, towardsLight), 0.0);
   o_light = vec4(light * mix(1.0, diffuse, coverage), 0.0);
   float highlight = 0.0;
@@ -84,7 +84,7 @@ void writeThroughSurface(vec3 light) {
 // additive blending leaves the lightmap's alpha untouched.
 void writeLight(float strength) {
 #ifdef SHADOWED
-  vec3 passes = mix(v_shadowKept, vec3(1.0), strength > 0.0 ? shadowVisibility() : 0.0);
+  vec3 passes = mix(u_shadowKept, vec3(1.0), strength > 0.0 ? shadowVisibility() : 0.0);
 #else
   vec3 passes = vec3(1.0);
 #endif
@@ -98,8 +98,8 @@ void writeLight(float strength) {
 #endif
   o_light = strength > 0.0 ? vec4(1.0, visited, visited == 0.0 ? 1.0 : 0.0, past) : vec4(0.0);
 #elif defined(NORMALS)
-  writeThroughSurface(v_color * (strength * passes));
+  writeThroughSurface(u_lightColor * (strength * passes));
 #else
-  o_light = vec4(v_color * (strength * passes), 0.0);
+  o_light = vec4(u_lightColor * (strength * passes), 0.0);
 #endif
 }

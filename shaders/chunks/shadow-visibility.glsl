@@ -27,24 +27,24 @@
 // light it takes a second pass, lit as from inside that hull (the holder): of the holder's records,
 // only their outline edges facing the pixel hide anything (see seenFromHolder).
 //
-// Needs: v_world (the pixel's world position), v_shadow (light centre xy, disk radius, bin row),
-// v_binning (how the bins were filed, below) and v_shadowType (SHADOW_SOLID, SHADOW_ILLUMINATED or
+// Needs: v_world (the pixel's world position), u_shadow (light centre xy, disk radius, bin row),
+// u_binning (how the bins were filed, below) and u_shadowType (SHADOW_SOLID, SHADOW_ILLUMINATED or
 // SHADOW_OCCLUDED).
 uniform highp sampler2D u_records;
 uniform highp sampler2D u_recordTags;
 uniform highp sampler2D u_entries;
 uniform highp sampler2D u_bins;
 
-flat in vec4 v_shadow;
-flat in float v_shadowType;
-// A light's bins were filed for a disk of radius v_binning.z ≥ r around v_binning.xy, which holds
+uniform vec4 u_shadow; // position xy, disk radius, row of the light's shadow bins
+uniform float u_shadowType; // how the light treats the inside of hulls: SHADOW_SOLID, … (src/geometry/shadowLayout.ts)
+// A light's bins were filed for a disk of radius u_binning.z ≥ r around u_binning.xy, which holds
 // the light's disk (a moving light keeps its filing while its disk stays inside, see FramePlan): bins
-// and distance buckets (v_binning.w wide) are taken from that centre, the shadows from the light's
+// and distance buckets (u_binning.w wide) are taken from that centre, the shadows from the light's
 // own disk.
-flat in vec4 v_binning;
+uniform vec4 u_binning;
 #ifdef DIRECTIONAL
-// A directional light: v_shadow holds the unit direction it travels, sin α (α its angular radius)
-// and its row; v_binning its strips (DirectionalStrips in src/geometry/ShadowBins.ts): the least
+// A directional light: u_shadow holds the unit direction it travels, sin α (α its angular radius)
+// and its row; u_binning its strips (DirectionalStrips in src/geometry/ShadowBins.ts): the least
 // coordinate across the travel, a strip's width, where the first distance bucket starts along it,
 // and a bucket's width.
 vec2 travel;
@@ -170,7 +170,7 @@ int binFirst;
 int stillCount;
 int movingFirst;
 int binCount;
-// The pixel's distance from the centre its light's bins were filed around (v_binning.xy).
+// The pixel's distance from the centre its light's bins were filed around (u_binning.xy).
 float distanceToBinOrigin;
 
 // Whether the last entry recordsOfEntry read holds a whole convex hull's fan of records.
@@ -185,12 +185,12 @@ bool seekingHolders;
 ivec2 recordsOfEntry(inout int i) {
   vec4 entry = texelAt(u_entries, i < stillCount ? binFirst + i : movingFirst + i);
   vec2 hull = entry.yz - pixel, toCentre = centre - pixel;
-  float hullRadius = entry.w, bucketWidth = v_binning.w;
+  float hullRadius = entry.w, bucketWidth = u_binning.w;
   bool farther;
 #ifdef DIRECTIONAL
   // The strip's list is ordered by buckets of where each hull starts along the travel: one bucket
   // beyond the pixel, this hull and all after it lie wholly downstream of it.
-  float hullStart = dot(entry.yz, travel) - hullRadius - v_binning.z, pixelAlong = dot(pixel, travel) - v_binning.z;
+  float hullStart = dot(entry.yz, travel) - hullRadius - u_binning.z, pixelAlong = dot(pixel, travel) - u_binning.z;
   farther = pixelAlong < (floor(hullStart / bucketWidth) - 1.0) * bucketWidth;
   // The hull must meet the wedge of directions within α of the light's, upstream of the pixel:
   // within its radius of the axis widened by tan α per unit upstream (ρ / cos α ≤ ρ (1 + tan α)).
@@ -202,8 +202,8 @@ ivec2 recordsOfEntry(inout int i) {
   // farther than the pixel and the filed disk (radius r') cannot reach a segment between them. The
   // list is ordered by distance buckets from that centre (ShadowBins), so one bucket beyond the
   // pixel, all the rest are too.
-  float filedNearest = length(entry.yz - v_binning.xy) - hullRadius;
-  farther = filedNearest > v_binning.z + bucketWidth && distanceToBinOrigin < (floor(filedNearest / bucketWidth) - 1.0) * bucketWidth;
+  float filedNearest = length(entry.yz - u_binning.xy) - hullRadius;
+  farther = filedNearest > u_binning.z + bucketWidth && distanceToBinOrigin < (floor(filedNearest / bucketWidth) - 1.0) * bucketWidth;
   float nearest = length(entry.yz - centre) - hullRadius;
   // The hull must meet the region between the pixel and the disk, which lies within r of the
   // segment from the pixel to the centre and nearer to the pixel than the disk's far side.
@@ -414,28 +414,28 @@ void beginShadow() {
 #ifdef DIRECTIONAL
   // A disk at infinity of angular radius α is, for chord heights, the disk of radius sin α at unit
   // distance towards the light: a direction θ off the light's has height sin θ / sin α either way.
-  travel = v_shadow.xy;
-  radius = max(v_shadow.z, MIN_SINE);
+  travel = u_shadow.xy;
+  radius = max(u_shadow.z, MIN_SINE);
   centre = pixel - travel;
   distanceToLight = 1.0;
   toLight = -travel / radius;
   distanceInRadii = 1.0 / radius;
   insideDisk = false;
-  float strip = floor((cross2(travel, pixel) - v_binning.x) / v_binning.y);
+  float strip = floor((cross2(travel, pixel) - u_binning.x) / u_binning.y);
   int bin = int(clamp(strip, 0.0, float(BIN_COUNT - 1)));
 #else
-  centre = v_shadow.xy;
-  radius = max(v_shadow.z, MIN_RADIUS);
+  centre = u_shadow.xy;
+  radius = max(u_shadow.z, MIN_RADIUS);
   vec2 c = centre - pixel;
   distanceToLight = length(c);
   toLight = c / radius;
   distanceInRadii = distanceToLight / radius;
   insideDisk = distanceInRadii <= 1.0;
-  vec2 fromBinOrigin = pixel - v_binning.xy;
+  vec2 fromBinOrigin = pixel - u_binning.xy;
   distanceToBinOrigin = length(fromBinOrigin);
   int bin = min(int(pseudoAngle(fromBinOrigin) * (float(BIN_COUNT) / 4.0)), BIN_COUNT - 1);
 #endif
-  vec4 binEntries = texelFetch(u_bins, ivec2(bin, int(v_shadow.w)), 0);
+  vec4 binEntries = texelFetch(u_bins, ivec2(bin, int(u_shadow.w)), 0);
   binFirst = int(binEntries.x);
   stillCount = int(binEntries.y);
   movingFirst = int(binEntries.z) - stillCount;
@@ -490,7 +490,7 @@ float visibleFraction(int shadowType, out int heldBy) {
 // a hull takes a second pass as from inside it (one call site in a loop: the pass is inlined once).
 float shadowVisibility() {
   beginShadow();
-  int shadowType = int(v_shadowType + 0.5);
+  int shadowType = int(u_shadowType + 0.5);
   holderFirst = -1;
   float visible = 1.0;
   for (int pass = 0; pass < 2; pass++) {

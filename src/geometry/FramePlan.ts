@@ -1,11 +1,12 @@
 import { mat4, type ReadonlyMat4 } from 'gl-matrix';
 import type { Hull } from '../scene/Hull';
-import { DirectionalLight, type Light } from '../scene/lights';
+import { DirectionalLight, type Light, type ShadowType } from '../scene/lights';
 import { HullGrid } from './HullGrid';
+import { LightTiles } from './LightTiles';
 import { isInsidePolygon } from './polygon';
 import { scissorOf } from './scissor';
 import { type BinSpan, bucketWidthOf, DirectionalStrips, DISTANCE_BUCKETS, grow, ShadowBins } from './ShadowBins';
-import { BIN_COUNT, MOVING_LIST, STATIC_LIST } from './shadowLayout';
+import { BIN_COUNT, MOVING_LIST, STATIC_LIST, TILE_GRID } from './shadowLayout';
 import type { ShadowGeometry } from './ShadowGeometry';
 
 /** What the passes need to draw one light: its quad, scissor, and the row of its shadow bins. */
@@ -21,8 +22,10 @@ export class LightDraw {
   reach = 0;
   /** Number of hulls in range that shadow this light (in both its lists). */
   hullCount = 0;
-  /** The light's row in the plan's `bins`, when `hullCount > 0`. */
+  /** The light's row in the plan's `bins` and its `tiles`, when `hullCount > 0`. */
   binRow = 0;
+  /** A shadowed point light's tiles of each class (indexed by TILE_CLASSES), when `hullCount > 0`. */
+  readonly tileCounts = new Int32Array(4);
   /** The light's filing, kept from frame to frame. */
   filing!: LightFiling;
   /** A directional light's strips over the view (its bins). */
@@ -52,6 +55,8 @@ export class LightDraw {
 export class FramePlan {
   /** The records in range of each shadowed light, filed into angular bins. */
   readonly bins = new ShadowBins();
+  /** The tile classes of each shadowed light but the directional ones, in the rows of its bins. */
+  readonly tiles = new LightTiles();
   readonly draws: LightDraw[] = [];
   drawCount = 0;
   /** Lights filed anew by the last {@link FramePlan.build} (the others drawn kept their filing). */
@@ -103,6 +108,7 @@ export class FramePlan {
     this.drawCount = 0;
     this.filedCount = 0;
     const crowded = this.bins.beginFrame();
+    this.tiles.beginFrame();
     if (geometry.layoutVersion !== this.layoutVersion) {
       this.forgetFilings();
       this.forgetHullChanges(geometry, hulls.length);
@@ -127,6 +133,7 @@ export class FramePlan {
       if (filing.skipped || !this.fileMovingHulls(draw, hulls, geometry)) continue;
       draw.hullCount = filing.hullCount + filing.movingCount;
       draw.binRow = filing.row;
+      if (draw.hullCount > 0 && !(draw.light instanceof DirectionalLight)) this.tiles.writeCounts(filing.row, draw.tileCounts);
       this.draws[i] = this.draws[this.drawCount];
       this.draws[this.drawCount++] = draw;
     }
@@ -348,7 +355,16 @@ export class FramePlan {
     if (count < 0) return false;
     filing.hullCount = count;
     this.bins.endLight(geometry, filing.stillSpan);
+    this.beginTiles(filing);
+    this.tiles.addStillHulls(geometry, this.grid.found, count);
+    this.tiles.endLight(filing.row);
     return true;
+  }
+
+  /** Starts classifying the tiles of a point light's filing (see `LightTiles`): its filed bounds, disk and reach. */
+  private beginTiles(filing: LightFiling): void {
+    const light = filing.light;
+    this.tiles.beginLight(filing.filedBounds, filing.originX, filing.originY, filing.filedRadius, filing.filedReach, light.isConfinedToRangeDisk(), light.shadowType === 'solid');
   }
 
   /**
@@ -368,8 +384,14 @@ export class FramePlan {
         return false;
       }
     }
-    if (count > 0) this.bins.endLight(geometry, filing.movingSpan);
-    else if (filing.movingCount !== 0) this.bins.emptyList(filing.movingSpan);
+    if (count > 0) {
+      this.bins.endLight(geometry, filing.movingSpan);
+      this.beginTiles(filing);
+      this.tiles.addMovingHulls(filing.row, geometry, this.movingGrid.found, count);
+    } else if (filing.movingCount !== 0) {
+      this.bins.emptyList(filing.movingSpan);
+      if (!(light instanceof DirectionalLight)) this.tiles.restoreKept(filing.row);
+    }
     filing.movingCount = count;
     return true;
   }
@@ -616,6 +638,7 @@ class LightFiling {
   private checkedY = 0;
   private castsShadows = false;
   private shadowLayers = 0;
+  private shadowType: ShadowType = 'solid';
   private readonly ignoredHulls: Hull[] = [];
 
   constructor(readonly light: Light, readonly row: number) {
@@ -646,6 +669,7 @@ class LightFiling {
     own[3] = b[3] + margin;
     this.castsShadows = light.castsShadows;
     this.shadowLayers = light.shadowLayers;
+    this.shadowType = light.shadowType;
     this.ignoredHulls.length = 0;
     light.ignoredHulls.forEach(this.addIgnoredHull, this);
   }
@@ -657,8 +681,8 @@ class LightFiling {
    */
   matches(draw: LightDraw): boolean {
     const light = this.light;
-    if (light instanceof DirectionalLight || light.castsShadows !== this.castsShadows
-      || light.shadowLayers !== this.shadowLayers || !this.sameIgnoredHulls()) return false;
+    if (light instanceof DirectionalLight || light.castsShadows !== this.castsShadows || light.shadowLayers !== this.shadowLayers
+      || light.shadowType !== this.shadowType || !this.sameIgnoredHulls()) return false;
     const dx = light.position[0] - this.originX, dy = light.position[1] - this.originY;
     if (this.skipped) return dx === 0 && dy === 0;
     const moved = Math.sqrt(dx * dx + dy * dy), b = draw.bounds, own = this.filedBounds;
@@ -689,6 +713,15 @@ class LightFiling {
     out[1] = this.originY;
     out[2] = this.filedRadius;
     out[3] = this.bucketWidth;
+  }
+
+  /** Writes the tile grid's corner (least x and y) and a tile's width and height (the light pass's `u_tiles`): the filed bounds cut into TILE_GRID² tiles. */
+  writeTiles(out: Float32Array): void {
+    const b = this.filedBounds;
+    out[0] = b[0];
+    out[1] = b[1];
+    out[2] = (b[2] - b[0]) / TILE_GRID;
+    out[3] = (b[3] - b[1]) / TILE_GRID;
   }
 
   /** Whether `light.ignoredHulls` holds the hulls it held when filed: as many, and each of those. */

@@ -3,6 +3,8 @@ import type { ShadowGeometry } from './ShadowGeometry';
 
 /** Tiles per light. */
 const TILE_COUNT = TILE_GRID * TILE_GRID;
+/** The classes of TILE_CLASSES, 0 to 3. */
+const CLASS_COUNT = 4;
 /**
  * Slack of the geometric tests, relative to the scale of the light's box: float32 rounding in the
  * shader is about 1e-7 of the coordinates, so a pixel this far inside a region is classified as
@@ -46,6 +48,8 @@ export class LightTiles {
   dirtyRows = new Uint8Array(1);
   /** Rows of TILE_COUNT classes from the still hulls alone, one per filing row. */
   private kept = new Uint8Array(TILE_COUNT);
+  /** Per row, its tiles of each class. */
+  private counts = new Int32Array(CLASS_COUNT);
   /** Per tile of the light being classified: it may be shadowed, it is dark, a record lies in it. */
   private readonly shadowed = new Uint8Array(TILE_COUNT);
   private readonly dark = new Uint8Array(TILE_COUNT);
@@ -84,10 +88,9 @@ export class LightTiles {
     this.dirtyRows.fill(0);
   }
 
-  /** Tiles of each class in `row` (what the light pass draws), into `out` indexed by class. */
-  countClasses(row: number, out: Float64Array): void {
-    const classes = this.classes;
-    for (let i = row * TILE_COUNT, end = i + TILE_COUNT; i < end; i++) out[classes[i]]++;
+  /** Writes the tiles of each class in `row` (the light pass skips a class it has none of) into `out`, indexed by class. */
+  writeCounts(row: number, out: Int32Array): void {
+    for (let c = 0; c < CLASS_COUNT; c++) out[c] = this.counts[row * CLASS_COUNT + c];
   }
 
   /**
@@ -143,8 +146,17 @@ export class LightTiles {
 
   /** Sets `row`'s classes to its kept ones (a light whose moving hulls left it), marking it dirty. */
   restoreKept(row: number): void {
+    this.ensureRow(row);
     this.classes.set(this.kept.subarray(row * TILE_COUNT, (row + 1) * TILE_COUNT), row * TILE_COUNT);
     this.dirtyRows[row] = 1;
+    this.count(row);
+  }
+
+  /** Counts the tiles of each class in `row`. */
+  private count(row: number): void {
+    const classes = this.classes, counts = this.counts, at = row * CLASS_COUNT;
+    for (let c = 0; c < CLASS_COUNT; c++) counts[at + c] = 0;
+    for (let i = row * TILE_COUNT, end = i + TILE_COUNT; i < end; i++) counts[at + classes[i]]++;
   }
 
   /**
@@ -170,6 +182,7 @@ export class LightTiles {
       const value = classes[at + tile];
       if ((value === TILE_CLASSES.lit && this.shadowed[tile] !== 0) || (value === TILE_CLASSES.dark && this.occupied[tile] !== 0)) classes[at + tile] = TILE_CLASSES.exact;
     }
+    this.count(row);
   }
 
   private ensureRow(row: number): void {
@@ -181,9 +194,11 @@ export class LightTiles {
     classes.set(this.classes);
     this.kept = kept;
     this.classes = classes;
-    const dirty = new Uint8Array(size / TILE_COUNT);
+    const dirty = new Uint8Array(size / TILE_COUNT), counts = new Int32Array((size / TILE_COUNT) * CLASS_COUNT);
     dirty.set(this.dirtyRows);
+    counts.set(this.counts);
     this.dirtyRows = dirty;
+    this.counts = counts;
   }
 
   /** Whether tile (i, j) lies wholly beyond the reach of the filing's centre. */

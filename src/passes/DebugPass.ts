@@ -49,7 +49,7 @@ export class DebugPass {
     gl.uniform4f(quadUniforms.u_color, 1, 1, 0, 1);
     for (let i = 0; i < drawCount; i++) {
       gl.uniform2fv(quadUniforms.u_quad, draws[i].quad);
-      this.shapes.drawQuad(gl.LINE_LOOP);
+      this.shapes.outlineQuad();
     }
   }
 

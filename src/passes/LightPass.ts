@@ -3,7 +3,7 @@ import type { LightDraw } from '../geometry/FramePlan';
 import { createPrograms, deletePrograms, type Program, type ProgramSources } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import type { LightShapes } from '../gl/LightShapes';
-import { SHADOW_TYPE_CODES } from '../geometry/shadowLayout';
+import { SHADOW_TYPE_CODES, TILE_CLASSES } from '../geometry/shadowLayout';
 import { FALLOFF_CODES } from './lightLayout';
 import { DirectionalLight, Spotlight, TexturedLight, type LightKind } from '../scene/lights';
 import { lightStages, shaderSources, type LightStages } from './shaders';
@@ -24,17 +24,24 @@ export interface Surface {
 /**
  * Light pass: owns the lightmap (RGBA16F where the context can render to it, so overlapping lights
  * go above 1), clears it to the ambient colour, and adds each light weighted by the visible
- * fraction of its disk, which each fragment of a light with hulls in range computes from the
- * shadow textures (see the chunk shadow-visibility): one fragment per light pixel. A light
- * confined to its range is drawn as the polygon around its range disk, the others as their quad.
+ * fraction of its disk: one fragment per light pixel. A light with no hull in range is drawn as the
+ * polygon around its range disk when confined to it, else as its quad, with the plain program. A
+ * point light, spotlight or textured light with hulls in range is drawn as the tiles of its grid
+ * (see `LightTiles`): the lit tiles with the plain program, the dark ones with the plain program in
+ * the colour its shadows keep (not at all when they keep none), the others with the exact program,
+ * which computes the visible fraction from the shadow textures (see the chunk shadow-visibility). A
+ * directional light with hulls is drawn as its quad with the exact program.
  *
  * With normals the lightmap has a second attachment for the highlights, and the programs weight
  * each light by the surface's normal and material (docs/normal-maps.md); without, neither exists.
  */
 export class LightPass {
   readonly lightmap: RenderTarget;
-  /** Per kind of light, its program for a light with no hull in range and for one with some. */
-  private readonly programs: Record<LightKind, Record<'unshadowed' | 'shadowed', Program>>;
+  /**
+   * Per kind of light, its programs: for a light with no hull in range (its shape), and for one
+   * with some: its lit and dark tiles (plain), its other tiles (exact; a directional light's quad).
+   */
+  private readonly programs: Record<LightKind, LightPrograms>;
   private readonly programList: readonly Program[];
   private readonly clearValue = new Float32Array(4);
   // Uniform values go through reused typed arrays: doubles passed to a GL call one by one are boxed
@@ -49,6 +56,9 @@ export class LightPass {
   private readonly coneHalfAngle = new Float32Array(1);
   private readonly coneDecay = new Float32Array(1);
   private readonly towardsLight = new Float32Array(4);
+  private readonly darkColor = new Float32Array(3);
+  private readonly tiles = new Float32Array(4);
+  private readonly tileDraw = new Float32Array(2);
   private readonly surfaceFrame = new Float32Array(3);
   private readonly clearZero = new Float32Array(4);
 
@@ -69,13 +79,15 @@ export class LightPass {
         ...sourcesOf('textured', 'textured light', lightStages(shaderSources.lightTexturedFragment, normals)),
         ...sourcesOf('directional', 'directional light', lightStages(shaderSources.lightDirectionalFragment, normals)),
       });
-      const programsOf = (kind: LightKind) => ({ unshadowed: made[`${kind} unshadowed`], shadowed: made[`${kind} shadowed`] });
+      const programsOf = (kind: LightKind): LightPrograms => ({
+        unshadowed: made[`${kind} unshadowed`], plainTiles: made[`${kind} plain tiles`] ?? null, shadowed: made[`${kind} shadowed`],
+      });
       this.programs = { point: programsOf('point'), spot: programsOf('spot'), textured: programsOf('textured'), directional: programsOf('directional') };
     } catch (error) {
       this.lightmap.dispose();
       throw error;
     }
-    this.programList = Object.values(this.programs).flatMap((programs) => Object.values(programs));
+    this.programList = Object.values(this.programs).flatMap((programs) => Object.values(programs).filter((program): program is Program => program !== null));
     for (const program of this.programList) {
       gl.useProgram(program.handle);
       const uniforms = program.uniforms;
@@ -83,6 +95,7 @@ export class LightPass {
       if (uniforms.u_recordTags) gl.uniform1i(uniforms.u_recordTags, ShadowUnits.recordTags);
       if (uniforms.u_bins) gl.uniform1i(uniforms.u_bins, ShadowUnits.bins);
       if (uniforms.u_entries) gl.uniform1i(uniforms.u_entries, ShadowUnits.entries);
+      if (uniforms.u_tileClasses) gl.uniform1i(uniforms.u_tileClasses, ShadowUnits.tileClasses);
       if (uniforms.u_cookie) gl.uniform1i(uniforms.u_cookie, COOKIE_UNIT);
       if (uniforms.u_normals) gl.uniform1i(uniforms.u_normals, SurfaceUnits.normals);
       if (uniforms.u_material) gl.uniform1i(uniforms.u_material, SurfaceUnits.material);
@@ -146,17 +159,44 @@ export class LightPass {
       gl.activeTexture(gl.TEXTURE0 + COOKIE_UNIT);
       gl.bindTexture(gl.TEXTURE_2D, light.texture);
     }
-    this.drawWith(draw.hullCount > 0 ? programs.shadowed : programs.unshadowed, draw);
+    if (draw.hullCount === 0) {
+      this.setUniforms(programs.unshadowed, draw, this.lightColor);
+      if (light.isConfinedToRangeDisk()) this.shapes.drawDisk();
+      else this.shapes.drawQuad();
+    } else if (programs.plainTiles === null) {
+      this.setUniforms(programs.shadowed, draw, this.lightColor);
+      this.shapes.drawQuad();
+    } else {
+      draw.filing.writeTiles(this.tiles);
+      this.tileDraw[0] = draw.binRow;
+      const counts = draw.tileCounts, kept = this.shadowKept, dark = this.darkColor;
+      if (counts[TILE_CLASSES.lit] > 0) this.drawTiles(programs.plainTiles, draw, TILE_CLASSES.lit, this.lightColor);
+      if (counts[TILE_CLASSES.dark] > 0 && (kept[0] > 0 || kept[1] > 0 || kept[2] > 0)) {
+        for (let c = 0; c < 3; c++) dark[c] = this.lightColor[c] * kept[c];
+        this.drawTiles(programs.plainTiles, draw, TILE_CLASSES.dark, dark);
+      }
+      if (counts[TILE_CLASSES.exact] > 0) this.drawTiles(programs.shadowed, draw, TILE_CLASSES.exact, this.lightColor);
+    }
   }
 
-  /** Draws the light's shape with `program`, setting its uniforms from the arrays `writeLightUniforms` filled. */
-  private drawWith(program: Program, draw: LightDraw): void {
+  /** Draws the light's tiles of class `tileClass` with `program` in `color`. */
+  private drawTiles(program: Program, draw: LightDraw, tileClass: number, color: Float32Array): void {
+    const uniforms = program.uniforms;
+    this.setUniforms(program, draw, color);
+    this.tileDraw[1] = tileClass;
+    this.gl.uniform4fv(uniforms.u_tiles, this.tiles);
+    this.gl.uniform2fv(uniforms.u_tileDraw, this.tileDraw);
+    this.shapes.drawTiles();
+  }
+
+  /** Makes `program` current and sets its uniforms from the arrays `writeLightUniforms` filled, the light's colour as `color`. */
+  private setUniforms(program: Program, draw: LightDraw, color: Float32Array): void {
     const gl = this.gl;
     const light = draw.light;
     const uniforms = program.uniforms;
     gl.useProgram(program.handle);
     gl.uniform2fv(uniforms.u_quad, draw.quad);
-    gl.uniform3fv(uniforms.u_lightColor, this.lightColor);
+    gl.uniform3fv(uniforms.u_lightColor, color);
     gl.uniform3fv(uniforms.u_light, this.lightPositionAndRange);
     if (uniforms.u_shadow) {
       gl.uniform4fv(uniforms.u_shadow, this.shadow);
@@ -165,14 +205,12 @@ export class LightPass {
     }
     if (uniforms.u_binning) gl.uniform4fv(uniforms.u_binning, this.binning);
     if (uniforms.u_falloff) gl.uniform2fv(uniforms.u_falloff, this.falloff);
-    if (this.normals) gl.uniform4fv(uniforms.u_towardsLight, this.towardsLight);
+    if (uniforms.u_towardsLight) gl.uniform4fv(uniforms.u_towardsLight, this.towardsLight);
     if (light instanceof Spotlight) {
       gl.uniform2fv(uniforms.u_direction, this.direction);
       gl.uniform1fv(uniforms.u_coneHalfAngle, this.coneHalfAngle);
       gl.uniform1fv(uniforms.u_coneDecay, this.coneDecay);
     }
-    if (light.isConfinedToRangeDisk()) this.shapes.drawDisk();
-    else this.shapes.drawQuad(gl.TRIANGLE_FAN);
   }
 
   /** Copies the light's colour, position, range and shadow values into the uniform arrays. */
@@ -234,10 +272,24 @@ export class LightPass {
   }
 }
 
-/** The sources of a kind's two programs, keyed `<kind> unshadowed` and `<kind> shadowed`. */
+/** A kind of light's programs (see `LightPass.programs`); a directional light has no tiles. */
+interface LightPrograms {
+  unshadowed: Program;
+  plainTiles: Program | null;
+  shadowed: Program;
+}
+
+/** The sources of a kind's programs, keyed `<kind> unshadowed`, `<kind> plain tiles` (but for a directional light) and `<kind> shadowed`. */
 function sourcesOf(kind: LightKind, name: string, stages: LightStages): Record<string, ProgramSources> {
+  if (kind === 'directional') {
+    return {
+      [`${kind} unshadowed`]: [name, stages.vertex, stages.unshadowed],
+      [`${kind} shadowed`]: [`${name} with shadows`, stages.vertex, stages.shadowed],
+    };
+  }
   return {
     [`${kind} unshadowed`]: [name, stages.vertex, stages.unshadowed],
-    [`${kind} shadowed`]: [`${name} with shadows`, stages.vertex, stages.shadowed],
+    [`${kind} plain tiles`]: [`${name}'s plain tiles`, stages.tiledVertex, stages.unshadowed],
+    [`${kind} shadowed`]: [`${name} with shadows`, stages.tiledVertex, stages.shadowed],
   };
 }

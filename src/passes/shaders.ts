@@ -13,7 +13,7 @@ import shadowBehind from '../../shaders/chunks/shadow-behind.glsl?raw';
 import shadowQuadrature from '../../shaders/chunks/shadow-quadrature.glsl?raw';
 import shadowVisibility from '../../shaders/chunks/shadow-visibility.glsl?raw';
 import surface from '../../shaders/surface.glsl?raw';
-import { SHADOW_DEFINES } from '../geometry/shadowLayout';
+import { SHADOW_DEFINES, TILE_GRID } from '../geometry/shadowLayout';
 import { COMPOSITE_DEFINES, MAX_BLUR_RADIUS } from './compositeLayout';
 import { LIGHT_DEFINES } from './lightLayout';
 import { SURFACE_DEFINES } from './surfaceLayout';
@@ -31,6 +31,8 @@ function resolveChunks(source: string): string {
 /** The stages of a light pass (see the chunk light-common). */
 export interface LightStages {
   vertex: string;
+  /** The vertex stage that draws the tile grid of a light's classes (`TILED`). */
+  tiledVertex: string;
   /** For a light with no hull in range. */
   unshadowed: string;
   /** For a light with hulls in range (`SHADOWED`). */
@@ -47,7 +49,8 @@ const NORMALS_DEFINES = { NORMALS: '', ...SURFACE_DEFINES };
 export function lightStages(fragment: string, normals: boolean): LightStages {
   const resolved = normals ? withDefines(fragment, NORMALS_DEFINES) : fragment;
   return {
-    vertex: normals ? withDefines(lightVertex, NORMALS_DEFINES) : lightVertex,
+    vertex: lightVertex,
+    tiledVertex: withDefines(lightVertex, { TILED: '', TILE_GRID }),
     unshadowed: resolved,
     shadowed: withDefines(resolved, { SHADOWED: '', ...SHADOW_DEFINES }),
   };
