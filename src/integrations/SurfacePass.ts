@@ -82,9 +82,11 @@ layout(location = 6) in float a_greenUp;
 // 2 / width, 2 / height (target units), and 1, or -1 for a target drawn upside down (its top in row 0).
 uniform vec3 u_frame;
 out vec2 v_uv;
-flat out vec4 v_worldFromImage;
-flat out vec4 v_material;
-flat out float v_greenUp;
+// Per sprite, the same at its four corners: smooth varyings of a constant (no flat varyings, which
+// ANGLE's Metal backend emulates at a cost per draw).
+out vec4 v_worldFromImage;
+out vec4 v_material;
+out float v_greenUp;
 void main() {
   // A strip of the quad's corners: top-left, top-right, bottom-left, bottom-right.
   int corner = gl_VertexID;
@@ -105,9 +107,9 @@ uniform sampler2D u_normals;
 // Drawing sprites without a normal map: they write their coverage only, blended to erase what they cover.
 uniform bool u_erase;
 in vec2 v_uv;
-flat in vec4 v_worldFromImage;
-flat in vec4 v_material;
-flat in float v_greenUp;
+in vec4 v_worldFromImage;
+in vec4 v_material;
+in float v_greenUp;
 layout(location = 0) out vec4 o_normal;
 layout(location = 1) out vec4 o_material;
 void main() {
