@@ -8,6 +8,11 @@ export const EXTRA_STATS = [
   { key: 'shadowVisitsPerPixel', label: 'hulls visited / shaded px', format: (value: number) => value.toFixed(2) },
   { key: 'shadowSkipShare', label: 'px decided w/o loop', format: (value: number) => `${(value * 100).toFixed(1)}%` },
   { key: 'shadowQuadratureShare', label: 'px swept (quadrature)', format: (value: number) => `${(value * 100).toFixed(2)}%` },
+  // The shadow core v3's tiles: the share of a shadowed light's tiles drawn lit (plain program),
+  // exact (shadow program), and not drawn (dark, or beyond its reach).
+  { key: 'tilesLitShare', label: 'tiles lit', format: (value: number) => `${(value * 100).toFixed(1)}%` },
+  { key: 'tilesExactShare', label: 'tiles exact', format: (value: number) => `${(value * 100).toFixed(1)}%` },
+  { key: 'tilesDarkShare', label: 'tiles dark', format: (value: number) => `${(value * 100).toFixed(1)}%` },
 ] as const;
 
 export type ExtraStatKey = (typeof EXTRA_STATS)[number]['key'];

@@ -1,7 +1,7 @@
 import { mat4, type ReadonlyMat4 } from 'gl-matrix';
 import { FramePlan } from './geometry/FramePlan';
 import { ShadowGeometry } from './geometry/ShadowGeometry';
-import { TILE_GRID } from './geometry/shadowLayout';
+import { TILE_CLASSES, TILE_GRID } from './geometry/shadowLayout';
 import { isWebGL2, supportsFloatTargets } from './gl/capabilities';
 import { HostState } from './gl/HostState';
 import { RenderTarget, type TargetFormat } from './gl/RenderTarget';
@@ -16,7 +16,7 @@ import { ShadowTextures, ShadowUnits } from './passes/ShadowTextures';
 import { LightmapAttachments, SceneAttachments, SurfaceUnits } from './passes/surfaceLayout';
 import { Hull } from './scene/Hull';
 import { IlluminationQuery, type Illumination, type IlluminationOptions } from './scene/illumination';
-import { Light, TexturedLight, type LightOptions } from './scene/lights';
+import { DirectionalLight, Light, TexturedLight, type LightOptions } from './scene/lights';
 import { ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, describeValue, frozenColor, type ColorLike } from './scene/validate';
 
 /** Options of a {@link PenumbraRenderer}; every field has the default shown. */
@@ -100,6 +100,16 @@ export interface FrameStats {
    * `PenumbraRenderer.measureCpuTime` is on; else 0.
    */
   cpuTime: number;
+  /**
+   * The tiles of the shadowed point lights, spotlights and textured lights drawn for the last
+   * lightmap, by how they were drawn (docs/shadows.md): lit (the plain light program), dark (not
+   * drawn, or the plain program in the colour the shadows keep), exact (the shadow program), and
+   * outside the light's reach (not drawn). Each such light has 1,024 tiles.
+   */
+  tilesLit: number;
+  tilesDark: number;
+  tilesExact: number;
+  tilesOutside: number;
 }
 
 /** GL objects of the renderer, rebuilt together after a context loss. */
@@ -165,7 +175,7 @@ export class PenumbraRenderer {
    */
   onContextRestored: ((renderer: PenumbraRenderer) => void) | null;
   /** Figures about the last frame. */
-  readonly stats: FrameStats = { lights: 0, lightsDrawn: 0, lightsFiled: 0, hulls: 0, edges: 0, cpuTime: 0 };
+  readonly stats: FrameStats = { lights: 0, lightsDrawn: 0, lightsFiled: 0, hulls: 0, edges: 0, cpuTime: 0, tilesLit: 0, tilesDark: 0, tilesExact: 0, tilesOutside: 0 };
 
   private readonly gl: WebGL2RenderingContext;
   private readonly _lights: Light[] = [];
@@ -693,6 +703,16 @@ export class PenumbraRenderer {
     stats.hulls = this._hulls.length;
     stats.edges = this.geometry.validEdgeCount;
     stats.cpuTime = cpuTime;
+    stats.tilesLit = stats.tilesDark = stats.tilesExact = stats.tilesOutside = 0;
+    for (let i = 0; i < this.plan.drawCount; i++) {
+      const draw = this.plan.draws[i];
+      if (draw.hullCount === 0 || draw.light instanceof DirectionalLight) continue;
+      const counts = draw.tileCounts;
+      stats.tilesLit += counts[TILE_CLASSES.lit];
+      stats.tilesDark += counts[TILE_CLASSES.dark];
+      stats.tilesExact += counts[TILE_CLASSES.exact];
+      stats.tilesOutside += counts[TILE_CLASSES.outside];
+    }
   }
 
   private bindCompositeTarget(): void {
