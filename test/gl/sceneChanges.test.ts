@@ -205,14 +205,14 @@ describe('lights whose shadows did not change', () => {
     left.setPosition(14, 33);
     frame();
     expect(renderer.stats.lightsFiled).toBe(1);
-    // The left light's row of bins and its entries: a run of texture rows each.
-    expect(uploads.count).toBe(2);
+    // The left light's row of bins, its entries and its row of tile classes: a run of texture rows each.
+    expect(uploads.count).toBe(3);
     rightBox.position = [66, 35];
     uploads.count = 0;
     const changed = frame();
     expect(renderer.stats.lightsFiled).toBe(1);
-    // The box's records and tags, the right light's bins and entries.
-    expect(uploads.count).toBe(4);
+    // The box's records and tags, the right light's bins, entries and tile classes.
+    expect(uploads.count).toBe(5);
     expect(maxDifference(still, changed)).toBeGreaterThan(0.1);
 
     const fresh = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0] });
@@ -241,7 +241,11 @@ describe('lights whose shadows did not change', () => {
       // A new light where it is: filed without a margin.
       if (copy) fresh.removeLight(copy);
       copy = fresh.addLight(new PointLight({ position: [light.position[0], light.position[1]], range: 48, radius: 12 }));
-      expect(maxDifference(moving, renderLightmap(gl, fresh, W, H)), `step ${step}`).toBeLessThan(1e-3);
+      // Within the exact core's accuracy (the reference tests' p99, 0.02): the two draw the light
+      // as tiles of different grids (the kept filing's bounds are a margin wider), so the pixels'
+      // world positions round differently, which moves a few pixels among these posts, where the
+      // quadrature is least accurate, by up to 0.008. Bins taken from the wrong centre miss posts: 0.41.
+      expect(maxDifference(moving, renderLightmap(gl, fresh, W, H)), `step ${step}`).toBeLessThan(0.02);
     }
     expect(filed).toBeLessThan(24 / 3);
     fresh.dispose();
