@@ -6,10 +6,11 @@
 //
 // Plain: a_corner is a point of the unit square (LightShapes), mapped onto the quad.
 // TILED: a_corner is a tile's corner (column, row, corner x, corner y) of the grid over the light's
-// filed bounds (see src/geometry/LightTiles.ts); a tile whose class in the light's row of
-// u_tileClasses is not the one this draw shades collapses to a point, and draws nothing. The
-// tiles' corners are exact sums of the same uniforms in every program (`invariant`), so the tiles
-// of a light's draws meet without gaps or overlaps.
+// filed bounds (see src/geometry/LightTiles.ts). The first tile of a run of one class (its code in
+// the light's row of u_tileClasses, tileCode in src/geometry/shadowLayout.ts) stretches to the
+// run's end; the run's other tiles, and a run of a class other than the one this draw shades,
+// collapse to a point and draw nothing. Corners are the grid's corner plus whole numbers of tiles,
+// the same expression in every program (`invariant`), so a light's draws meet without gaps or overlaps.
 precision highp float;
 invariant gl_Position;
 
@@ -34,10 +35,12 @@ out vec2 v_world;
 void main() {
 #ifdef TILED
   int tile = int(a_corner.y) * TILE_GRID + int(a_corner.x);
-  float tileClass = texelFetch(u_tileClasses, ivec2(tile, int(u_tileDraw.x)), 0).r * 255.0;
-  vec2 world = u_tiles.xy + (a_corner.xy + a_corner.zw) * u_tiles.zw;
+  float code = floor(texelFetch(u_tileClasses, ivec2(tile, int(u_tileDraw.x)), 0).r * 255.0 + 0.5);
+  float tileClass = mod(code, 4.0), runLength = floor(code / 4.0) + 1.0;
+  vec2 corner = a_corner.xy + vec2(a_corner.z * runLength, a_corner.w);
+  vec2 world = u_tiles.xy + corner * u_tiles.zw;
   v_uv = inverse(mat2(u_quad[1], u_quad[2])) * (world - u_quad[0]);
-  if (abs(tileClass - u_tileDraw.y) > 0.5) world = u_tiles.xy;
+  if (code >= float(TILE_IN_RUN) || tileClass != u_tileDraw.y) world = u_tiles.xy;
 #else
   vec2 world = u_quad[0] + a_corner.x * u_quad[1] + a_corner.y * u_quad[2];
   v_uv = a_corner;

@@ -1,4 +1,4 @@
-import { RECORD_FLOATS, RECORD_POINTS, TILE_CLASSES, TILE_GRID } from './shadowLayout';
+import { RECORD_FLOATS, RECORD_POINTS, TILE_CLASSES, TILE_GRID, TILE_IN_RUN, tileCode } from './shadowLayout';
 import type { ShadowGeometry } from './ShadowGeometry';
 
 /** Tiles per light. */
@@ -42,8 +42,10 @@ const POLYGON_CAPACITY = 4 + 2 * RECORD_POINTS + RECORD_POINTS + 2;
  * filed disk and reach, which hold the light's own while the filing does, so the classes hold too.
  */
 export class LightTiles {
-  /** Rows of TILE_COUNT classes, one per filing row: what the light pass reads. */
+  /** Rows of TILE_COUNT classes, one per filing row. */
   classes = new Uint8Array(TILE_COUNT);
+  /** `classes` as the light pass reads them, runs merged (see shadowLayout, `tileCode`). */
+  codes = new Uint8Array(TILE_COUNT);
   /** Per row: 1 when written since {@link LightTiles.beginFrame}. */
   dirtyRows = new Uint8Array(1);
   /** Rows of TILE_COUNT classes from the still hulls alone, one per filing row. */
@@ -152,11 +154,22 @@ export class LightTiles {
     this.count(row);
   }
 
-  /** Counts the tiles of each class in `row`. */
+  /** Counts the tiles of each class in `row`, and writes its codes: each run of one class along a row of tiles drawn as one rectangle. */
   private count(row: number): void {
-    const classes = this.classes, counts = this.counts, at = row * CLASS_COUNT;
+    const classes = this.classes, codes = this.codes, counts = this.counts, at = row * CLASS_COUNT;
     for (let c = 0; c < CLASS_COUNT; c++) counts[at + c] = 0;
     for (let i = row * TILE_COUNT, end = i + TILE_COUNT; i < end; i++) counts[at + classes[i]]++;
+    for (let j = 0; j < TILE_GRID; j++) {
+      const first = row * TILE_COUNT + j * TILE_GRID;
+      for (let i = 0; i < TILE_GRID;) {
+        const value = classes[first + i];
+        let run = 1;
+        while (i + run < TILE_GRID && classes[first + i + run] === value) run++;
+        codes[first + i] = tileCode(value, run);
+        for (let k = 1; k < run; k++) codes[first + i + k] = TILE_IN_RUN;
+        i += run;
+      }
+    }
   }
 
   /**
@@ -189,11 +202,13 @@ export class LightTiles {
     const needed = (row + 1) * TILE_COUNT;
     if (this.kept.length >= needed) return;
     const size = Math.max(needed, 2 * this.kept.length);
-    const kept = new Uint8Array(size), classes = new Uint8Array(size);
+    const kept = new Uint8Array(size), classes = new Uint8Array(size), codes = new Uint8Array(size);
     kept.set(this.kept);
     classes.set(this.classes);
+    codes.set(this.codes);
     this.kept = kept;
     this.classes = classes;
+    this.codes = codes;
     const dirty = new Uint8Array(size / TILE_COUNT), counts = new Int32Array((size / TILE_COUNT) * CLASS_COUNT);
     dirty.set(this.dirtyRows);
     counts.set(this.counts);

@@ -93,10 +93,22 @@ export function pseudoAngle(x: number, y: number): number {
 
 /**
  * Tiles per side of a shadowed point light's grid (see `LightTiles`): its filed bounds cut into
- * TILE_GRID² tiles, whose classes are a row of TILE_GRID² bytes of the tile classes texture (R8, one
- * row per light, the row of its bins), tile (i, j) at `j × TILE_GRID + i`.
+ * TILE_GRID² tiles, whose codes ({@link tileCode}) are a row of TILE_GRID² bytes of the tile codes
+ * texture (R8, one row per light, the row of its bins), tile (i, j) at `j × TILE_GRID + i`.
  */
 export const TILE_GRID = 32;
+
+/**
+ * A tile's code: the first tile of a run of tiles of one class along a row holds its class and the
+ * run's length, `class + 4 × (length − 1)` (below 128); the others {@link TILE_IN_RUN}. The light
+ * pass draws the first as the whole run's rectangle and collapses the others: fewer, larger
+ * triangles, fewer pixel blocks shaded twice along their edges.
+ */
+export function tileCode(tileClass: number, runLength: number): number {
+  return tileClass + 4 * (runLength - 1);
+}
+/** The code of a tile inside a run, drawn by the run's first tile. */
+export const TILE_IN_RUN = 128;
 /**
  * A tile's class, what the light pass draws it with: nothing (outside the light's reach, or dark
  * where the shadows keep nothing), the plain light program (lit; dark with the colour the shadows
@@ -106,6 +118,6 @@ export const TILE_CLASSES = { outside: 0, lit: 1, dark: 2, exact: 3 } as const;
 
 /** The layout constants the shader reads, as `#define`s. */
 export const SHADOW_DEFINES: Readonly<Record<string, number>> = {
-  RECORD_TEXELS, TEXTURE_WIDTH, RECORDS_PER_ROW, BIN_COUNT, ENTRY_MAX_RECORDS, TAG_EDGE_BITS, TILE_GRID,
+  RECORD_TEXELS, TEXTURE_WIDTH, RECORDS_PER_ROW, BIN_COUNT, ENTRY_MAX_RECORDS, TAG_EDGE_BITS, TILE_GRID, TILE_IN_RUN,
   SHADOW_SOLID: SHADOW_TYPE_CODES.solid, SHADOW_ILLUMINATED: SHADOW_TYPE_CODES.illuminated, SHADOW_OCCLUDED: SHADOW_TYPE_CODES.occluded,
 };

@@ -43,7 +43,7 @@ export class ShadowTextures {
     gl.activeTexture(gl.TEXTURE0 + ShadowUnits.entries);
     this.entryData.upload(bins.dirtyEntryRows, bins.entries);
     gl.activeTexture(gl.TEXTURE0 + ShadowUnits.tileClasses);
-    this.tileClassData.upload(tiles.dirtyRows, tiles.classes);
+    this.tileClassData.upload(tiles.dirtyRows, tiles.codes);
     gl.activeTexture(gl.TEXTURE0);
   }
 
