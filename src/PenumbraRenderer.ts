@@ -104,11 +104,14 @@ export interface FrameStats {
    * The tiles of the shadowed point lights, spotlights and textured lights drawn for the last
    * lightmap, by how they were drawn (docs/shadows.md): lit (the plain light program), dark (not
    * drawn, or the plain program in the colour the shadows keep), exact (the shadow program), and
-   * outside the light's reach (not drawn). Each such light has 1,024 tiles.
+   * outside the light's reach (not drawn). Each such light has 1,024 tiles. This one: the lit tiles.
    */
   tilesLit: number;
+  /** The dark tiles of the last lightmap (see {@link FrameStats.tilesLit}). */
   tilesDark: number;
+  /** The tiles drawn with the exact shadow program (see {@link FrameStats.tilesLit}). */
   tilesExact: number;
+  /** The tiles beyond their light's reach (see {@link FrameStats.tilesLit}). */
   tilesOutside: number;
 }
 
