@@ -149,7 +149,9 @@ export class LightTiles {
   /** Sets `row`'s classes to its kept ones (a light whose moving hulls left it), marking it dirty. */
   restoreKept(row: number): void {
     this.ensureRow(row);
-    this.classes.set(this.kept.subarray(row * TILE_COUNT, (row + 1) * TILE_COUNT), row * TILE_COUNT);
+    // A loop, not set(subarray()): a view per call would be an allocation per light and frame.
+    const classes = this.classes, kept = this.kept;
+    for (let i = row * TILE_COUNT, end = i + TILE_COUNT; i < end; i++) classes[i] = kept[i];
     this.dirtyRows[row] = 1;
     this.count(row);
   }
