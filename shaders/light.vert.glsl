@@ -7,7 +7,7 @@
 // Plain: a_corner is a point of the unit square (LightShapes), mapped onto the quad.
 // TILED: a_corner is a tile's corner (column, row, corner x, corner y) of the grid over the light's
 // filed bounds (see src/geometry/LightTiles.ts). The first tile of a run of one class (its code in
-// the light's row of u_tileClasses, tileCode in src/geometry/shadowLayout.ts) stretches to the
+// the light's row of u_tileCodes, tileCode in src/geometry/shadowLayout.ts) stretches to the
 // run's end; the run's other tiles, and a run of a class other than the one this draw shades,
 // collapse to a point and draw nothing. Corners are the grid's corner plus whole numbers of tiles,
 // the same expression in every program (`invariant`), so a light's draws meet without gaps or overlaps.
@@ -23,7 +23,7 @@ uniform vec3 u_light; // position xy, range
 layout(location = 0) in vec4 a_corner;
 uniform vec4 u_tiles; // the grid's corner xy (least x and y), a tile's width and height
 uniform vec2 u_tileDraw; // the light's row of tile classes, and the class this draw shades (TILE_CLASSES)
-uniform highp sampler2D u_tileClasses;
+uniform highp sampler2D u_tileCodes;
 #else
 layout(location = 0) in vec2 a_corner; // unit quad, 0..1
 #endif
@@ -35,7 +35,7 @@ out vec2 v_world;
 void main() {
 #ifdef TILED
   int tile = int(a_corner.y) * TILE_GRID + int(a_corner.x);
-  float code = floor(texelFetch(u_tileClasses, ivec2(tile, int(u_tileDraw.x)), 0).r * 255.0 + 0.5);
+  float code = floor(texelFetch(u_tileCodes, ivec2(tile, int(u_tileDraw.x)), 0).r * 255.0 + 0.5);
   float tileClass = mod(code, 4.0), runLength = floor(code / 4.0) + 1.0;
   vec2 corner = a_corner.xy + vec2(a_corner.z * runLength, a_corner.w);
   vec2 world = u_tiles.xy + corner * u_tiles.zw;

@@ -95,7 +95,7 @@ export class LightPass {
       if (uniforms.u_recordTags) gl.uniform1i(uniforms.u_recordTags, ShadowUnits.recordTags);
       if (uniforms.u_bins) gl.uniform1i(uniforms.u_bins, ShadowUnits.bins);
       if (uniforms.u_entries) gl.uniform1i(uniforms.u_entries, ShadowUnits.entries);
-      if (uniforms.u_tileClasses) gl.uniform1i(uniforms.u_tileClasses, ShadowUnits.tileClasses);
+      if (uniforms.u_tileCodes) gl.uniform1i(uniforms.u_tileCodes, ShadowUnits.tileCodes);
       if (uniforms.u_cookie) gl.uniform1i(uniforms.u_cookie, COOKIE_UNIT);
       if (uniforms.u_normals) gl.uniform1i(uniforms.u_normals, SurfaceUnits.normals);
       if (uniforms.u_material) gl.uniform1i(uniforms.u_material, SurfaceUnits.material);

@@ -4,7 +4,7 @@ import type { ShadowGeometry } from '../geometry/ShadowGeometry';
 import { BIN_COUNT, RECORDS_PER_ROW, TEXTURE_WIDTH, TILE_GRID } from '../geometry/shadowLayout';
 
 /** Texture units of the shadow textures; the light pass binds a light's cookie on unit 2. */
-export const ShadowUnits = { records: 0, bins: 1, entries: 3, recordTags: 4, tileClasses: 7 } as const;
+export const ShadowUnits = { records: 0, bins: 1, entries: 3, recordTags: 4, tileCodes: 7 } as const;
 
 /**
  * The GPU copy of the shadow data (see shadowLayout): the records of every hull and their tags, and
@@ -17,14 +17,14 @@ export class ShadowTextures {
   private readonly recordTagData: DataTexture;
   private readonly binData: DataTexture;
   private readonly entryData: DataTexture;
-  private readonly tileClassData: DataTexture;
+  private readonly tileCodeData: DataTexture;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
     this.recordData = new DataTexture(gl, TEXTURE_WIDTH, 4);
     this.recordTagData = new DataTexture(gl, RECORDS_PER_ROW, 1);
     this.binData = new DataTexture(gl, BIN_COUNT, 4);
     this.entryData = new DataTexture(gl, TEXTURE_WIDTH, 4);
-    this.tileClassData = new DataTexture(gl, TILE_GRID * TILE_GRID, 'bytes');
+    this.tileCodeData = new DataTexture(gl, TILE_GRID * TILE_GRID, 'bytes');
   }
 
   get records(): WebGLTexture {
@@ -42,8 +42,8 @@ export class ShadowTextures {
     this.binData.upload(bins.dirtyBinRows, bins.bins);
     gl.activeTexture(gl.TEXTURE0 + ShadowUnits.entries);
     this.entryData.upload(bins.dirtyEntryRows, bins.entries);
-    gl.activeTexture(gl.TEXTURE0 + ShadowUnits.tileClasses);
-    this.tileClassData.upload(tiles.dirtyRows, tiles.codes);
+    gl.activeTexture(gl.TEXTURE0 + ShadowUnits.tileCodes);
+    this.tileCodeData.upload(tiles.dirtyRows, tiles.codes);
     gl.activeTexture(gl.TEXTURE0);
   }
 
@@ -52,7 +52,7 @@ export class ShadowTextures {
     this.recordTagData.dispose();
     this.binData.dispose();
     this.entryData.dispose();
-    this.tileClassData.dispose();
+    this.tileCodeData.dispose();
   }
 }
 
