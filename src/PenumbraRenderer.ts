@@ -60,6 +60,15 @@ export interface PenumbraRendererOptions {
    * it always was. Default `false`.
    */
   normals?: boolean;
+  /**
+   * The most hull records (a convex hull of up to 4 points is one; see docs/shadows.md "Tiles") the
+   * renderer classifies into lit, dark and exact tiles per frame: its JavaScript's largest per-frame
+   * cost. A light whose hulls do not fit what is left of it is drawn wholly with the exact shadow
+   * program (the same picture, more GPU time) and classified in a later frame; one whose moving hulls
+   * do not fit has its lit tiles drawn exact for that frame. `stats.lightsUnclassified` counts those
+   * lights. A non-negative integer or `Infinity`. Default `1024`.
+   */
+  classificationBudget?: number;
 }
 
 /**
@@ -113,6 +122,8 @@ export interface FrameStats {
   tilesExact: number;
   /** The tiles beyond their light's reach (see {@link FrameStats.tilesLit}). */
   tilesOutside: number;
+  /** Shadowed point lights, spotlights and textured lights drawn wholly exact, unclassified (see `PenumbraRendererOptions.classificationBudget`). */
+  lightsUnclassified: number;
 }
 
 /** GL objects of the renderer, rebuilt together after a context loss. */
@@ -178,7 +189,7 @@ export class PenumbraRenderer {
    */
   onContextRestored: ((renderer: PenumbraRenderer) => void) | null;
   /** Figures about the last frame. */
-  readonly stats: FrameStats = { lights: 0, lightsDrawn: 0, lightsFiled: 0, hulls: 0, edges: 0, cpuTime: 0, tilesLit: 0, tilesDark: 0, tilesExact: 0, tilesOutside: 0 };
+  readonly stats: FrameStats = { lights: 0, lightsDrawn: 0, lightsFiled: 0, hulls: 0, edges: 0, cpuTime: 0, tilesLit: 0, tilesDark: 0, tilesExact: 0, tilesOutside: 0, lightsUnclassified: 0 };
 
   private readonly gl: WebGL2RenderingContext;
   private readonly _lights: Light[] = [];
@@ -231,6 +242,7 @@ export class PenumbraRenderer {
     this.width = checkSize('PenumbraRenderer.width', options.width ?? gl.drawingBufferWidth, this.maxSize);
     this.height = checkSize('PenumbraRenderer.height', options.height ?? gl.drawingBufferHeight, this.maxSize);
     this.lightmapScale = checkScale(options.lightmapScale ?? 1);
+    if (options.classificationBudget !== undefined) this.plan.classificationBudget = checkBudget(options.classificationBudget);
     this._normals = options.normals === undefined ? false : assertBoolean('PenumbraRenderer.normals', options.normals);
     if (options.viewProjection) this.viewProjection = options.viewProjection;
     else this.updateDefaultViewProjection();
@@ -707,6 +719,7 @@ export class PenumbraRenderer {
     stats.edges = this.geometry.validEdgeCount;
     stats.cpuTime = cpuTime;
     stats.tilesLit = stats.tilesDark = stats.tilesExact = stats.tilesOutside = 0;
+    stats.lightsUnclassified = this.plan.unclassifiedCount;
     for (let i = 0; i < this.plan.drawCount; i++) {
       const draw = this.plan.draws[i];
       if (draw.hullCount === 0 || draw.light instanceof DirectionalLight) continue;
@@ -894,6 +907,13 @@ function isObject(value: unknown): value is object {
 
 function checkScale(value: number): number {
   if (typeof value !== 'number' || !(value > 0 && value <= 1)) throw new RangeError(`PenumbraRenderer.lightmapScale must be in (0, 1], got ${value}`);
+  return value;
+}
+
+function checkBudget(value: number): number {
+  if (typeof value !== 'number' || !(Number.isInteger(value) && value >= 0 || value === Infinity)) {
+    throw new RangeError(`PenumbraRenderer.classificationBudget must be a non-negative integer or Infinity, got ${describeValue(value)}`);
+  }
   return value;
 }
 

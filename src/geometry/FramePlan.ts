@@ -5,7 +5,7 @@ import { HullGrid } from './HullGrid';
 import { LightTiles } from './LightTiles';
 import { isInsidePolygon } from './polygon';
 import { scissorOf } from './scissor';
-import { type BinSpan, bucketWidthOf, DirectionalStrips, DISTANCE_BUCKETS, grow, ShadowBins } from './ShadowBins';
+import { type BinSpan, bucketWidthOf, DirectionalStrips, DISTANCE_BUCKETS, type FiledDisk, grow, ShadowBins } from './ShadowBins';
 import { BIN_COUNT, MOVING_LIST, STATIC_LIST, TILE_GRID } from './shadowLayout';
 import type { ShadowGeometry } from './ShadowGeometry';
 
@@ -55,6 +55,14 @@ export class LightDraw {
 export class FramePlan {
   /** The records in range of each shadowed light, filed into angular bins. */
   readonly bins = new ShadowBins();
+  /**
+   * The most hull records the plan classifies into tiles per frame (see {@link LightTiles}): a light
+   * whose still hulls do not fit what is left is drawn with every tile exact and classified in a later
+   * frame; a classified light whose moving hulls do not fit has every lit tile exact for the frame.
+   */
+  classificationBudget = DEFAULT_CLASSIFICATION_BUDGET;
+  /** Shadowed point lights of the last {@link FramePlan.build} drawn unclassified, the budget spent. */
+  unclassifiedCount = 0;
   /** The tile classes of each shadowed light but the directional ones, in the rows of its bins. */
   readonly tiles = new LightTiles();
   readonly draws: LightDraw[] = [];
@@ -81,6 +89,8 @@ export class FramePlan {
   private endingBoxes = new Float64Array(64);
   private endingCount = 0;
   private readonly inverseViewProjection = mat4.create();
+  /** The filed disk of the light being filed or classified. */
+  private readonly filedDisk: FiledDisk = new Float64Array(5);
   /** The centre of the light being filed or checked, for `isInsideHull`. */
   private readonly centre = new Float64Array(2);
   /** The box a directional light's search covers: the view swept upstream. */
@@ -99,6 +109,10 @@ export class FramePlan {
   /** The geometry layout the filings were made for. */
   private layoutVersion = -1;
   private frame = 0;
+  /** What is left of this frame's classification budget, in records. */
+  private budgetLeft = 0;
+  /** Whether a kept filing of a light placed this frame is unclassified (the still grid is built for it). */
+  private unclassifiedKept = false;
 
   build(
     lights: readonly Light[], hulls: readonly Hull[], geometry: ShadowGeometry,
@@ -107,6 +121,8 @@ export class FramePlan {
     this.frame++;
     this.drawCount = 0;
     this.filedCount = 0;
+    this.unclassifiedCount = 0;
+    this.budgetLeft = this.classificationBudget;
     const crowded = this.bins.beginFrame();
     this.tiles.beginFrame();
     if (geometry.layoutVersion !== this.layoutVersion) {
@@ -119,7 +135,7 @@ export class FramePlan {
     const toFile = this.findFilingsToRedo(placed);
     // Every light filed anew: their spans are laid out afresh, packed from the first entry.
     if (toFile === placed) this.releaseSpans();
-    if (toFile > 0 || this.movedCount > 0) this.grid.build(geometry.coarseBounds, this.stillCasters, hulls.length, this.reach);
+    if (toFile > 0 || this.movedCount > 0 || this.unclassifiedKept) this.grid.build(geometry.coarseBounds, this.stillCasters, hulls.length, this.reach);
     if (this.movingHullCount > 0) this.movingGrid.build(geometry.coarseBounds, this.movingCasters, hulls.length, this.movingReach);
     this.checkMovedCentres(hulls, geometry);
     // Keeps the placed lights whose centre is not inside a hull, in order.
@@ -129,11 +145,16 @@ export class FramePlan {
         this.filedCount++;
         if (draw.light instanceof DirectionalLight) this.collectDirectionalHulls(draw, hulls, geometry);
         else filing.skipped = !this.collectHulls(draw, hulls, geometry);
+      } else if (filing.unclassified && !filing.skipped && filing.stillRecords <= this.budgetLeft) {
+        this.classifyKept(draw, hulls, geometry);
       }
       if (filing.skipped || !this.fileMovingHulls(draw, hulls, geometry)) continue;
       draw.hullCount = filing.hullCount + filing.movingCount;
       draw.binRow = filing.row;
-      if (draw.hullCount > 0 && !(draw.light instanceof DirectionalLight)) this.tiles.writeCounts(filing.row, draw.tileCounts);
+      if (draw.hullCount > 0 && !(draw.light instanceof DirectionalLight)) {
+        this.tiles.writeCounts(filing.row, draw.tileCounts);
+        if (filing.unclassified) this.unclassifiedCount++;
+      }
       this.draws[i] = this.draws[this.drawCount];
       this.draws[this.drawCount++] = draw;
     }
@@ -171,6 +192,7 @@ export class FramePlan {
     emptyBox(movingReach);
     let count = 0;
     this.movedCount = 0;
+    this.unclassifiedKept = false;
     if (this.moved.length < placed) this.moved = new Int32Array(2 * placed);
     for (let i = 0; i < placed; i++) {
       const draw = this.draws[i], filing = draw.filing;
@@ -183,7 +205,8 @@ export class FramePlan {
       }
       if (!draw.light.castsShadows) continue;
       const b = draw.light instanceof DirectionalLight ? writeUpstreamBox(draw, this.upstreamBox) : filing.filedBounds;
-      if (filing.filedFrame === this.frame) extendBox(reach, b);
+      if (filing.filedFrame === this.frame || filing.unclassified) extendBox(reach, b);
+      if (filing.filedFrame !== this.frame && filing.unclassified) this.unclassifiedKept = true;
       extendBox(movingReach, b);
     }
     return count;
@@ -349,22 +372,43 @@ export class FramePlan {
   private collectHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
     const light = draw.light, filing = draw.filing;
     filing.hullCount = 0;
+    filing.unclassified = false;
     if (!light.castsShadows) return true;
-    this.bins.beginLight(filing.originX, filing.originY, filing.filedRadius, filing.bucketWidth);
-    const count = this.addHullsInRange(draw, hulls, geometry, this.grid);
+    const count = this.findHullsInRange(draw, hulls, geometry, this.grid);
     if (count < 0) return false;
     filing.hullCount = count;
+    this.bins.beginLight(filing.writeDisk(this.filedDisk));
+    this.bins.addHulls(geometry, this.grid.found, count);
     this.bins.endLight(geometry, filing.stillSpan);
     this.beginTiles(filing);
+    const records = recordsOf(geometry, this.grid.found, count);
+    filing.stillRecords = records;
+    filing.unclassified = records > this.budgetLeft;
+    if (filing.unclassified) this.tiles.endUnclassified(filing.row);
+    else this.classifyStillHulls(filing, geometry, count);
+    return true;
+  }
+
+  /** Classifies the tiles of a kept filing left unclassified, its still hulls (`stillRecords`) fitting what is left of the budget. */
+  private classifyKept(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): void {
+    const filing = draw.filing, count = this.findHullsInRange(draw, hulls, geometry, this.grid);
+    if (count < 0) return;
+    filing.unclassified = false;
+    this.beginTiles(filing);
+    this.classifyStillHulls(filing, geometry, count);
+  }
+
+  /** Classifies a filing's tiles by the `count` still hulls the grid found, from the budget. */
+  private classifyStillHulls(filing: LightFiling, geometry: ShadowGeometry, count: number): void {
+    this.budgetLeft -= filing.stillRecords;
     this.tiles.addStillHulls(geometry, this.grid.found, count);
     this.tiles.endLight(filing.row);
-    return true;
   }
 
   /** Starts classifying the tiles of a point light's filing (see `LightTiles`): its filed bounds, disk and reach. */
   private beginTiles(filing: LightFiling): void {
     const light = filing.light;
-    this.tiles.beginLight(filing.filedBounds, filing.originX, filing.originY, filing.filedRadius, filing.filedReach, light.isConfinedToRangeDisk(), light.shadowType === 'solid');
+    this.tiles.beginLight(filing.filedBounds, filing.writeDisk(this.filedDisk), light.isConfinedToRangeDisk(), light.shadowType === 'solid');
   }
 
   /**
@@ -377,23 +421,36 @@ export class FramePlan {
     const light = draw.light, filing = draw.filing;
     let count = 0;
     if (light.castsShadows && this.movingHullCount > 0 && !(light instanceof DirectionalLight)) {
-      this.bins.beginLight(filing.originX, filing.originY, filing.filedRadius, filing.bucketWidth);
-      count = this.addHullsInRange(draw, hulls, geometry, this.movingGrid);
+      count = this.findHullsInRange(draw, hulls, geometry, this.movingGrid);
       if (count < 0) {
         filing.movingCount = UNWRITTEN;
         return false;
       }
     }
     if (count > 0) {
+      this.bins.beginLight(filing.writeDisk(this.filedDisk));
+      this.bins.addHulls(geometry, this.movingGrid.found, count);
       this.bins.endLight(geometry, filing.movingSpan);
-      this.beginTiles(filing);
-      this.tiles.addMovingHulls(filing.row, geometry, this.movingGrid.found, count);
+      this.classifyMovingHulls(filing, geometry, count);
     } else if (filing.movingCount !== 0) {
       this.bins.emptyList(filing.movingSpan);
       if (!(light instanceof DirectionalLight)) this.tiles.restoreKept(filing.row);
     }
     filing.movingCount = count;
     return true;
+  }
+
+  /** Adds the `count` moving hulls the moving grid found to a classified light's tiles, when they fit the budget (see {@link FramePlan.classificationBudget}). */
+  private classifyMovingHulls(filing: LightFiling, geometry: ShadowGeometry, count: number): void {
+    if (filing.unclassified) return;
+    const found = this.movingGrid.found, records = recordsOf(geometry, found, count);
+    this.beginTiles(filing);
+    if (records > this.budgetLeft) {
+      this.tiles.addUnknownHulls(filing.row);
+      return;
+    }
+    this.budgetLeft -= records;
+    this.tiles.addMovingHulls(filing.row, geometry, found, count);
   }
 
   /**
@@ -440,14 +497,15 @@ export class FramePlan {
   }
 
   /**
-   * Adds to the light's bins, as candidates, the hulls of `grid` whose exact bounds overlap its filed
-   * bounds and whose circle reaches within its filed reach of its centre (see `LightFiling`),
-   * transforming each candidate the grid finds by its coarse bounds first (see
-   * `ShadowGeometry.prepare`), so every change reaches the light this frame; returns how many, or -1
-   * when the light centre is inside one of them. Reads the geometry's flat arrays, not the hulls:
-   * this runs for every hull in every light's range.
+   * Leaves in `grid.found` the hulls of `grid` whose exact bounds overlap the light's filed bounds
+   * and whose circle reaches within its filed reach of its centre (see `LightFiling`), transforming
+   * each candidate the grid finds by its coarse bounds first (see `ShadowGeometry.prepare`), so every
+   * change reaches the light this frame; returns how many, or -1 when the light centre is inside one
+   * of them. Reads the geometry's flat arrays, not the hulls: this runs for every hull in every
+   * light's range. (The bins file them in a loop of their own, `ShadowBins.addHulls`: inlined here,
+   * their arithmetic would pass doubles to helpers V8 no longer inlines, boxing them for every hull.)
    */
-  private addHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry, grid: HullGrid): number {
+  private findHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry, grid: HullGrid): number {
     const light = draw.light, filing = draw.filing;
     const lx = filing.originX, ly = filing.originY;
     this.centre[0] = lx;
@@ -468,11 +526,15 @@ export class FramePlan {
       if (isInsideHull(hulls, geometry, index, this.centre)) return -1;
       found[added++] = index;
     }
-    // Filed in a loop of its own: inlined here, the bins' arithmetic would pass doubles to helpers
-    // V8 no longer inlines (its budget per function spent), boxing them for every hull.
-    this.bins.addHulls(geometry, found, added);
     return added;
   }
+}
+
+/** The records of the `count` hulls at `indices`. */
+function recordsOf(geometry: ShadowGeometry, indices: Int32Array, count: number): number {
+  let records = 0;
+  for (let i = 0; i < count; i++) records += geometry.recordCounts[indices[i]];
+  return records;
 }
 
 /**
@@ -572,6 +634,12 @@ function byFirstEntry(a: BinSpan, b: BinSpan): number {
  * starts or stops moving ends the filings it overlaps once.
  */
 const MOVING_FRAMES = 30;
+/**
+ * Records classified into tiles per frame by default: about a millisecond of JavaScript on the
+ * bench's machine (docs/performance.md), some twenty torches among walls a frame, and a level's
+ * walking lamps every frame.
+ */
+const DEFAULT_CLASSIFICATION_BUDGET = 1024;
 /** `hullChangedFrames` of a hull that has not changed since the layout: it stands still. */
 const NEVER = -(2 ** 30);
 /** A filing's `movingCount` when its moving list in the bins is not known to be written. */
@@ -614,6 +682,9 @@ class LightFiling {
   skipped = false;
   /** Hulls in the still hulls' list, and in the moving list as last written ({@link UNWRITTEN}: not known). */
   hullCount = 0;
+  /** The still hulls' records, and whether they were left unclassified (the budget spent, see {@link FramePlan.classificationBudget}). */
+  stillRecords = 0;
+  unclassified = false;
   movingCount = UNWRITTEN;
   readonly stillSpan: BinSpan;
   readonly movingSpan: BinSpan;
@@ -705,6 +776,16 @@ class LightFiling {
   checked(): void {
     this.checkedX = this.light.position[0];
     this.checkedY = this.light.position[1];
+  }
+
+  /** Writes the disk, reach and bucket width the filing was made for into `out`, and returns it. */
+  writeDisk(out: FiledDisk): FiledDisk {
+    out[0] = this.originX;
+    out[1] = this.originY;
+    out[2] = this.filedRadius;
+    out[3] = this.filedReach;
+    out[4] = this.bucketWidth;
+    return out;
   }
 
   /** Writes the bins' origin, the disk radius they were filed for and their bucket width (the shader's `u_binning` for a light with a centre). */

@@ -1,8 +1,15 @@
 import { RECORD_FLOATS, RECORD_POINTS, TILE_CLASSES, TILE_GRID, TILE_IN_RUN, tileCode } from './shadowLayout';
+import type { FiledDisk } from './ShadowBins';
 import type { ShadowGeometry } from './ShadowGeometry';
 
 /** Tiles per light. */
 const TILE_COUNT = TILE_GRID * TILE_GRID;
+/**
+ * A row of tiles as a bit mask, tile i at bit i: marking a span, the classes' logic and counting
+ * are word operations, not per tile (TILE_GRID ≤ 32). Masks are int32 (Int32Array), and no function
+ * returns one: V8 boxes an int32 beyond 2^30 that crosses a call it does not inline.
+ */
+const FULL_ROW = TILE_GRID === 32 ? -1 : (1 << TILE_GRID) - 1;
 /** The classes of TILE_CLASSES, 0 to 3. */
 const CLASS_COUNT = 4;
 /**
@@ -11,6 +18,8 @@ const CLASS_COUNT = 4;
  * the shader would shade it.
  */
 const RELATIVE_SLACK = 1e-5;
+/** Buckets of distance over the light's reach in which its still hulls are ordered, near first (see `addStillHulls`). */
+const NEAR_BUCKETS = 32;
 /** The shader's radius for a hard light (shadow-visibility's MIN_RADIUS). */
 const MIN_RADIUS = 1e-3;
 /** Room for a convex polygon clipped by the half-planes of one record: the box's 4 corners, one more per half-plane. */
@@ -42,27 +51,42 @@ const POLYGON_CAPACITY = 4 + 2 * RECORD_POINTS + RECORD_POINTS + 2;
  * filed disk and reach, which hold the light's own while the filing does, so the classes hold too.
  */
 export class LightTiles {
-  /** Rows of TILE_COUNT classes, one per filing row. */
-  classes = new Uint8Array(TILE_COUNT);
-  /** `classes` as the light pass reads them, runs merged (see shadowLayout, `tileCode`). */
+  /** `classes` as the light pass reads them, TILE_COUNT per filing row, runs merged (see shadowLayout, `tileCode`). */
   codes = new Uint8Array(TILE_COUNT);
-  /** Per row: 1 when written since {@link LightTiles.beginFrame}. */
+  /** Per row: 1 when its codes were written since {@link LightTiles.beginFrame}. */
   dirtyRows = new Uint8Array(1);
-  /** Rows of TILE_COUNT classes from the still hulls alone, one per filing row. */
-  private kept = new Uint8Array(TILE_COUNT);
+  /**
+   * Per filing row, TILE_GRID masks each (tile row j at `row × TILE_GRID + j`): the tiles beyond the
+   * reach; the dark and exact ones from the still hulls alone (kept with the filing); and those the
+   * codes show now. The classes' masks are disjoint; a tile in none is lit.
+   */
+  private outside = new Int32Array(TILE_GRID);
+  private keptDark = new Int32Array(TILE_GRID);
+  private keptExact = new Int32Array(TILE_GRID);
+  private dark = new Int32Array(TILE_GRID);
+  private exact = new Int32Array(TILE_GRID);
   /** Per row, its tiles of each class. */
   private counts = new Int32Array(CLASS_COUNT);
-  /** Per tile of the light being classified: it may be shadowed, it is dark, a record lies in it. */
-  private readonly shadowed = new Uint8Array(TILE_COUNT);
-  private readonly dark = new Uint8Array(TILE_COUNT);
-  private readonly occupied = new Uint8Array(TILE_COUNT);
+  /** Per tile row of the light being classified: the tiles it may be shadowed in, dark in, with a record in them. */
+  private readonly shadowed = new Int32Array(TILE_GRID);
+  private readonly darkened = new Int32Array(TILE_GRID);
+  private readonly occupied = new Int32Array(TILE_GRID);
+  /** Scratch of the near-first order of a light's still hulls: the order, each hull's bucket, where each bucket starts. */
+  private order = new Int32Array(0);
+  private bucketOfHull = new Uint8Array(0);
+  private readonly bucketStarts = new Int32Array(NEAR_BUCKETS + 1);
+  /** A row's classes as a moving hull leaves them, before they are shown. */
+  private readonly nextDark = new Int32Array(TILE_GRID);
+  private readonly nextExact = new Int32Array(TILE_GRID);
+  /** The rasterization's x range per tile row (touched) and per tile row boundary (the polygon's chord there). */
+  private readonly rowLeft = new Float64Array(TILE_GRID);
+  private readonly rowRight = new Float64Array(TILE_GRID);
+  private readonly chordLeft = new Float64Array(TILE_GRID + 1);
+  private readonly chordRight = new Float64Array(TILE_GRID + 1);
   /** Polygon scratch (x, y pairs), ping-ponged by the clipping. */
   private polygon = new Float64Array(2 * POLYGON_CAPACITY);
   private clipped = new Float64Array(2 * POLYGON_CAPACITY);
   private polygonCount = 0;
-  /** What `spanWithin` found. */
-  private spanLeft = 0;
-  private spanRight = 0;
   /** The loaded record's corners without repeats, `pointCount` of them, counter-clockwise. */
   private readonly xs = new Float64Array(RECORD_POINTS);
   private readonly ys = new Float64Array(RECORD_POINTS);
@@ -72,6 +96,10 @@ export class LightTiles {
   private shadowPlaneCount = 0;
   private readonly umbraPlanes = new Float64Array(3 * (3 * RECORD_POINTS));
   private umbraPlaneCount = 0;
+  /** The plane being added, `[a, b, c]`. */
+  private readonly plane = new Float64Array(3);
+  /** The box being marked occupied, `[minX, minY, maxX, maxY]`. */
+  private readonly box = new Float64Array(4);
   /** The light being classified: box, tile size, disk, reach, whether it is confined to its range disk and lights the inside of hulls. */
   private minX = 0;
   private minY = 0;
@@ -95,11 +123,19 @@ export class LightTiles {
     for (let c = 0; c < CLASS_COUNT; c++) out[c] = this.counts[row * CLASS_COUNT + c];
   }
 
+  /** The class (TILE_CLASSES) of tile `tile` (`j × TILE_GRID + i`) of `row`, as the codes show it. */
+  tileClass(row: number, tile: number): number {
+    const word = row * TILE_GRID + Math.floor(tile / TILE_GRID), bit = 1 << tile % TILE_GRID;
+    return classOf(this.outside[word] & bit, this.dark[word] & bit, this.exact[word] & bit);
+  }
+
   /**
    * Starts classifying a light: its box `[minX, minY, maxX, maxY]` (the grid), its filed disk and
-   * reach around `(x, y)`; `confined`: it adds nothing beyond its reach; `solid`: the inside of hulls is dark.
+   * reach (`[x, y, radius, reach, …]`, see {@link FiledDisk}); `confined`: it adds nothing beyond
+   * its reach; `solid`: the inside of hulls is dark.
    */
-  beginLight(bounds: Float64Array, x: number, y: number, radius: number, reach: number, confined: boolean, solid: boolean): void {
+  beginLight(bounds: Float64Array, disk: FiledDisk, confined: boolean, solid: boolean): void {
+    const x = disk[0], y = disk[1], radius = disk[2], reach = disk[3];
     this.minX = bounds[0];
     this.minY = bounds[1];
     this.tileWidth = Math.max(bounds[2] - bounds[0], 1e-9) / TILE_GRID;
@@ -112,118 +148,218 @@ export class LightTiles {
     this.confined = confined;
     this.solid = solid;
     this.shadowed.fill(0);
-    this.dark.fill(0);
+    this.darkened.fill(0);
     this.occupied.fill(0);
   }
 
-  /** Adds the records of the `count` hulls at `indices` (prepared) to the light being classified. */
+  /**
+   * Adds the records of the `count` hulls at `indices` (prepared) to the light being classified,
+   * nearest first, leaving out a hull that lies wholly in tiles already dark: each of its points
+   * is then in some nearer record Q's umbra or in Q, so every segment through it to the disk meets
+   * Q, and its shadow region and umbra lie in those of the records before it.
+   */
   addStillHulls(geometry: ShadowGeometry, indices: Int32Array, count: number): void {
+    const order = this.nearestFirst(geometry, indices, count);
     for (let i = 0; i < count; i++) {
-      const hull = indices[i];
+      const hull = order[i];
+      if (this.boundsWithin(geometry.worldBounds, hull, this.darkened, 0)) {
+        if (!this.solid) this.markBox(geometry.worldBounds, hull);
+        continue;
+      }
       for (let record = geometry.firstRecords[hull], end = record + geometry.recordCounts[hull]; record < end; record++) {
         if (!this.loadRecord(geometry.records, record)) continue;
-        this.markShadowRegion(this.shadowed);
+        this.markShadowRegion();
         this.markUmbra();
-        if (!this.solid) this.markRecordBox(this.occupied);
+        if (!this.solid) this.markRecordBox();
       }
     }
   }
 
-  /** Ends the still hulls' classification of `row`: its kept classes, copied to its classes. */
+  /** `indices`' first `count` hulls in buckets of their nearest distance to the light's centre (NEAR_BUCKETS over its reach), nearest first. */
+  private nearestFirst(geometry: ShadowGeometry, indices: Int32Array, count: number): Int32Array {
+    if (this.order.length < count) {
+      this.order = new Int32Array(2 * count);
+      this.bucketOfHull = new Uint8Array(2 * count);
+    }
+    const circles = geometry.circles, starts = this.bucketStarts, buckets = this.bucketOfHull, scale = NEAR_BUCKETS / Math.max(this.reach, 1e-9);
+    starts.fill(0);
+    for (let i = 0; i < count; i++) {
+      const hull = indices[i], dx = circles[3 * hull] - this.centreX, dy = circles[3 * hull + 1] - this.centreY;
+      const bucket = Math.min(NEAR_BUCKETS - 1, Math.max(0, Math.floor((Math.sqrt(dx * dx + dy * dy) - circles[3 * hull + 2]) * scale)));
+      buckets[i] = bucket;
+      starts[bucket + 1]++;
+    }
+    for (let b = 0; b < NEAR_BUCKETS; b++) starts[b + 1] += starts[b];
+    for (let i = 0; i < count; i++) this.order[starts[buckets[i]]++] = indices[i];
+    return this.order;
+  }
+
+  /** Whether hull `hull`'s box in `bounds` lies wholly in tiles set in `masks` (rows from `from`), inside the grid. */
+  private boundsWithin(bounds: Float64Array, hull: number, masks: Int32Array, from: number): boolean {
+    const tw = this.tileWidth, th = this.tileHeight;
+    const first = Math.floor((bounds[4 * hull] - this.slack - this.minX) / tw), last = Math.floor((bounds[4 * hull + 2] + this.slack - this.minX) / tw);
+    const firstRow = Math.floor((bounds[4 * hull + 1] - this.slack - this.minY) / th), lastRow = Math.floor((bounds[4 * hull + 3] + this.slack - this.minY) / th);
+    if (first < 0 || last >= TILE_GRID || firstRow < 0 || lastRow >= TILE_GRID) return false;
+    const span = (FULL_ROW >>> (TILE_GRID - 1 - last)) & (FULL_ROW << first);
+    for (let j = firstRow; j <= lastRow; j++) if ((masks[from + j] & span) !== span) return false;
+    return true;
+  }
+
+  /** Ends the still hulls' classification of `row` (a new filing): its kept classes, which its codes then show. */
   endLight(row: number): void {
     this.ensureRow(row);
-    const kept = this.kept, at = row * TILE_COUNT;
+    const at = row * TILE_GRID;
     for (let j = 0; j < TILE_GRID; j++) {
-      for (let i = 0; i < TILE_GRID; i++) {
-        const tile = j * TILE_GRID + i;
-        let value: number = TILE_CLASSES.lit;
-        if (this.confined && this.tileBeyondReach(i, j)) value = TILE_CLASSES.outside;
-        else if (this.dark[tile] !== 0 && (this.solid || this.occupied[tile] === 0)) value = TILE_CLASSES.dark;
-        else if (this.shadowed[tile] !== 0) value = TILE_CLASSES.exact;
-        kept[at + tile] = value;
-      }
+      this.writeOutside(at, j);
+      const outside = this.outside[at + j], dark = this.darkened[j] & ~outside & (this.solid ? FULL_ROW : ~this.occupied[j]);
+      this.keptDark[at + j] = dark;
+      this.keptExact[at + j] = this.shadowed[j] & ~dark & ~outside;
     }
-    this.restoreKept(row);
+    this.show(row, this.keptDark, this.keptExact, at, true);
   }
 
-  /** Sets `row`'s classes to its kept ones (a light whose moving hulls left it), marking it dirty. */
+  /** Shows `row`'s kept classes (a light whose moving hulls left it). */
   restoreKept(row: number): void {
     this.ensureRow(row);
-    // A loop, not set(subarray()): a view per call would be an allocation per light and frame.
-    const classes = this.classes, kept = this.kept;
-    for (let i = row * TILE_COUNT, end = i + TILE_COUNT; i < end; i++) classes[i] = kept[i];
-    this.dirtyRows[row] = 1;
-    this.count(row);
-  }
-
-  /** Counts the tiles of each class in `row`, and writes its codes: each run of one class along a row of tiles drawn as one rectangle. */
-  private count(row: number): void {
-    const classes = this.classes, codes = this.codes, counts = this.counts, at = row * CLASS_COUNT;
-    for (let c = 0; c < CLASS_COUNT; c++) counts[at + c] = 0;
-    for (let i = row * TILE_COUNT, end = i + TILE_COUNT; i < end; i++) counts[at + classes[i]]++;
-    for (let j = 0; j < TILE_GRID; j++) {
-      const first = row * TILE_COUNT + j * TILE_GRID;
-      for (let i = 0; i < TILE_GRID;) {
-        const value = classes[first + i];
-        let run = 1;
-        while (i + run < TILE_GRID && classes[first + i + run] === value) run++;
-        codes[first + i] = tileCode(value, run);
-        for (let k = 1; k < run; k++) codes[first + i + k] = TILE_IN_RUN;
-        i += run;
-      }
-    }
+    this.show(row, this.keptDark, this.keptExact, row * TILE_GRID, false);
   }
 
   /**
-   * Sets `row`'s classes to its kept ones less what the `count` moving hulls at `indices` (prepared)
-   * may change: the lit tiles their shadow regions touch, and, unless `solid` (set by the last
+   * Ends the classification of `row` (a new filing, begun with {@link LightTiles.beginLight}) with
+   * every tile within the reach exact: the classes of a light left unclassified.
+   */
+  endUnclassified(row: number): void {
+    this.ensureRow(row);
+    const at = row * TILE_GRID;
+    for (let j = 0; j < TILE_GRID; j++) {
+      this.writeOutside(at, j);
+      this.keptDark[at + j] = 0;
+      this.keptExact[at + j] = FULL_ROW & ~this.outside[at + j];
+    }
+    this.show(row, this.keptDark, this.keptExact, at, true);
+  }
+
+  /**
+   * Shows `row`'s kept classes as they may be with moving hulls not looked at: every lit tile
+   * exact, and, unless the light is Solid (as set by {@link LightTiles.beginLight}), every dark one.
+   */
+  addUnknownHulls(row: number): void {
+    const at = row * TILE_GRID, dark = this.nextDark, exact = this.nextExact;
+    for (let j = 0; j < TILE_GRID; j++) {
+      dark[j] = this.solid ? this.keptDark[at + j] : 0;
+      exact[j] = FULL_ROW & ~this.outside[at + j] & ~dark[j];
+    }
+    this.show(row, dark, exact, 0, false);
+  }
+
+  /**
+   * Shows `row`'s kept classes less what the `count` moving hulls at `indices` (prepared) may
+   * change: the lit tiles their shadow regions touch, and, unless `solid` (set by the last
    * {@link LightTiles.beginLight} for this light's filing, with `bounds`, disk and reach as there),
    * the dark tiles they lie in, become exact.
    */
   addMovingHulls(row: number, geometry: ShadowGeometry, indices: Int32Array, count: number): void {
-    this.restoreKept(row);
-    this.shadowed.fill(0);
-    this.occupied.fill(0);
     for (let i = 0; i < count; i++) {
       const hull = indices[i];
+      // Wholly in kept dark tiles, its shadow region lies in the still records' (as addStillHulls).
+      if (this.boundsWithin(geometry.worldBounds, hull, this.keptDark, row * TILE_GRID)) {
+        if (!this.solid) this.markBox(geometry.worldBounds, hull);
+        continue;
+      }
       for (let record = geometry.firstRecords[hull], end = record + geometry.recordCounts[hull]; record < end; record++) {
         if (!this.loadRecord(geometry.records, record)) continue;
-        this.markShadowRegion(this.shadowed);
-        if (!this.solid) this.markRecordBox(this.occupied);
+        this.markShadowRegion();
+        if (!this.solid) this.markRecordBox();
       }
     }
-    const classes = this.classes, at = row * TILE_COUNT;
-    for (let tile = 0; tile < TILE_COUNT; tile++) {
-      const value = classes[at + tile];
-      if ((value === TILE_CLASSES.lit && this.shadowed[tile] !== 0) || (value === TILE_CLASSES.dark && this.occupied[tile] !== 0)) classes[at + tile] = TILE_CLASSES.exact;
+    const at = row * TILE_GRID, dark = this.nextDark, exact = this.nextExact;
+    for (let j = 0; j < TILE_GRID; j++) {
+      const keptDark = this.keptDark[at + j], keptExact = this.keptExact[at + j];
+      const lit = FULL_ROW & ~(this.outside[at + j] | keptDark | keptExact);
+      const lost = this.solid ? 0 : keptDark & this.occupied[j];
+      dark[j] = keptDark & ~lost;
+      exact[j] = keptExact | (this.shadowed[j] & lit) | lost;
     }
-    this.count(row);
+    this.show(row, dark, exact, 0, false);
+  }
+
+  /**
+   * Shows `row` with the dark and exact masks `dark[from + j]`, `exact[from + j]`: rewrites the codes
+   * of each tile row that changed (every one when `force`, for a new filing) and, when one did,
+   * recounts the row and marks it dirty.
+   */
+  private show(row: number, dark: Int32Array, exact: Int32Array, from: number, force: boolean): void {
+    const at = row * TILE_GRID;
+    let changed = false;
+    for (let j = 0; j < TILE_GRID; j++) {
+      const d = dark[from + j], e = exact[from + j];
+      if (!force && d === this.dark[at + j] && e === this.exact[at + j]) continue;
+      this.dark[at + j] = d;
+      this.exact[at + j] = e;
+      this.writeCodes(row, j);
+      changed = true;
+    }
+    if (!changed) return;
+    this.dirtyRows[row] = 1;
+    let outside = 0, darkCount = 0, exactCount = 0;
+    for (let j = 0; j < TILE_GRID; j++) {
+      outside += bitCount(this.outside[at + j]);
+      darkCount += bitCount(this.dark[at + j]);
+      exactCount += bitCount(this.exact[at + j]);
+    }
+    const counts = this.counts, c = row * CLASS_COUNT;
+    counts[c + TILE_CLASSES.outside] = outside;
+    counts[c + TILE_CLASSES.dark] = darkCount;
+    counts[c + TILE_CLASSES.exact] = exactCount;
+    counts[c + TILE_CLASSES.lit] = TILE_COUNT - outside - darkCount - exactCount;
+  }
+
+  /** Writes the codes of tile row `j` of `row` from its masks: each run of one class drawn as one rectangle. */
+  private writeCodes(row: number, j: number): void {
+    const word = row * TILE_GRID + j, outside = this.outside[word], dark = this.dark[word], exact = this.exact[word];
+    const codes = this.codes, first = row * TILE_COUNT + j * TILE_GRID;
+    for (let i = 0; i < TILE_GRID;) {
+      const value = classOf(outside & (1 << i), dark & (1 << i), exact & (1 << i));
+      let run = 1;
+      for (; i + run < TILE_GRID; run++) {
+        const bit = 1 << (i + run);
+        if (classOf(outside & bit, dark & bit, exact & bit) !== value) break;
+      }
+      codes[first + i] = tileCode(value, run);
+      for (let k = 1; k < run; k++) codes[first + i + k] = TILE_IN_RUN;
+      i += run;
+    }
   }
 
   private ensureRow(row: number): void {
-    const needed = (row + 1) * TILE_COUNT;
-    if (this.kept.length >= needed) return;
-    const size = Math.max(needed, 2 * this.kept.length);
-    const kept = new Uint8Array(size), classes = new Uint8Array(size), codes = new Uint8Array(size);
-    kept.set(this.kept);
-    classes.set(this.classes);
+    const needed = (row + 1) * TILE_GRID;
+    if (this.keptDark.length >= needed) return;
+    const words = Math.max(needed, 2 * this.keptDark.length), rows = words / TILE_GRID;
+    this.outside = grown(this.outside, words);
+    this.keptDark = grown(this.keptDark, words);
+    this.keptExact = grown(this.keptExact, words);
+    this.dark = grown(this.dark, words);
+    this.exact = grown(this.exact, words);
+    const codes = new Uint8Array(rows * TILE_COUNT), dirty = new Uint8Array(rows), counts = new Int32Array(rows * CLASS_COUNT);
     codes.set(this.codes);
-    this.kept = kept;
-    this.classes = classes;
-    this.codes = codes;
-    const dirty = new Uint8Array(size / TILE_COUNT), counts = new Int32Array((size / TILE_COUNT) * CLASS_COUNT);
     dirty.set(this.dirtyRows);
     counts.set(this.counts);
+    this.codes = codes;
     this.dirtyRows = dirty;
     this.counts = counts;
   }
 
-  /** Whether tile (i, j) lies wholly beyond the reach of the filing's centre. */
-  private tileBeyondReach(i: number, j: number): boolean {
-    const x0 = this.minX + i * this.tileWidth, y0 = this.minY + j * this.tileHeight;
-    const dx = Math.max(x0 - this.centreX, 0, this.centreX - x0 - this.tileWidth);
+  /** Writes the mask of the tiles of tile row `j` that lie wholly beyond the reach of the filing's centre (none for a light not confined to it) at `outside[at + j]`. */
+  private writeOutside(at: number, j: number): void {
+    const y0 = this.minY + j * this.tileHeight, reach = this.reach + this.slack;
     const dy = Math.max(y0 - this.centreY, 0, this.centreY - y0 - this.tileHeight);
-    return Math.sqrt(dx * dx + dy * dy) > this.reach + this.slack;
+    this.outside[at + j] = this.confined ? FULL_ROW : 0;
+    if (!this.confined || dy > reach) return;
+    // Tile i is within reach when it meets [centre − w, centre + w] (its nearest point within the reach).
+    const w = Math.sqrt(reach * reach - dy * dy);
+    const first = Math.max(0, Math.ceil((this.centreX - w - this.minX) / this.tileWidth - 1));
+    const last = Math.min(TILE_GRID - 1, Math.floor((this.centreX + w - this.minX) / this.tileWidth));
+    if (first <= last) this.outside[at + j] = FULL_ROW & ~((FULL_ROW >>> (TILE_GRID - 1 - last)) & (FULL_ROW << first));
   }
 
   /**
@@ -246,7 +382,7 @@ export class LightTiles {
     this.shadowPlaneCount = 0;
     this.umbraPlaneCount = 0;
     if (this.diskMeetsRecord()) {
-      this.shadowed.fill(1);
+      this.shadowed.fill(FULL_ROW);
       return false;
     }
     this.findPlanes();
@@ -291,14 +427,15 @@ export class LightTiles {
         }
         const diskSide = nx * dx + ny * dy;
         const eps = this.slack;
-        if (least >= -eps) {
-          // The record on the + side: the disk too (same side) or opposite.
-          if (diskSide > 0) this.addUmbraPlane(-nx, -ny, -(nx * vx + ny * vy) - eps);
-          else this.addShadowPlane(-nx, -ny, -(nx * vx + ny * vy) + eps);
-        } else if (most <= eps) {
-          if (diskSide < 0) this.addUmbraPlane(nx, ny, nx * vx + ny * vy - eps);
-          else this.addShadowPlane(nx, ny, nx * vx + ny * vy + eps);
-        }
+        // The record on the + side (sign −1: the plane keeps that side) or the − side; the disk on
+        // the same side (the umbra's plane) or the other (the shadow region's).
+        const sign = least >= -eps ? -1 : most <= eps ? 1 : 0;
+        if (sign === 0) continue;
+        const umbra = sign * diskSide < 0, plane = this.plane;
+        plane[0] = sign * nx;
+        plane[1] = sign * ny;
+        plane[2] = sign * (nx * vx + ny * vy) + (umbra ? -eps : eps);
+        this.addPlane(umbra);
       }
     }
     let nearest2 = Infinity, nearestX = 0, nearestY = 0;
@@ -308,9 +445,14 @@ export class LightTiles {
       if (length > 0) {
         // Outward normal of a counter-clockwise edge; the centre's distance outward.
         const nx = ey / length, ny = -ex / length, outward = nx * (cx - ax) + ny * (cy - ay);
-        if (outward > r) this.addShadowPlane(nx, ny, nx * ax + ny * ay + this.slack);
+        const plane = this.plane;
+        plane[0] = nx;
+        plane[1] = ny;
+        plane[2] = nx * ax + ny * ay + this.slack;
+        if (outward > r) this.addPlane(false);
         // The umbra needs every edge some disk point lies outside of.
-        if (outward > -r) this.addUmbraPlane(nx, ny, nx * ax + ny * ay - this.slack);
+        plane[2] = nx * ax + ny * ay - this.slack;
+        if (outward > -r) this.addPlane(true);
       }
       const along = length > 0 ? Math.min(Math.max(((cx - ax) * ex + (cy - ay) * ey) / (length * length), 0), 1) : 0;
       const px = ax + along * ex, py = ay + along * ey, d2 = (px - cx) * (px - cx) + (py - cy) * (py - cy);
@@ -323,48 +465,63 @@ export class LightTiles {
     const distance = Math.sqrt(nearest2);
     if (distance > 0) {
       const nx = (cx - nearestX) / distance, ny = (cy - nearestY) / distance;
-      this.addShadowPlane(nx, ny, nx * nearestX + ny * nearestY + this.slack);
+      const plane = this.plane;
+      plane[0] = nx;
+      plane[1] = ny;
+      plane[2] = nx * nearestX + ny * nearestY + this.slack;
+      this.addPlane(false);
     }
   }
 
-  /** Adds `a·x + b·y ≤ c` (a region's side of the line, widened by the slack) to the shadow region's half-planes. */
-  private addShadowPlane(a: number, b: number, c: number): void {
-    setPlane(this.shadowPlanes, this.shadowPlaneCount++, a, b, c);
+  /** Adds `plane` (`a·x + b·y ≤ c`, the slack already in c) to the umbra's half-planes or the shadow region's. */
+  private addPlane(umbra: boolean): void {
+    const planes = umbra ? this.umbraPlanes : this.shadowPlanes, k = 3 * (umbra ? this.umbraPlaneCount++ : this.shadowPlaneCount++);
+    planes[k] = this.plane[0];
+    planes[k + 1] = this.plane[1];
+    planes[k + 2] = this.plane[2];
   }
 
-  /** Adds `a·x + b·y ≤ c` (narrowed by the slack) to the umbra's half-planes. */
-  private addUmbraPlane(a: number, b: number, c: number): void {
-    setPlane(this.umbraPlanes, this.umbraPlaneCount++, a, b, c);
-  }
-
-  /** Marks in `mask` the tiles the loaded record's shadow region touches. */
-  private markShadowRegion(mask: Uint8Array): void {
+  /** Marks in `shadowed` the tiles the loaded record's shadow region touches. */
+  private markShadowRegion(): void {
     this.clipBox(this.shadowPlanes, this.shadowPlaneCount);
-    this.rasterize(mask, false);
+    this.markTouched(this.shadowed);
   }
 
-  /** Marks dark the tiles wholly inside the loaded record's umbra. */
+  /** Marks in `darkened` the tiles wholly inside the loaded record's umbra. */
   private markUmbra(): void {
     this.clipBox(this.umbraPlanes, this.umbraPlaneCount);
-    this.rasterize(this.dark, true);
+    this.markCovered(this.darkened);
   }
 
-  /** Marks in `mask` the tiles the loaded record's bounding box touches. */
-  private markRecordBox(mask: Uint8Array): void {
-    const xs = this.xs, ys = this.ys, p = this.polygon;
-    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  /** Marks in `occupied` the tiles the loaded record's bounding box touches. */
+  private markRecordBox(): void {
+    const xs = this.xs, ys = this.ys, box = this.box;
+    box[0] = box[1] = Infinity;
+    box[2] = box[3] = -Infinity;
     for (let k = 0; k < this.pointCount; k++) {
-      minX = Math.min(minX, xs[k]);
-      maxX = Math.max(maxX, xs[k]);
-      minY = Math.min(minY, ys[k]);
-      maxY = Math.max(maxY, ys[k]);
+      box[0] = Math.min(box[0], xs[k]);
+      box[1] = Math.min(box[1], ys[k]);
+      box[2] = Math.max(box[2], xs[k]);
+      box[3] = Math.max(box[3], ys[k]);
     }
-    p[0] = minX - this.slack; p[1] = minY - this.slack;
-    p[2] = maxX + this.slack; p[3] = minY - this.slack;
-    p[4] = maxX + this.slack; p[5] = maxY + this.slack;
-    p[6] = minX - this.slack; p[7] = maxY + this.slack;
-    this.polygonCount = 4;
-    this.rasterize(mask, false);
+    this.markOccupied();
+  }
+
+  /** Marks in `occupied` the tiles hull `hull`'s box in `bounds` touches. */
+  private markBox(bounds: Float64Array, hull: number): void {
+    for (let k = 0; k < 4; k++) this.box[k] = bounds[4 * hull + k];
+    this.markOccupied();
+  }
+
+  /** Marks in `occupied` the tiles `box` touches, widened by the slack. */
+  private markOccupied(): void {
+    const minX = this.box[0], minY = this.box[1], maxX = this.box[2], maxY = this.box[3];
+    const first = Math.max(0, Math.floor((minX - this.slack - this.minX) / this.tileWidth));
+    const last = Math.min(TILE_GRID - 1, Math.floor((maxX + this.slack - this.minX) / this.tileWidth));
+    const firstRow = Math.max(0, Math.floor((minY - this.slack - this.minY) / this.tileHeight));
+    const lastRow = Math.min(TILE_GRID - 1, Math.floor((maxY + this.slack - this.minY) / this.tileHeight));
+    if (first > last) return;
+    for (let j = firstRow; j <= lastRow; j++) markSpan(this.occupied, j, first, last);
   }
 
   /** Sets the polygon to the light's box clipped by `count` half-planes. */
@@ -372,27 +529,39 @@ export class LightTiles {
     const p = this.polygon, x0 = this.minX, y0 = this.minY, x1 = x0 + TILE_GRID * this.tileWidth, y1 = y0 + TILE_GRID * this.tileHeight;
     p[0] = x0; p[1] = y0; p[2] = x1; p[3] = y0; p[4] = x1; p[5] = y1; p[6] = x0; p[7] = y1;
     this.polygonCount = 4;
-    for (let k = 0; k < count && this.polygonCount > 0; k++) this.clip(planes[3 * k], planes[3 * k + 1], planes[3 * k + 2]);
+    for (let k = 0; k < count && this.polygonCount > 0; k++) this.clip(planes, k);
   }
 
-  /** Clips the polygon to `a·x + b·y ≤ c` (Sutherland–Hodgman; a convex polygon stays convex). */
-  private clip(a: number, b: number, c: number): void {
+  /** Clips the polygon to the `k`-th of `planes`, `a·x + b·y ≤ c` (Sutherland–Hodgman; a convex polygon stays convex); a plane it lies within changes nothing. */
+  private clip(planes: Float64Array, k: number): void {
+    const a = planes[3 * k], b = planes[3 * k + 1], c = planes[3 * k + 2];
     const from = this.polygon, to = this.clipped, n = this.polygonCount;
-    let m = 0;
-    for (let k = 0; k < n; k++) {
-      const px = from[2 * k], py = from[2 * k + 1], q = (k + 1) % n, qx = from[2 * q], qy = from[2 * q + 1];
-      const sp = a * px + b * py - c, sq = a * qx + b * qy - c;
-      if (sp <= 0) {
-        to[2 * m] = px;
-        to[2 * m + 1] = py;
-        m++;
+    let outside = false;
+    for (let i = 0; i < n; i++) {
+      if (a * from[2 * i] + b * from[2 * i + 1] > c) {
+        outside = true;
+        break;
       }
+    }
+    if (!outside) return;
+    let m = 0, px = from[2 * n - 2], py = from[2 * n - 1], sp = a * px + b * py - c;
+    for (let i = 0; i < n; i++) {
+      const qx = from[2 * i], qy = from[2 * i + 1], sq = a * qx + b * qy - c;
+      // The edge from the previous corner p to q: its crossing, then q if inside.
       if ((sp < 0 && sq > 0) || (sp > 0 && sq < 0)) {
         const t = sp / (sp - sq);
         to[2 * m] = px + t * (qx - px);
         to[2 * m + 1] = py + t * (qy - py);
         m++;
       }
+      if (sq <= 0) {
+        to[2 * m] = qx;
+        to[2 * m + 1] = qy;
+        m++;
+      }
+      px = qx;
+      py = qy;
+      sp = sq;
     }
     this.polygon = to;
     this.clipped = from;
@@ -400,72 +569,124 @@ export class LightTiles {
   }
 
   /**
-   * Marks in `mask` the tiles the convex polygon touches (`inner` false) or wholly covers (`inner`
-   * true), row by row: within a row's band the polygon's left edge is convex and its right edge
-   * concave in y, so the x it covers at every height of the band lies between the larger of its
-   * left ends at the band's two sides and the smaller of the right ends (when it spans the band).
+   * Marks in `mask` the tiles the convex polygon touches: per tile row, the x range of its corners
+   * in the row's band (both rows, for a corner on their boundary) and of its edges' crossings of the
+   * band's sides, in one pass over the edges.
    */
-  private rasterize(mask: Uint8Array, inner: boolean): void {
-    const p = this.polygon, n = this.polygonCount;
+  private markTouched(mask: Int32Array): void {
+    const p = this.polygon, n = this.polygonCount, th = this.tileHeight, y0 = this.minY;
     if (n < 3) return;
     let minY = Infinity, maxY = -Infinity;
     for (let k = 0; k < n; k++) {
       minY = Math.min(minY, p[2 * k + 1]);
       maxY = Math.max(maxY, p[2 * k + 1]);
     }
-    const th = this.tileHeight, tw = this.tileWidth;
-    const firstRow = Math.max(0, Math.floor((minY - this.minY) / th)), lastRow = Math.min(TILE_GRID - 1, Math.floor((maxY - this.minY) / th));
-    for (let j = firstRow; j <= lastRow; j++) {
-      const y0 = this.minY + j * th, y1 = y0 + th;
-      let left: number, right: number;
-      if (inner) {
-        if (y0 < minY || y1 > maxY) continue;
-        this.spanWithin(y0, y0);
-        left = this.spanLeft;
-        right = this.spanRight;
-        this.spanWithin(y1, y1);
-        left = Math.max(left, this.spanLeft);
-        right = Math.min(right, this.spanRight);
-        const first = Math.ceil((left - this.minX) / tw), last = Math.floor((right - this.minX) / tw) - 1;
-        for (let i = Math.max(first, 0); i <= Math.min(last, TILE_GRID - 1); i++) mask[j * TILE_GRID + i] = 1;
-      } else {
-        this.spanWithin(Math.max(y0, minY), Math.min(y1, maxY));
-        left = this.spanLeft;
-        right = this.spanRight;
-        const first = Math.floor((left - this.minX) / tw), last = Math.floor((right - this.minX) / tw);
-        for (let i = Math.max(first, 0); i <= Math.min(last, TILE_GRID - 1); i++) mask[j * TILE_GRID + i] = 1;
-      }
-    }
-  }
-
-  /** Sets `spanLeft` and `spanRight` to the polygon's x range over heights [y0, y1] (within its own): its corners there and its crossings of both heights. */
-  private spanWithin(y0: number, y1: number): void {
-    const p = this.polygon, n = this.polygonCount;
-    let left = Infinity, right = -Infinity;
+    const firstRow = Math.max(0, Math.floor((minY - y0) / th)), lastRow = Math.min(TILE_GRID - 1, Math.floor((maxY - y0) / th));
+    if (firstRow > lastRow) return;
+    const left = this.rowLeft, right = this.rowRight;
+    left.fill(Infinity, firstRow, lastRow + 1);
+    right.fill(-Infinity, firstRow, lastRow + 1);
     for (let k = 0; k < n; k++) {
-      const px = p[2 * k], py = p[2 * k + 1];
-      if (py >= y0 && py <= y1) {
-        left = Math.min(left, px);
-        right = Math.max(right, px);
+      const px = p[2 * k], py = p[2 * k + 1], q = k + 1 < n ? k + 1 : 0, qx = p[2 * q], qy = p[2 * q + 1];
+      // A corner on a boundary is in both rows (written by hand, as below: a double passed to a
+      // call V8 does not inline would be boxed).
+      const at = (py - y0) / th, row = Math.floor(at);
+      for (let r = row === at ? row - 1 : row; r <= row; r++) {
+        if (r < firstRow || r > lastRow) continue;
+        if (px < left[r]) left[r] = px;
+        if (px > right[r]) right[r] = px;
       }
-      const q = (k + 1) % n, qx = p[2 * q], qy = p[2 * q + 1];
-      for (let side = 0; side < 2; side++) {
-        const y = side === 0 ? y0 : y1;
-        if ((py - y) * (qy - y) < 0) {
-          const x = px + (y - py) / (qy - py) * (qx - px);
-          left = Math.min(left, x);
-          right = Math.max(right, x);
+      if (py === qy) continue;
+      const low = Math.min(py, qy), high = Math.max(py, qy);
+      for (let b = Math.max(firstRow, Math.floor((low - y0) / th)), end = Math.min(lastRow + 1, Math.ceil((high - y0) / th)); b <= end; b++) {
+        const y = y0 + b * th;
+        if (y <= low || y >= high) continue;
+        const x = px + ((y - py) / (qy - py)) * (qx - px);
+        for (let r = b - 1; r <= b; r++) {
+          if (r < firstRow || r > lastRow) continue;
+          if (x < left[r]) left[r] = x;
+          if (x > right[r]) right[r] = x;
         }
       }
     }
-    this.spanLeft = left;
-    this.spanRight = right;
+    const tw = this.tileWidth;
+    for (let j = firstRow; j <= lastRow; j++) {
+      if (left[j] > right[j]) continue;
+      const first = Math.max(0, Math.floor((left[j] - this.minX) / tw)), last = Math.min(TILE_GRID - 1, Math.floor((right[j] - this.minX) / tw));
+      if (first <= last) markSpan(mask, j, first, last);
+    }
   }
+
+  /**
+   * Marks in `mask` the tiles the convex polygon wholly covers: within a row's band its left edge is
+   * convex and its right edge concave in y, so the x it covers at every height of the band lies
+   * between the larger of its chord's left ends at the band's two sides and the smaller of the right
+   * ends (when it spans the band). The chords come from one pass over the edges.
+   */
+  private markCovered(mask: Int32Array): void {
+    const p = this.polygon, n = this.polygonCount, th = this.tileHeight, y0 = this.minY;
+    if (n < 3) return;
+    let minY = Infinity, maxY = -Infinity;
+    for (let k = 0; k < n; k++) {
+      minY = Math.min(minY, p[2 * k + 1]);
+      maxY = Math.max(maxY, p[2 * k + 1]);
+    }
+    // The tile row boundaries within the polygon's height.
+    const first = Math.max(0, Math.ceil((minY - y0) / th)), last = Math.min(TILE_GRID, Math.floor((maxY - y0) / th));
+    if (last - first < 1) return;
+    const left = this.chordLeft, right = this.chordRight;
+    left.fill(Infinity, first, last + 1);
+    right.fill(-Infinity, first, last + 1);
+    for (let k = 0; k < n; k++) {
+      const px = p[2 * k], py = p[2 * k + 1], q = k + 1 < n ? k + 1 : 0, qx = p[2 * q], qy = p[2 * q + 1];
+      const b = Math.round((py - y0) / th);
+      if (b >= first && b <= last && y0 + b * th === py) {
+        if (px < left[b]) left[b] = px;
+        if (px > right[b]) right[b] = px;
+      }
+      if (py === qy) continue;
+      const low = Math.min(py, qy), high = Math.max(py, qy);
+      for (let c = Math.max(first, Math.floor((low - y0) / th)), end = Math.min(last, Math.ceil((high - y0) / th)); c <= end; c++) {
+        const y = y0 + c * th;
+        if (y <= low || y >= high) continue;
+        const x = px + ((y - py) / (qy - py)) * (qx - px);
+        if (x < left[c]) left[c] = x;
+        if (x > right[c]) right[c] = x;
+      }
+    }
+    const tw = this.tileWidth;
+    for (let j = first; j < last; j++) {
+      if (y0 + j * th < minY || y0 + (j + 1) * th > maxY) continue;
+      const from = Math.max(left[j], left[j + 1]), to = Math.min(right[j], right[j + 1]);
+      const firstTile = Math.max(0, Math.ceil((from - this.minX) / tw)), lastTile = Math.min(TILE_GRID - 1, Math.floor((to - this.minX) / tw) - 1);
+      if (firstTile <= lastTile) markSpan(mask, j, firstTile, lastTile);
+    }
+  }
+
 }
 
-/** Writes the half-plane `a·x + b·y ≤ c` as the `k`-th of `planes`. */
-function setPlane(planes: Float64Array, k: number, a: number, b: number, c: number): void {
-  planes[3 * k] = a;
-  planes[3 * k + 1] = b;
-  planes[3 * k + 2] = c;
+/** The class (TILE_CLASSES) of a tile from its bits in the outside, dark and exact masks. */
+function classOf(outside: number, dark: number, exact: number): number {
+  if (outside !== 0) return TILE_CLASSES.outside;
+  if (dark !== 0) return TILE_CLASSES.dark;
+  return exact !== 0 ? TILE_CLASSES.exact : TILE_CLASSES.lit;
+}
+
+/** Sets tiles `first` to `last` (0 ≤ first ≤ last < TILE_GRID) in the mask `masks[index]`. */
+function markSpan(masks: Int32Array, index: number, first: number, last: number): void {
+  masks[index] |= (FULL_ROW >>> (TILE_GRID - 1 - last)) & (FULL_ROW << first);
+}
+
+/** The set bits of a 32-bit word. */
+function bitCount(word: number): number {
+  let v = word - ((word >>> 1) & 0x55555555);
+  v = (v & 0x33333333) + ((v >>> 2) & 0x33333333);
+  return Math.imul((v + (v >>> 4)) & 0x0f0f0f0f, 0x01010101) >>> 24;
+}
+
+/** `words` long, beginning with `from`. */
+function grown(from: Int32Array, words: number): Int32Array<ArrayBuffer> {
+  const to = new Int32Array(words);
+  to.set(from);
+  return to;
 }

@@ -14,6 +14,12 @@ const ANGLE_MARGIN = 1e-3;
 const ASIN_CUBIC = Math.PI / 2 - 1;
 
 /**
+ * A light's disk and reach as its bins and tiles are filed for: `[x, y, radius, reach, bucketWidth]`.
+ * An array, not arguments: a double passed to a call V8 does not inline is boxed, every light and frame.
+ */
+export type FiledDisk = Float64Array;
+
+/**
  * Per shadowed light, the hulls that can hide part of its disk, filed into angular bins around its
  * centre (see shadowLayout), in two lists per bin (the still hulls and the moving ones, each filed
  * between a `beginLight` and an `endLight` into its own {@link BinSpan}), each ordered nearest
@@ -102,14 +108,14 @@ export class ShadowBins {
   }
 
   /**
-   * Starts a list of the light with the given centre and disk radius, ordered by distance buckets
-   * `bucketWidth` wide ({@link bucketWidthOf} its reach: it adds nothing farther).
+   * Starts a list of the light filed for `disk` (see {@link FiledDisk}), ordered by distance buckets
+   * of its bucket width ({@link bucketWidthOf} its reach: it adds nothing farther).
    */
-  beginLight(x: number, y: number, radius: number, bucketWidth: number): void {
-    this.lightX = x;
-    this.lightY = y;
-    this.lightRadius = radius;
-    this.bucketWidth = bucketWidth;
+  beginLight(disk: FiledDisk): void {
+    this.lightX = disk[0];
+    this.lightY = disk[1];
+    this.lightRadius = disk[2];
+    this.bucketWidth = disk[4];
     this.candidateCount = 0;
   }
 

@@ -31,10 +31,10 @@ function classify({ hulls, centre, radius, reach, solid }: Case): { classes: Uin
   for (const i of indices) geometry.prepare(i);
   const tiles = new LightTiles();
   const bounds = Float64Array.of(centre[0] - reach, centre[1] - reach, centre[0] + reach, centre[1] + reach);
-  tiles.beginLight(bounds, centre[0], centre[1], radius, reach, true, solid);
+  tiles.beginLight(bounds, Float64Array.of(centre[0], centre[1], radius, reach), true, solid);
   tiles.addStillHulls(geometry, indices, indices.length);
   tiles.endLight(0);
-  return { classes: tiles.classes.slice(0, TILE_GRID * TILE_GRID), bounds };
+  return { classes: Uint8Array.from({ length: TILE_GRID * TILE_GRID }, (_, tile) => tiles.tileClass(0, tile)), bounds };
 }
 
 function samplesWithRim(centre: Point, radius: number): Float64Array {
