@@ -183,6 +183,9 @@ export const DIRECTIONAL_SCENES: DirectionalScene[] = [
   scene('a concave building under the sun with Occluded hulls', { rotation: 0.4, angularSize: 0.12 }, [uShape(30, 30, 70, 56, 14, 32), box(120, 20, 14, 14)], { shadowType: 'occluded' }),
   scene('Illuminated hulls are lit and cast shadows', { rotation: -2.5, angularSize: 0.2 }, [box(70, 50, 24, 16), [[30, 80], [50, 70], [44, 100]]], { shadowType: 'illuminated' }),
   scene('fences and posts across a slanted sun', { rotation: 0.9, angularSize: 0.05 }, [box(100, 80, 8, 8)], { polylines: [[[20, 40], [60, 30], [80, 50]], [[110, 20], [140, 25]]] }),
+  // Seen from behind, the boxes cut the wide sun into up to eight slices: more disjoint intervals
+  // than the union keeps as middles.
+  scene('a column of eight 6 × 6 boxes under a wide sun', { rotation: 0.1, angularSize: 1.4 }, Array.from({ length: 8 }, (_, k) => box(40, 6 + 14 * k, 6, 6))),
 ];
 
 /** The scene as compareToReference counts full light: one light of the sun's colour × intensity. */

@@ -26,7 +26,8 @@ const snap = (value: number) => Math.round(value * 64) / 64;
  * polylines may overlap one another and reach past the image. Then 1–3 lights,
  * anywhere within 8 pixels of the image, centre outside every hull (at least half a pixel from any
  * outline) with a disk free to overlap hulls: radius 0 one time in five, else 1–30; range 20–100;
- * white or coloured, intensity 0.5–1.5.
+ * white or coloured, intensity 0.5–1.5. One scene in four adds a row of 5–8 thin posts before the
+ * first light, whose disk becomes wider than their gaps.
  */
 export function randomScene(seed: number, width: number, height: number): ReferenceScene {
   const random = createRandom(seed);
@@ -87,6 +88,25 @@ export function randomScene(seed: number, width: number, height: number): Refere
     const intensity = snap(between(0.5, 1.5));
     if (intensity !== 1) light.intensity = intensity;
     lights.push(light);
+  }
+  // One scene in four: a row of 5–8 thin posts across the first light's axis, before a disk wider
+  // than their gaps (and clear of them), which cut it into more slices than the union keeps as
+  // middles. Drawn last, so the rest of the scene is as without it.
+  if (lights.length > 0 && random() < 0.25) {
+    const light = lights[0], count = integer(5, 8), size = between(1, 3), gap = between(2, 5);
+    const angle = between(0, 2 * Math.PI), distance = between(15, 35), radius = snap(between(10, distance - size - 1));
+    const [lx, ly] = light.position, ax = Math.cos(angle), ay = Math.sin(angle);
+    const posts = Array.from({ length: count }, (_, k): Point[] => {
+      const along = (k - (count - 1) / 2) * (size + gap);
+      const x = lx + distance * ax - along * ay, y = ly + distance * ay + along * ax;
+      return transform([[-size / 2, -size / 2], [size / 2, -size / 2], [size / 2, size / 2], [-size / 2, size / 2]], x, y, angle, 1);
+    });
+    // Every disk clear of the posts (a disk overlapping many of them is the quadrature's case, not this one's).
+    const clear = (x: number, y: number, r: number) => posts.every((post) => post.every(([px, py]) => Math.hypot(px - x, py - y) > r + size + 1));
+    if (lights.every(({ position, radius: r }, i) => clear(position[0], position[1], i === 0 ? radius : r))) {
+      hulls.push(...posts);
+      light.radius = radius;
+    }
   }
   return { name: `random scene (seed ${seed})`, width, height, lights, hulls, polylines };
 }

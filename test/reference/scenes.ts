@@ -115,6 +115,10 @@ export const REFERENCE_SCENES: readonly ReferenceScene[] = [
   // by hulls that each hide a different part of it.
   { name: 'row of three 2×2 posts (r=12)', width: WIDTH, height: HEIGHT,
     lights: [{ position: [30, 60], range: 150, radius: 12 }], hulls: [box(70, 53, 2, 2), box(70, 59, 2, 2), box(70, 65, 2, 2)] },
+  // Six posts across a light wider than their column: behind them the disk is cut into up to six
+  // slices, more disjoint intervals than the union keeps as middles.
+  { name: 'column of six 3×3 posts before a wide light (r=40)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [24, 60], range: 150, radius: 40 }], hulls: Array.from({ length: 6 }, (_, k) => box(70, 40 + 7 * k, 3, 3)) },
   // Four touching crates, each its own hull, lit from two sides: the lights add up, and neither
   // may leak through the seams between crates.
   { name: '2×2 touching crates, two lights (r=8, r=6)', width: WIDTH, height: HEIGHT,
