@@ -87,6 +87,9 @@ export class LightTiles {
   private polygon = new Float64Array(2 * POLYGON_CAPACITY);
   private clipped = new Float64Array(2 * POLYGON_CAPACITY);
   private polygonCount = 0;
+  /** The polygon's least and greatest y, as `measurePolygonHeight` found them. */
+  private polygonMinY = 0;
+  private polygonMaxY = 0;
   /** The loaded record's corners without repeats, `pointCount` of them, counter-clockwise. */
   private readonly xs = new Float64Array(RECORD_POINTS);
   private readonly ys = new Float64Array(RECORD_POINTS);
@@ -568,6 +571,18 @@ export class LightTiles {
     this.polygonCount = m;
   }
 
+  /** Sets `polygonMinY` and `polygonMaxY` (fields, not a result: see FULL_ROW on doubles across calls). */
+  private measurePolygonHeight(): void {
+    const p = this.polygon;
+    let minY = Infinity, maxY = -Infinity;
+    for (let k = 0; k < this.polygonCount; k++) {
+      minY = Math.min(minY, p[2 * k + 1]);
+      maxY = Math.max(maxY, p[2 * k + 1]);
+    }
+    this.polygonMinY = minY;
+    this.polygonMaxY = maxY;
+  }
+
   /**
    * Marks in `mask` the tiles the convex polygon touches: per tile row, the x range of its corners
    * in the row's band (both rows, for a corner on their boundary) and of its edges' crossings of the
@@ -576,11 +591,8 @@ export class LightTiles {
   private markTouched(mask: Int32Array): void {
     const p = this.polygon, n = this.polygonCount, th = this.tileHeight, y0 = this.minY;
     if (n < 3) return;
-    let minY = Infinity, maxY = -Infinity;
-    for (let k = 0; k < n; k++) {
-      minY = Math.min(minY, p[2 * k + 1]);
-      maxY = Math.max(maxY, p[2 * k + 1]);
-    }
+    this.measurePolygonHeight();
+    const minY = this.polygonMinY, maxY = this.polygonMaxY;
     const firstRow = Math.max(0, Math.floor((minY - y0) / th)), lastRow = Math.min(TILE_GRID - 1, Math.floor((maxY - y0) / th));
     if (firstRow > lastRow) return;
     const left = this.rowLeft, right = this.rowRight;
@@ -626,11 +638,8 @@ export class LightTiles {
   private markCovered(mask: Int32Array): void {
     const p = this.polygon, n = this.polygonCount, th = this.tileHeight, y0 = this.minY;
     if (n < 3) return;
-    let minY = Infinity, maxY = -Infinity;
-    for (let k = 0; k < n; k++) {
-      minY = Math.min(minY, p[2 * k + 1]);
-      maxY = Math.max(maxY, p[2 * k + 1]);
-    }
+    this.measurePolygonHeight();
+    const minY = this.polygonMinY, maxY = this.polygonMaxY;
     // The tile row boundaries within the polygon's height.
     const first = Math.max(0, Math.ceil((minY - y0) / th)), last = Math.min(TILE_GRID, Math.floor((maxY - y0) / th));
     if (last - first < 1) return;
