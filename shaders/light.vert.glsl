@@ -36,7 +36,7 @@ void main() {
 #ifdef TILED
   int tile = int(a_corner.y) * TILE_GRID + int(a_corner.x);
   float code = floor(texelFetch(u_tileCodes, ivec2(tile, int(u_tileDraw.x)), 0).r * 255.0 + 0.5);
-  float tileClass = mod(code, 4.0), runLength = floor(code / 4.0) + 1.0;
+  float tileClass = mod(code, float(TILE_CLASS_CODES)), runLength = floor(code / float(TILE_CLASS_CODES)) + 1.0;
   vec2 corner = a_corner.xy + vec2(a_corner.z * runLength, a_corner.w);
   vec2 world = u_tiles.xy + corner * u_tiles.zw;
   v_uv = inverse(mat2(u_quad[1], u_quad[2])) * (world - u_quad[0]);

@@ -32,6 +32,12 @@
 // light it takes a second pass, lit as from inside that hull (the holder): of the holder's records,
 // only their outline edges facing the pixel hide anything (see seenFromHolder).
 //
+// Built with LEAN_SHADOW, the lean program: for pixels whose records that hide anything are all in
+// front and none of which holds the pixel for an Occluded light (the lean tiles of
+// src/geometry/LightTiles.ts: no record meets the disk), it leaves out what only the others need,
+// the records seen past (they hide nothing there), the closed form, the quadrature and the holder
+// pass, and is as exact as the general program.
+//
 // Needs: v_world (the pixel's world position), u_shadow (light centre xy, disk radius, bin row),
 // u_binning (how the bins were filed, below) and u_shadowType (SHADOW_SOLID, SHADOW_ILLUMINATED or
 // SHADOW_OCCLUDED).
@@ -158,7 +164,11 @@ bool seenFromHolder(int record) {
 // pixel); false when it hides nothing (see seenFromHolder).
 bool loadRecord(int record) {
   loadRecordPoints(record);
+#ifdef LEAN_SHADOW
+  return true;
+#else
   return holderFirst < 0 || seenFromHolder(record);
+#endif
 }
 
 // Whether the pixel lies inside the loaded record or on its outline: left of or on every edge
@@ -504,7 +514,9 @@ float visibleFraction(int shadowType, out int heldBy) {
         return shadowType == SHADOW_SOLID ? 0.0 : 1.0;
       }
       if (kind == IN_FRONT) insertInterval(low, high);
+#ifndef LEAN_SHADOW
       if (kind == SEEN_PAST) addPastRecord(record, records);
+#endif
     }
     if (coverIsWhole() && !seeksHolder) return 0.0;
     seekingHolders = coverIsWhole();
@@ -514,11 +526,13 @@ float visibleFraction(int shadowType, out int heldBy) {
   // Loops of no trips where they do not apply: skipped as a whole, where a branch may run both sides.
   seekingHolders = false;
   for (int once = 0; once < (unionOverflowed && pastCount == 0 ? 1 : 0); once++) hidden = coveredBySweep();
+#ifndef LEAN_SHADOW
   bool closedForm = pastCount > 0 && pastFirst >= 0 && (insideDisk || middleCount == 0);
   for (int once = 0; once < (closedForm ? 1 : 0); once++) hidden += hiddenBehind(pastFirst, pastLast, pastIsFan, !insideDisk, lowCover, highCover);
   for (int once = 0; once < (pastCount > 0 && !closedForm ? 1 : 0); once++) hidden += hiddenPast();
 #ifdef SHADOW_STATISTICS
   sweptPixel = pastCount > 0 && !closedForm;
+#endif
 #endif
   return clamp(1.0 - hidden, 0.0, 1.0);
 }
@@ -531,12 +545,16 @@ float shadowVisibility() {
   beginShadow();
   int shadowType = int(u_shadowType + 0.5);
   holderFirst = -1;
+  int heldBy;
+#ifdef LEAN_SHADOW
+  return visibleFraction(shadowType, heldBy);
+#else
   float visible = 1.0;
   for (int pass = 0; pass < 2; pass++) {
-    int heldBy;
     visible = visibleFraction(shadowType, heldBy);
     if (heldBy < 0 || shadowType != SHADOW_OCCLUDED) break;
     holderFirst = heldBy;
   }
   return visible;
+#endif
 }

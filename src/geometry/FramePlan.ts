@@ -6,7 +6,7 @@ import { LightTiles } from './LightTiles';
 import { isInsidePolygon } from './polygon';
 import { scissorOf } from './scissor';
 import { type BinSpan, bucketWidthOf, DirectionalStrips, DISTANCE_BUCKETS, type FiledDisk, grow, ShadowBins } from './ShadowBins';
-import { BIN_COUNT, MOVING_LIST, STATIC_LIST, TILE_GRID } from './shadowLayout';
+import { BIN_COUNT, MOVING_LIST, SHADOW_TYPE_CODES, STATIC_LIST, TILE_CLASS_COUNT, TILE_GRID } from './shadowLayout';
 import type { ShadowGeometry } from './ShadowGeometry';
 
 /** What the passes need to draw one light: its quad, scissor, and the row of its shadow bins. */
@@ -25,7 +25,7 @@ export class LightDraw {
   /** The light's row in the plan's `bins` and its `tiles`, when `hullCount > 0`. */
   binRow = 0;
   /** A shadowed point light's tiles of each class (indexed by TILE_CLASSES), when `hullCount > 0`. */
-  readonly tileCounts = new Int32Array(4);
+  readonly tileCounts = new Int32Array(TILE_CLASS_COUNT);
   /** The light's filing, kept from frame to frame. */
   filing!: LightFiling;
   /** A directional light's strips over the view (its bins). */
@@ -408,7 +408,7 @@ export class FramePlan {
   /** Starts classifying the tiles of a point light's filing (see `LightTiles`): its filed bounds, disk and reach. */
   private beginTiles(filing: LightFiling): void {
     const light = filing.light;
-    this.tiles.beginLight(filing.filedBounds, filing.writeDisk(this.filedDisk), light.isConfinedToRangeDisk(), light.shadowType === 'solid');
+    this.tiles.beginLight(filing.filedBounds, filing.writeDisk(this.filedDisk), light.isConfinedToRangeDisk(), SHADOW_TYPE_CODES[light.shadowType]);
   }
 
   /**

@@ -1,4 +1,4 @@
-import { RECORD_FLOATS, RECORD_POINTS, TILE_CLASSES, TILE_GRID, TILE_IN_RUN, tileCode } from './shadowLayout';
+import { RECORD_FLOATS, RECORD_POINTS, SHADOW_TYPE_CODES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_GRID, TILE_IN_RUN, tileCode } from './shadowLayout';
 import type { FiledDisk } from './ShadowBins';
 import type { ShadowGeometry } from './ShadowGeometry';
 
@@ -10,8 +10,6 @@ const TILE_COUNT = TILE_GRID * TILE_GRID;
  * returns one: V8 boxes an int32 beyond 2^30 that crosses a call it does not inline.
  */
 const FULL_ROW = TILE_GRID === 32 ? -1 : (1 << TILE_GRID) - 1;
-/** The classes of TILE_CLASSES, 0 to 3. */
-const CLASS_COUNT = 4;
 /**
  * Slack of the geometric tests, relative to the scale of the light's box: float32 rounding in the
  * shader is about 1e-7 of the coordinates, so a pixel this far inside a region is classified as
@@ -30,8 +28,8 @@ const POLYGON_CAPACITY = 4 + 2 * RECORD_POINTS + RECORD_POINTS + 2;
  * (its filed bounds) cut into TILE_GRID² tiles, each found **lit** (no hull can hide any part of the
  * disk from any of its pixels), **dark** (one record hides the whole disk from all of them, and no
  * record lies in it where the light lights the inside of hulls), **outside** the light's reach, or
- * **exact** (anything else: the shader computes it). Lit and dark are proven, never guessed, by two
- * convex regions per record P of disk D (centre o, radius R, with D and P apart):
+ * exact (anything else: the shader computes it), **lean** or **general**. Lit and dark are proven,
+ * never guessed, by two convex regions per record P of disk D (centre o, radius R, with D and P apart):
  *
  * - **The shadow region** S(P), the points from which some segment to D meets P, lies on P's side
  *   of every line that separates P from D: the tangents from P's corners to D that have P and D on
@@ -44,6 +42,12 @@ const POLYGON_CAPACITY = 4 + 2 * RECORD_POINTS + RECORD_POINTS + 2;
  *   P's edges that some point of D lies outside of: for each d its point shadow is bounded by the
  *   two lines from d through P's silhouette corners and by P's edges facing d, whose extremes over
  *   D are those tangents and edges. A tile wholly inside is dark (inside P too, for a Solid light).
+ * - **In front.** From a point x of S(P), the disk lies wholly beyond P in P's wedge (the lean
+ *   program's one case): S(P) lies on P's side of a line that separates P from D (above), so x
+ *   and P lie on one side of it and D on the other, and every ray from x that meets P meets it
+ *   before the line and D after. From a point outside S(P), P hides nothing. So an exact tile is
+ *   lean unless a record meets the disk (then every exact tile is general) or, for an Occluded
+ *   light, a record's box touches the tile (a pixel inside a hull takes the holder pass).
  *
  * Computed when a light is filed, from the still hulls (kept with the filing, so static lights and
  * walls cost nothing per frame), and per frame a lit tile that a moving hull's shadow region
@@ -65,8 +69,11 @@ export class LightTiles {
   private keptExact = new Int32Array(TILE_GRID);
   private dark = new Int32Array(TILE_GRID);
   private exact = new Int32Array(TILE_GRID);
+  /** The exact tiles that take the general program (the others the lean one), kept and shown. */
+  private keptGeneral = new Int32Array(TILE_GRID);
+  private general = new Int32Array(TILE_GRID);
   /** Per row, its tiles of each class. */
-  private counts = new Int32Array(CLASS_COUNT);
+  private counts = new Int32Array(TILE_CLASS_COUNT);
   /** Per tile row of the light being classified: the tiles it may be shadowed in, dark in, with a record in them. */
   private readonly shadowed = new Int32Array(TILE_GRID);
   private readonly darkened = new Int32Array(TILE_GRID);
@@ -78,6 +85,7 @@ export class LightTiles {
   /** A row's classes as a moving hull leaves them, before they are shown. */
   private readonly nextDark = new Int32Array(TILE_GRID);
   private readonly nextExact = new Int32Array(TILE_GRID);
+  private readonly nextGeneral = new Int32Array(TILE_GRID);
   /** The rasterization's x range per tile row (touched) and per tile row boundary (the polygon's chord there). */
   private readonly rowLeft = new Float64Array(TILE_GRID);
   private readonly rowRight = new Float64Array(TILE_GRID);
@@ -115,6 +123,10 @@ export class LightTiles {
   private slack = 0;
   private confined = true;
   private solid = true;
+  /** Whether a pixel inside a hull takes the holder pass (an Occluded light). */
+  private holderPass = false;
+  /** Whether a record added since `beginLight` met the disk: every exact tile is then general. */
+  private diskMet = false;
 
   /** Starts a frame: no row is dirty. */
   beginFrame(): void {
@@ -123,21 +135,21 @@ export class LightTiles {
 
   /** Writes the tiles of each class in `row` (the light pass skips a class it has none of) into `out`, indexed by class. */
   writeCounts(row: number, out: Int32Array): void {
-    for (let c = 0; c < CLASS_COUNT; c++) out[c] = this.counts[row * CLASS_COUNT + c];
+    for (let c = 0; c < TILE_CLASS_COUNT; c++) out[c] = this.counts[row * TILE_CLASS_COUNT + c];
   }
 
   /** The class (TILE_CLASSES) of tile `tile` (`j × TILE_GRID + i`) of `row`, as the codes show it. */
   tileClass(row: number, tile: number): number {
     const word = row * TILE_GRID + Math.floor(tile / TILE_GRID), bit = 1 << tile % TILE_GRID;
-    return classOf(this.outside[word] & bit, this.dark[word] & bit, this.exact[word] & bit);
+    return classOf(this.outside[word] & bit, this.dark[word] & bit, this.exact[word] & bit, this.general[word] & bit);
   }
 
   /**
    * Starts classifying a light: its box `[minX, minY, maxX, maxY]` (the grid), its filed disk and
    * reach (`[x, y, radius, reach, …]`, see {@link FiledDisk}); `confined`: it adds nothing beyond
-   * its reach; `solid`: the inside of hulls is dark.
+   * its reach; `shadowType`: how it treats the inside of hulls (SHADOW_TYPE_CODES).
    */
-  beginLight(bounds: Float64Array, disk: FiledDisk, confined: boolean, solid: boolean): void {
+  beginLight(bounds: Float64Array, disk: FiledDisk, confined: boolean, shadowType: number): void {
     const x = disk[0], y = disk[1], radius = disk[2], reach = disk[3];
     this.minX = bounds[0];
     this.minY = bounds[1];
@@ -149,7 +161,9 @@ export class LightTiles {
     this.radius = Math.max(radius, MIN_RADIUS) + this.slack;
     this.reach = reach;
     this.confined = confined;
-    this.solid = solid;
+    this.solid = shadowType === SHADOW_TYPE_CODES.solid;
+    this.holderPass = shadowType === SHADOW_TYPE_CODES.occluded;
+    this.diskMet = false;
     this.shadowed.fill(0);
     this.darkened.fill(0);
     this.occupied.fill(0);
@@ -217,14 +231,20 @@ export class LightTiles {
       const outside = this.outside[at + j], dark = this.darkened[j] & ~outside & (this.solid ? FULL_ROW : ~this.occupied[j]);
       this.keptDark[at + j] = dark;
       this.keptExact[at + j] = this.shadowed[j] & ~dark & ~outside;
+      this.keptGeneral[at + j] = this.keptExact[at + j] & this.generalMask(j);
     }
-    this.show(row, this.keptDark, this.keptExact, at, true);
+    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, at, true);
+  }
+
+  /** The tiles of tile row `j` whose exact pixels take the general program, by the records added since {@link LightTiles.beginLight}. */
+  private generalMask(j: number): number {
+    return this.diskMet ? FULL_ROW : this.holderPass ? this.occupied[j] : 0;
   }
 
   /** Shows `row`'s kept classes (a light whose moving hulls left it). */
   restoreKept(row: number): void {
     this.ensureRow(row);
-    this.show(row, this.keptDark, this.keptExact, row * TILE_GRID, false);
+    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, row * TILE_GRID, false);
   }
 
   /**
@@ -237,14 +257,15 @@ export class LightTiles {
     for (let j = 0; j < TILE_GRID; j++) {
       this.writeOutside(at, j);
       this.keptDark[at + j] = 0;
-      this.keptExact[at + j] = FULL_ROW & ~this.outside[at + j];
+      this.keptExact[at + j] = this.keptGeneral[at + j] = FULL_ROW & ~this.outside[at + j];
     }
-    this.show(row, this.keptDark, this.keptExact, at, true);
+    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, at, true);
   }
 
   /**
    * Shows `row`'s kept classes as they may be with moving hulls not looked at: every lit tile
-   * exact, and, unless the light is Solid (as set by {@link LightTiles.beginLight}), every dark one.
+   * exact (general), and, unless the light is Solid (as set by {@link LightTiles.beginLight}),
+   * every dark one.
    */
   addUnknownHulls(row: number): void {
     const at = row * TILE_GRID, dark = this.nextDark, exact = this.nextExact;
@@ -252,14 +273,14 @@ export class LightTiles {
       dark[j] = this.solid ? this.keptDark[at + j] : 0;
       exact[j] = FULL_ROW & ~this.outside[at + j] & ~dark[j];
     }
-    this.show(row, dark, exact, 0, false);
+    this.show(row, dark, exact, exact, 0, false);
   }
 
   /**
    * Shows `row`'s kept classes less what the `count` moving hulls at `indices` (prepared) may
    * change: the lit tiles their shadow regions touch, and, unless `solid` (set by the last
    * {@link LightTiles.beginLight} for this light's filing, with `bounds`, disk and reach as there),
-   * the dark tiles they lie in, become exact.
+   * the dark tiles they lie in, become exact (general where `generalMask` says).
    */
   addMovingHulls(row: number, geometry: ShadowGeometry, indices: Int32Array, count: number): void {
     for (let i = 0; i < count; i++) {
@@ -275,58 +296,62 @@ export class LightTiles {
         if (!this.solid) this.markRecordBox();
       }
     }
-    const at = row * TILE_GRID, dark = this.nextDark, exact = this.nextExact;
+    const at = row * TILE_GRID, dark = this.nextDark, exact = this.nextExact, general = this.nextGeneral;
     for (let j = 0; j < TILE_GRID; j++) {
       const keptDark = this.keptDark[at + j], keptExact = this.keptExact[at + j];
       const lit = FULL_ROW & ~(this.outside[at + j] | keptDark | keptExact);
       const lost = this.solid ? 0 : keptDark & this.occupied[j];
       dark[j] = keptDark & ~lost;
       exact[j] = keptExact | (this.shadowed[j] & lit) | lost;
+      general[j] = this.keptGeneral[at + j] | (exact[j] & this.generalMask(j));
     }
-    this.show(row, dark, exact, 0, false);
+    this.show(row, dark, exact, general, 0, false);
   }
 
   /**
-   * Shows `row` with the dark and exact masks `dark[from + j]`, `exact[from + j]`: rewrites the codes
-   * of each tile row that changed (every one when `force`, for a new filing) and, when one did,
-   * recounts the row and marks it dirty.
+   * Shows `row` with the dark, exact and general masks `dark[from + j]`, `exact[from + j]`,
+   * `general[from + j]` (general within exact): rewrites the codes of each tile row that changed
+   * (every one when `force`, for a new filing) and, when one did, recounts the row and marks it dirty.
    */
-  private show(row: number, dark: Int32Array, exact: Int32Array, from: number, force: boolean): void {
+  private show(row: number, dark: Int32Array, exact: Int32Array, general: Int32Array, from: number, force: boolean): void {
     const at = row * TILE_GRID;
     let changed = false;
     for (let j = 0; j < TILE_GRID; j++) {
-      const d = dark[from + j], e = exact[from + j];
-      if (!force && d === this.dark[at + j] && e === this.exact[at + j]) continue;
+      const d = dark[from + j], e = exact[from + j], g = general[from + j];
+      if (!force && d === this.dark[at + j] && e === this.exact[at + j] && g === this.general[at + j]) continue;
       this.dark[at + j] = d;
       this.exact[at + j] = e;
+      this.general[at + j] = g;
       this.writeCodes(row, j);
       changed = true;
     }
     if (!changed) return;
     this.dirtyRows[row] = 1;
-    let outside = 0, darkCount = 0, exactCount = 0;
+    let outside = 0, darkCount = 0, exactCount = 0, generalCount = 0;
     for (let j = 0; j < TILE_GRID; j++) {
       outside += bitCount(this.outside[at + j]);
       darkCount += bitCount(this.dark[at + j]);
       exactCount += bitCount(this.exact[at + j]);
+      generalCount += bitCount(this.general[at + j]);
     }
-    const counts = this.counts, c = row * CLASS_COUNT;
+    const counts = this.counts, c = row * TILE_CLASS_COUNT;
     counts[c + TILE_CLASSES.outside] = outside;
     counts[c + TILE_CLASSES.dark] = darkCount;
-    counts[c + TILE_CLASSES.exact] = exactCount;
+    counts[c + TILE_CLASSES.lean] = exactCount - generalCount;
+    counts[c + TILE_CLASSES.exact] = generalCount;
     counts[c + TILE_CLASSES.lit] = TILE_COUNT - outside - darkCount - exactCount;
   }
 
   /** Writes the codes of tile row `j` of `row` from its masks: each run of one class drawn as one rectangle. */
   private writeCodes(row: number, j: number): void {
-    const word = row * TILE_GRID + j, outside = this.outside[word], dark = this.dark[word], exact = this.exact[word];
+    const word = row * TILE_GRID + j, outside = this.outside[word], dark = this.dark[word], exact = this.exact[word], general = this.general[word];
     const codes = this.codes, first = row * TILE_COUNT + j * TILE_GRID;
     for (let i = 0; i < TILE_GRID;) {
-      const value = classOf(outside & (1 << i), dark & (1 << i), exact & (1 << i));
+      const value = classOf(outside & (1 << i), dark & (1 << i), exact & (1 << i), general & (1 << i));
       let run = 1;
       for (; i + run < TILE_GRID; run++) {
         const bit = 1 << (i + run);
-        if (classOf(outside & bit, dark & bit, exact & bit) !== value) break;
+        if (classOf(outside & bit, dark & bit, exact & bit, general & bit) !== value) break;
       }
       codes[first + i] = tileCode(value, run);
       for (let k = 1; k < run; k++) codes[first + i + k] = TILE_IN_RUN;
@@ -343,7 +368,9 @@ export class LightTiles {
     this.keptExact = grown(this.keptExact, words);
     this.dark = grown(this.dark, words);
     this.exact = grown(this.exact, words);
-    const codes = new Uint8Array(rows * TILE_COUNT), dirty = new Uint8Array(rows), counts = new Int32Array(rows * CLASS_COUNT);
+    this.keptGeneral = grown(this.keptGeneral, words);
+    this.general = grown(this.general, words);
+    const codes = new Uint8Array(rows * TILE_COUNT), dirty = new Uint8Array(rows), counts = new Int32Array(rows * TILE_CLASS_COUNT);
     codes.set(this.codes);
     dirty.set(this.dirtyRows);
     counts.set(this.counts);
@@ -386,6 +413,7 @@ export class LightTiles {
     this.umbraPlaneCount = 0;
     if (this.diskMeetsRecord()) {
       this.shadowed.fill(FULL_ROW);
+      this.diskMet = true;
       return false;
     }
     this.findPlanes();
@@ -674,11 +702,12 @@ export class LightTiles {
 
 }
 
-/** The class (TILE_CLASSES) of a tile from its bits in the outside, dark and exact masks. */
-function classOf(outside: number, dark: number, exact: number): number {
+/** The class (TILE_CLASSES) of a tile from its bits in the outside, dark, exact and general masks. */
+function classOf(outside: number, dark: number, exact: number, general: number): number {
   if (outside !== 0) return TILE_CLASSES.outside;
   if (dark !== 0) return TILE_CLASSES.dark;
-  return exact !== 0 ? TILE_CLASSES.exact : TILE_CLASSES.lit;
+  if (exact === 0) return TILE_CLASSES.lit;
+  return general !== 0 ? TILE_CLASSES.exact : TILE_CLASSES.lean;
 }
 
 /** Sets tiles `first` to `last` (0 ≤ first ≤ last < TILE_GRID) in the mask `masks[index]`. */

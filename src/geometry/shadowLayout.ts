@@ -100,24 +100,30 @@ export const TILE_GRID = 32;
 
 /**
  * A tile's code: the first tile of a run of tiles of one class along a row holds its class and the
- * run's length, `class + 4 × (length − 1)` (below 128); the others {@link TILE_IN_RUN}. The light
- * pass draws the first as the whole run's rectangle and collapses the others: fewer, larger
- * triangles, fewer pixel blocks shaded twice along their edges.
+ * run's length, `class + TILE_CLASS_CODES × (length − 1)` (below {@link TILE_IN_RUN}); the others
+ * TILE_IN_RUN. The light pass draws the first as the whole run's rectangle and collapses the
+ * others: fewer, larger triangles, fewer pixel blocks shaded twice along their edges.
  */
 export function tileCode(tileClass: number, runLength: number): number {
-  return tileClass + 4 * (runLength - 1);
+  return tileClass + TILE_CLASS_CODES * (runLength - 1);
 }
-/** The code of a tile inside a run, drawn by the run's first tile. */
-export const TILE_IN_RUN = 128;
+/** Codes per run length: room for every class of TILE_CLASSES. */
+export const TILE_CLASS_CODES = 8;
+/** The code of a tile inside a run, drawn by the run's first tile (above every run's code: 4 + 8 × 31). */
+export const TILE_IN_RUN = 255;
 /**
  * A tile's class, what the light pass draws it with: nothing (outside the light's reach, or dark
  * where the shadows keep nothing), the plain light program (lit; dark with the colour the shadows
- * keep), or the exact shadow program.
+ * keep), the lean exact program (every record that hides part of the disk from a pixel of the
+ * tile lies wholly in front of the disk, and none holds a pixel of an Occluded light: see the
+ * chunk shadow-visibility, LEAN_SHADOW), or the general exact program.
  */
-export const TILE_CLASSES = { outside: 0, lit: 1, dark: 2, exact: 3 } as const;
+export const TILE_CLASSES = { outside: 0, lit: 1, dark: 2, lean: 3, exact: 4 } as const;
+/** How many classes TILE_CLASSES has: the length of a light's tile counts. */
+export const TILE_CLASS_COUNT = 5;
 
 /** The layout constants the shader reads, as `#define`s. */
 export const SHADOW_DEFINES: Readonly<Record<string, number>> = {
-  RECORD_TEXELS, TEXTURE_WIDTH, RECORDS_PER_ROW, BIN_COUNT, ENTRY_MAX_RECORDS, TAG_EDGE_BITS, TILE_GRID, TILE_IN_RUN,
+  RECORD_TEXELS, TEXTURE_WIDTH, RECORDS_PER_ROW, BIN_COUNT, ENTRY_MAX_RECORDS, TAG_EDGE_BITS, TILE_GRID, TILE_IN_RUN, TILE_CLASS_CODES,
   SHADOW_SOLID: SHADOW_TYPE_CODES.solid, SHADOW_ILLUMINATED: SHADOW_TYPE_CODES.illuminated, SHADOW_OCCLUDED: SHADOW_TYPE_CODES.occluded,
 };

@@ -28,9 +28,11 @@ export interface Surface {
  * polygon around its range disk when confined to it, else as its quad, with the plain program. A
  * point light, spotlight or textured light with hulls in range is drawn as the tiles of its grid
  * (see `LightTiles`): the lit tiles with the plain program, the dark ones with the plain program in
- * the colour its shadows keep (not at all when they keep none), the others with the exact program,
- * which computes the visible fraction from the shadow textures (see the chunk shadow-visibility). A
- * directional light with hulls is drawn as its quad with the exact program.
+ * the colour its shadows keep (not at all when they keep none), the others with an exact program,
+ * which computes the visible fraction from the shadow textures (see the chunk shadow-visibility):
+ * the lean one where every record that hides anything lies in front of the disk, else the general
+ * one. A directional light with hulls is drawn as its quad with an exact program: the lean one
+ * (from a disk at infinity every record is in front) but for an Occluded light (the holder pass).
  *
  * With normals the lightmap has a second attachment for the highlights, and the programs weight
  * each light by the surface's normal and material (docs/normal-maps.md); without, neither exists.
@@ -39,7 +41,8 @@ export class LightPass {
   readonly lightmap: RenderTarget;
   /**
    * Per kind of light, its programs: for a light with no hull in range (its shape), and for one
-   * with some: its lit and dark tiles (plain), its other tiles (exact; a directional light's quad).
+   * with some: its lit and dark tiles (plain), its lean tiles (lean exact; a directional light's
+   * quad), its other tiles (general exact; an Occluded directional light's quad).
    */
   private readonly programs: Record<LightKind, LightPrograms>;
   private readonly programList: readonly Program[];
@@ -80,7 +83,8 @@ export class LightPass {
         ...sourcesOf('directional', 'directional light', lightStages(shaderSources.lightDirectionalFragment, normals)),
       });
       const programsOf = (kind: LightKind): LightPrograms => ({
-        unshadowed: made[`${kind} unshadowed`], plainTiles: made[`${kind} plain tiles`] ?? null, shadowed: made[`${kind} shadowed`],
+        unshadowed: made[`${kind} unshadowed`], plainTiles: made[`${kind} plain tiles`] ?? null, lean: made[`${kind} lean`],
+        shadowed: made[`${kind} shadowed`],
       });
       this.programs = { point: programsOf('point'), spot: programsOf('spot'), textured: programsOf('textured'), directional: programsOf('directional') };
     } catch (error) {
@@ -164,7 +168,7 @@ export class LightPass {
       if (light.isConfinedToRangeDisk()) this.shapes.drawDisk();
       else this.shapes.drawQuad();
     } else if (programs.plainTiles === null) {
-      this.setUniforms(programs.shadowed, draw, this.lightColor);
+      this.setUniforms(light.shadowType === 'occluded' ? programs.shadowed : programs.lean, draw, this.lightColor);
       this.shapes.drawQuad();
     } else {
       draw.filing.writeTiles(this.tiles);
@@ -175,6 +179,7 @@ export class LightPass {
         for (let c = 0; c < 3; c++) dark[c] = this.lightColor[c] * kept[c];
         this.drawTiles(programs.plainTiles, draw, TILE_CLASSES.dark, dark);
       }
+      if (counts[TILE_CLASSES.lean] > 0) this.drawTiles(programs.lean, draw, TILE_CLASSES.lean, this.lightColor);
       if (counts[TILE_CLASSES.exact] > 0) this.drawTiles(programs.shadowed, draw, TILE_CLASSES.exact, this.lightColor);
     }
   }
@@ -276,20 +281,23 @@ export class LightPass {
 interface LightPrograms {
   unshadowed: Program;
   plainTiles: Program | null;
+  lean: Program;
   shadowed: Program;
 }
 
-/** The sources of a kind's programs, keyed `<kind> unshadowed`, `<kind> plain tiles` (but for a directional light) and `<kind> shadowed`. */
+/** The sources of a kind's programs, keyed `<kind> unshadowed`, `<kind> plain tiles` (but for a directional light), `<kind> lean` and `<kind> shadowed`. */
 function sourcesOf(kind: LightKind, name: string, stages: LightStages): Record<string, ProgramSources> {
   if (kind === 'directional') {
     return {
       [`${kind} unshadowed`]: [name, stages.vertex, stages.unshadowed],
+      [`${kind} lean`]: [`${name} with shadows, lean`, stages.vertex, stages.lean],
       [`${kind} shadowed`]: [`${name} with shadows`, stages.vertex, stages.shadowed],
     };
   }
   return {
     [`${kind} unshadowed`]: [name, stages.vertex, stages.unshadowed],
     [`${kind} plain tiles`]: [`${name}'s plain tiles`, stages.tiledVertex, stages.unshadowed],
+    [`${kind} lean`]: [`${name}'s lean exact tiles`, stages.tiledVertex, stages.lean],
     [`${kind} shadowed`]: [`${name} with shadows`, stages.tiledVertex, stages.shadowed],
   };
 }
