@@ -1,7 +1,7 @@
 import { mat4, type ReadonlyMat4 } from 'gl-matrix';
 import { FramePlan } from './geometry/FramePlan';
 import { ShadowGeometry } from './geometry/ShadowGeometry';
-import { TILE_CLASSES, TILE_GRID } from './geometry/shadowLayout';
+import { TILE_CLASSES } from './geometry/shadowLayout';
 import { isWebGL2, supportsFloatTargets } from './gl/capabilities';
 import { HostState } from './gl/HostState';
 import { RenderTarget, type TargetFormat } from './gl/RenderTarget';
@@ -702,7 +702,8 @@ export class PenumbraRenderer {
     const viewProjection = this._viewProjection;
     this.geometry.update(this._hulls);
     plan.build(this._lights, this._hulls, this.geometry, viewProjection, this.lightmapWidth, this.lightmapHeight);
-    resources.shadows.upload(this.geometry, plan.bins, plan.tiles);
+    resources.shadows.upload(this.geometry, plan.bins);
+    resources.shapes.uploadTileRectangles(plan.tiles.dirtyRows, plan.tiles.rectangles, plan.tiles.usedIndices);
     if (this._normals) this.chooseSurface(resources);
     resources.light.begin(this._ambient, viewProjection, this.surface);
     for (let i = 0; i < plan.drawCount; i++) {
@@ -816,7 +817,7 @@ export class PenumbraRenderer {
     };
     try {
       this.withHostState(() => {
-        const shapes = keep(new LightShapes(gl, TILE_GRID));
+        const shapes = keep(new LightShapes(gl));
         this.resources = {
           shapes,
           shadows: keep(new ShadowTextures(gl)),

@@ -26,6 +26,8 @@ export class LightDraw {
   binRow = 0;
   /** A shadowed point light's tiles of each class (indexed by TILE_CLASSES), when `hullCount > 0`. */
   readonly tileCounts = new Int32Array(TILE_CLASS_COUNT);
+  /** Per class of its tiles, where its rectangles' indices start in the plan's `tiles.rectangles` and how many (`LightTiles.writeLists`), when `hullCount > 0`. */
+  readonly tileLists = new Int32Array(2 * TILE_CLASS_COUNT);
   /** The light's filing, kept from frame to frame. */
   filing!: LightFiling;
   /** A directional light's strips over the view (its bins). */
@@ -153,6 +155,7 @@ export class FramePlan {
       draw.binRow = filing.row;
       if (draw.hullCount > 0 && !(draw.light instanceof DirectionalLight)) {
         this.tiles.writeCounts(filing.row, draw.tileCounts);
+        this.tiles.writeLists(filing.row, draw.tileLists);
         if (filing.unclassified) this.unclassifiedCount++;
       }
       this.draws[i] = this.draws[this.drawCount];

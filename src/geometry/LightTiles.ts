@@ -1,9 +1,11 @@
-import { RECORD_FLOATS, RECORD_POINTS, SHADOW_TYPE_CODES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_GRID, TILE_IN_RUN, tileCode } from './shadowLayout';
+import { RECORD_FLOATS, RECORD_POINTS, ROW_INDICES, SHADOW_TYPE_CODES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_GRID, tileCorner } from './shadowLayout';
 import type { FiledDisk } from './ShadowBins';
 import type { ShadowGeometry } from './ShadowGeometry';
 
 /** Tiles per light. */
 const TILE_COUNT = TILE_GRID * TILE_GRID;
+/** The classes drawn, in the order their rectangles follow each other in a row's slot. */
+const DRAWN_CLASSES = [TILE_CLASSES.lit, TILE_CLASSES.dark, TILE_CLASSES.lean, TILE_CLASSES.exact] as const;
 /**
  * A row of tiles as a bit mask, tile i at bit i: marking a span, the classes' logic and counting
  * are word operations, not per tile (TILE_GRID ≤ 32). Masks are int32 (Int32Array), and no function
@@ -55,10 +57,21 @@ const POLYGON_CAPACITY = 4 + 2 * RECORD_POINTS + RECORD_POINTS + 2;
  * filed disk and reach, which hold the light's own while the filing does, so the classes hold too.
  */
 export class LightTiles {
-  /** `classes` as the light pass reads them, TILE_COUNT per filing row, runs merged (see shadowLayout, `tileCode`). */
-  codes = new Uint8Array(TILE_COUNT);
-  /** Per row: 1 when its codes were written since {@link LightTiles.beginFrame}. */
+  /**
+   * The classes as the light pass draws them: per filing row a slot of ROW_INDICES indices of the
+   * tile grid's corners (`tileCorner`), its rectangles' triangles (six indices each), grouped by
+   * class in the order of DRAWN_CLASSES. A rectangle is a run of tiles of one class along a tile
+   * row, merged with the same run in the rows after it: few, large triangles, and few pixel blocks
+   * shaded twice along their edges.
+   */
+  rectangles = new Uint16Array(ROW_INDICES);
+  /** Per filing row, the indices at the start of its slot that its rectangles use. */
+  usedIndices = new Int32Array(1);
+  /** Per row: 1 when its rectangles were written since {@link LightTiles.beginFrame}. */
   dirtyRows = new Uint8Array(1);
+  /** Per filing row and class: where the class's indices start in the row's slot, and how many. */
+  private listFirst = new Int32Array(TILE_CLASS_COUNT);
+  private listCount = new Int32Array(TILE_CLASS_COUNT);
   /**
    * Per filing row, TILE_GRID masks each (tile row j at `row × TILE_GRID + j`): the tiles beyond the
    * reach; the dark and exact ones from the still hulls alone (kept with the filing); and those the
@@ -82,6 +95,20 @@ export class LightTiles {
   private order = new Int32Array(0);
   private bucketOfHull = new Uint8Array(0);
   private readonly bucketStarts = new Int32Array(NEAR_BUCKETS + 1);
+  /**
+   * The rectangles being written (see `writeRectangles`): those open at the current tile row and
+   * at the next (first tile, last tile, class, first tile row), and per class its indices.
+   */
+  private openStart = new Int32Array(TILE_GRID);
+  private openEnd = new Int32Array(TILE_GRID);
+  private openClass = new Int32Array(TILE_GRID);
+  private openRow = new Int32Array(TILE_GRID);
+  private nextOpenStart = new Int32Array(TILE_GRID);
+  private nextOpenEnd = new Int32Array(TILE_GRID);
+  private nextOpenClass = new Int32Array(TILE_GRID);
+  private nextOpenRow = new Int32Array(TILE_GRID);
+  private readonly classIndices = Array.from({ length: TILE_CLASS_COUNT }, () => new Uint16Array(ROW_INDICES));
+  private readonly classLengths = new Int32Array(TILE_CLASS_COUNT);
   /** A row's classes as a moving hull leaves them, before they are shown. */
   private readonly nextDark = new Int32Array(TILE_GRID);
   private readonly nextExact = new Int32Array(TILE_GRID);
@@ -136,6 +163,14 @@ export class LightTiles {
   /** Writes the tiles of each class in `row` (the light pass skips a class it has none of) into `out`, indexed by class. */
   writeCounts(row: number, out: Int32Array): void {
     for (let c = 0; c < TILE_CLASS_COUNT; c++) out[c] = this.counts[row * TILE_CLASS_COUNT + c];
+  }
+
+  /** Writes, per class of `row`, where its indices start in `rectangles` and how many there are, into `out[2 × class]` and `out[2 × class + 1]`. */
+  writeLists(row: number, out: Int32Array): void {
+    for (let c = 0; c < TILE_CLASS_COUNT; c++) {
+      out[2 * c] = row * ROW_INDICES + this.listFirst[row * TILE_CLASS_COUNT + c];
+      out[2 * c + 1] = this.listCount[row * TILE_CLASS_COUNT + c];
+    }
   }
 
   /** The class (TILE_CLASSES) of tile `tile` (`j × TILE_GRID + i`) of `row`, as the codes show it. */
@@ -310,8 +345,8 @@ export class LightTiles {
 
   /**
    * Shows `row` with the dark, exact and general masks `dark[from + j]`, `exact[from + j]`,
-   * `general[from + j]` (general within exact): rewrites the codes of each tile row that changed
-   * (every one when `force`, for a new filing) and, when one did, recounts the row and marks it dirty.
+   * `general[from + j]` (general within exact): when a tile row changed (or `force`, for a new
+   * filing), rewrites the row's rectangles, recounts it and marks it dirty.
    */
   private show(row: number, dark: Int32Array, exact: Int32Array, general: Int32Array, from: number, force: boolean): void {
     const at = row * TILE_GRID;
@@ -322,10 +357,10 @@ export class LightTiles {
       this.dark[at + j] = d;
       this.exact[at + j] = e;
       this.general[at + j] = g;
-      this.writeCodes(row, j);
       changed = true;
     }
     if (!changed) return;
+    this.writeRectangles(row);
     this.dirtyRows[row] = 1;
     let outside = 0, darkCount = 0, exactCount = 0, generalCount = 0;
     for (let j = 0; j < TILE_GRID; j++) {
@@ -342,21 +377,95 @@ export class LightTiles {
     counts[c + TILE_CLASSES.lit] = TILE_COUNT - outside - darkCount - exactCount;
   }
 
-  /** Writes the codes of tile row `j` of `row` from its masks: each run of one class drawn as one rectangle. */
-  private writeCodes(row: number, j: number): void {
-    const word = row * TILE_GRID + j, outside = this.outside[word], dark = this.dark[word], exact = this.exact[word], general = this.general[word];
-    const codes = this.codes, first = row * TILE_COUNT + j * TILE_GRID;
-    for (let i = 0; i < TILE_GRID;) {
-      const value = classOf(outside & (1 << i), dark & (1 << i), exact & (1 << i), general & (1 << i));
-      let run = 1;
-      for (; i + run < TILE_GRID; run++) {
-        const bit = 1 << (i + run);
-        if (classOf(outside & bit, dark & bit, exact & bit, general & bit) !== value) break;
+  /**
+   * Writes `row`'s rectangles from its masks: per tile row, its runs of one class, each merged
+   * with an open rectangle of the rows above that spans the same tiles in the same class, else
+   * opening one; a rectangle not continued is closed and written into its class's list.
+   */
+  private writeRectangles(row: number): void {
+    let open = 0;
+    this.classLengths.fill(0);
+    for (let j = 0; j <= TILE_GRID; j++) {
+      let kept = 0, k = 0;
+      for (let i = 0; i < TILE_GRID && j < TILE_GRID;) {
+        const word = row * TILE_GRID + j;
+        const value = classOf(this.outside[word] & (1 << i), this.dark[word] & (1 << i), this.exact[word] & (1 << i), this.general[word] & (1 << i));
+        const last = i + this.runLength(word, i, value) - 1;
+        while (k < open && this.openStart[k] < i) this.closeRectangle(k++, j);
+        if (k < open && this.openStart[k] === i && this.openEnd[k] === last && this.openClass[k] === value) {
+          this.keepOpen(kept++, i, last, value, this.openRow[k++]);
+        } else {
+          if (k < open && this.openStart[k] === i) this.closeRectangle(k++, j);
+          if (value !== TILE_CLASSES.outside) this.keepOpen(kept++, i, last, value, j);
+        }
+        i = last + 1;
       }
-      codes[first + i] = tileCode(value, run);
-      for (let k = 1; k < run; k++) codes[first + i + k] = TILE_IN_RUN;
-      i += run;
+      while (k < open) this.closeRectangle(k++, j);
+      this.swapOpen();
+      open = kept;
     }
+    this.gatherLists(row);
+  }
+
+  /** The tiles from tile `i` of tile row `word` on that have class `value`, at least 1. */
+  private runLength(word: number, i: number, value: number): number {
+    let run = 1;
+    for (; i + run < TILE_GRID; run++) {
+      const bit = 1 << (i + run);
+      if (classOf(this.outside[word] & bit, this.dark[word] & bit, this.exact[word] & bit, this.general[word] & bit) !== value) break;
+    }
+    return run;
+  }
+
+  /** Sets open rectangle `k` of the next tile row: tiles `start` to `end` of class `value`, from tile row `firstRow`. */
+  private keepOpen(k: number, start: number, end: number, value: number, firstRow: number): void {
+    this.nextOpenStart[k] = start;
+    this.nextOpenEnd[k] = end;
+    this.nextOpenClass[k] = value;
+    this.nextOpenRow[k] = firstRow;
+  }
+
+  /** Makes the next tile row's open rectangles the current ones. */
+  private swapOpen(): void {
+    const start = this.openStart, end = this.openEnd, value = this.openClass, first = this.openRow;
+    this.openStart = this.nextOpenStart;
+    this.openEnd = this.nextOpenEnd;
+    this.openClass = this.nextOpenClass;
+    this.openRow = this.nextOpenRow;
+    this.nextOpenStart = start;
+    this.nextOpenEnd = end;
+    this.nextOpenClass = value;
+    this.nextOpenRow = first;
+  }
+
+  /** Writes open rectangle `k`, which ends above tile row `j`, as two triangles into its class's list. */
+  private closeRectangle(k: number, j: number): void {
+    const value = this.openClass[k], list = this.classIndices[value];
+    const left = this.openStart[k], right = this.openEnd[k] + 1, top = this.openRow[k];
+    const a = tileCorner(left, top), b = tileCorner(right, top), c = tileCorner(left, j), d = tileCorner(right, j);
+    let n = this.classLengths[value];
+    list[n++] = a;
+    list[n++] = b;
+    list[n++] = c;
+    list[n++] = c;
+    list[n++] = b;
+    list[n++] = d;
+    this.classLengths[value] = n;
+  }
+
+  /** Copies the classes' lists into `row`'s slot, one after the other, and notes where each starts. */
+  private gatherLists(row: number): void {
+    const slot = row * ROW_INDICES, at = row * TILE_CLASS_COUNT;
+    let n = 0;
+    this.listCount[at + TILE_CLASSES.outside] = 0;
+    for (let c = 0; c < DRAWN_CLASSES.length; c++) {
+      const value = DRAWN_CLASSES[c], list = this.classIndices[value], length = this.classLengths[value];
+      this.listFirst[at + value] = n;
+      this.listCount[at + value] = length;
+      for (let k = 0; k < length; k++) this.rectangles[slot + n + k] = list[k];
+      n += length;
+    }
+    this.usedIndices[row] = n;
   }
 
   private ensureRow(row: number): void {
@@ -370,13 +479,16 @@ export class LightTiles {
     this.exact = grown(this.exact, words);
     this.keptGeneral = grown(this.keptGeneral, words);
     this.general = grown(this.general, words);
-    const codes = new Uint8Array(rows * TILE_COUNT), dirty = new Uint8Array(rows), counts = new Int32Array(rows * TILE_CLASS_COUNT);
-    codes.set(this.codes);
+    const rectangles = new Uint16Array(rows * ROW_INDICES), used = new Int32Array(rows), dirty = new Uint8Array(rows);
+    rectangles.set(this.rectangles);
+    used.set(this.usedIndices);
     dirty.set(this.dirtyRows);
-    counts.set(this.counts);
-    this.codes = codes;
+    this.rectangles = rectangles;
+    this.usedIndices = used;
     this.dirtyRows = dirty;
-    this.counts = counts;
+    this.counts = grown(this.counts, rows * TILE_CLASS_COUNT);
+    this.listFirst = grown(this.listFirst, rows * TILE_CLASS_COUNT);
+    this.listCount = grown(this.listCount, rows * TILE_CLASS_COUNT);
   }
 
   /** Writes the mask of the tiles of tile row `j` that lie wholly beyond the reach of the filing's centre (none for a light not confined to it) at `outside[at + j]`. */

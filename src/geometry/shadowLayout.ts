@@ -93,24 +93,22 @@ export function pseudoAngle(x: number, y: number): number {
 
 /**
  * Tiles per side of a shadowed point light's grid (see `LightTiles`): its filed bounds cut into
- * TILE_GRID² tiles, whose codes ({@link tileCode}) are a row of TILE_GRID² bytes of the tile codes
- * texture (R8, one row per light, the row of its bins), tile (i, j) at `j × TILE_GRID + i`.
+ * TILE_GRID² tiles, drawn as rectangles of tiles of one class whose corners are points of the grid
+ * ({@link tileCorner}).
  */
 export const TILE_GRID = 32;
 
 /**
- * A tile's code: the first tile of a run of tiles of one class along a row holds its class and the
- * run's length, `class + TILE_CLASS_CODES × (length − 1)` (below {@link TILE_IN_RUN}); the others
- * TILE_IN_RUN. The light pass draws the first as the whole run's rectangle and collapses the
- * others: fewer, larger triangles, fewer pixel blocks shaded twice along their edges.
+ * The index of the grid's corner point (i, j), 0 ≤ i, j ≤ TILE_GRID, in the tile grid's vertex
+ * buffer (`LightShapes`), which holds the points row by row as (i, j).
  */
-export function tileCode(tileClass: number, runLength: number): number {
-  return tileClass + TILE_CLASS_CODES * (runLength - 1);
+export function tileCorner(i: number, j: number): number {
+  return j * (TILE_GRID + 1) + i;
 }
-/** Codes per run length: room for every class of TILE_CLASSES. */
-export const TILE_CLASS_CODES = 8;
-/** The code of a tile inside a run, drawn by the run's first tile (above every run's code: 4 + 8 × 31). */
-export const TILE_IN_RUN = 255;
+
+/** Indices per light in the tile rectangles' index buffer: two triangles for each of its tiles, the most rectangles it can have. */
+export const ROW_INDICES = 6 * TILE_GRID * TILE_GRID;
+
 /**
  * A tile's class, what the light pass draws it with: nothing (outside the light's reach, or dark
  * where the shadows keep nothing), the plain light program (lit; dark with the colour the shadows
@@ -124,6 +122,6 @@ export const TILE_CLASS_COUNT = 5;
 
 /** The layout constants the shader reads, as `#define`s. */
 export const SHADOW_DEFINES: Readonly<Record<string, number>> = {
-  RECORD_TEXELS, TEXTURE_WIDTH, RECORDS_PER_ROW, BIN_COUNT, ENTRY_MAX_RECORDS, TAG_EDGE_BITS, TILE_GRID, TILE_IN_RUN, TILE_CLASS_CODES,
+  RECORD_TEXELS, TEXTURE_WIDTH, RECORDS_PER_ROW, BIN_COUNT, ENTRY_MAX_RECORDS, TAG_EDGE_BITS,
   SHADOW_SOLID: SHADOW_TYPE_CODES.solid, SHADOW_ILLUMINATED: SHADOW_TYPE_CODES.illuminated, SHADOW_OCCLUDED: SHADOW_TYPE_CODES.occluded,
 };

@@ -1,3 +1,5 @@
+import { ROW_INDICES, TILE_GRID } from '../geometry/shadowLayout';
+
 /**
  * Sides of the polygon drawn for a light's range disk. It is circumscribed, so it covers the whole
  * disk; with 16 sides it is 1.3% larger than the disk and 20% smaller than the quad.
@@ -10,9 +12,10 @@ const DISK_SIDES = 16;
  * - in the unit square 0..1 of the light's quad (see `Light.writeQuad`), on attribute 0 of one
  *   vertex array: the quad as a TRIANGLE_STRIP and as a LINE_LOOP, and a polygon circumscribing
  *   the disk inscribed in the quad as TRIANGLES: where a light confined to its range adds anything;
- * - the tile grid of `tileGrid`² tiles (see `LightTiles`) on attribute 0 of another: per tile four corners
- *   `(column, row, corner x, corner y)` as unsigned bytes, and two triangles of indices. The light
- *   vertex stage built with TILED places the tiles and collapses those of other classes.
+ * - the tile grid's corner points `(i, j)` (TILE_GRID + 1 per side, see `tileCorner`) on
+ *   attribute 0 of another, with the lights' rectangles of tiles as indices (`LightTiles`
+ *   `rectangles`: one slot of ROW_INDICES per filing row, uploaded by the rows that changed). The
+ *   light vertex stage built with TILED places the points on the light's grid.
  */
 export class LightShapes {
   private readonly vertexArray: WebGLVertexArrayObject;
@@ -20,8 +23,16 @@ export class LightShapes {
   private readonly tileVertexArray: WebGLVertexArrayObject;
   private readonly tileBuffer: WebGLBuffer;
   private readonly tileIndexBuffer: WebGLBuffer;
+  /** Filing rows the index buffer has room for; -1 before the first upload. */
+  private tileRows = -1;
+  /**
+   * Views of the rectangles' array for uploads: per row and length in UPLOAD_GRANULES, made once
+   * per array (headless-gl's bufferSubData has no source offset and length).
+   */
+  private views: (Uint16Array | undefined)[] = [];
+  private viewed: Uint16Array | null = null;
 
-  constructor(private readonly gl: WebGL2RenderingContext, private readonly tileGrid: number) {
+  constructor(private readonly gl: WebGL2RenderingContext) {
     this.vertexArray = gl.createVertexArray()!;
     this.buffer = gl.createBuffer()!;
     gl.bindVertexArray(this.vertexArray);
@@ -34,12 +45,35 @@ export class LightShapes {
     this.tileIndexBuffer = gl.createBuffer()!;
     gl.bindVertexArray(this.tileVertexArray);
     gl.bindBuffer(gl.ARRAY_BUFFER, this.tileBuffer);
-    gl.bufferData(gl.ARRAY_BUFFER, tileVertices(tileGrid), gl.STATIC_DRAW);
+    gl.bufferData(gl.ARRAY_BUFFER, tileCorners(), gl.STATIC_DRAW);
     gl.enableVertexAttribArray(0);
-    gl.vertexAttribPointer(0, 4, gl.UNSIGNED_BYTE, false, 0, 0);
+    gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this.tileIndexBuffer);
-    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, tileIndices(tileGrid), gl.STATIC_DRAW);
     gl.bindVertexArray(null);
+  }
+
+  /**
+   * Uploads the tile rectangles' indices (`rectangles`, ROW_INDICES per row, of which each row's
+   * first `used[row]` count): all rows, reallocating, when their number changed, else the rows
+   * marked in `dirty`. Leaves the tile vertex array bound.
+   */
+  uploadTileRectangles(dirty: Uint8Array, rectangles: Uint16Array, used: Int32Array): void {
+    const gl = this.gl, rows = dirty.length, all = rows !== this.tileRows;
+    gl.bindVertexArray(this.tileVertexArray);
+    if (all) {
+      this.tileRows = rows;
+      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, Math.max(rows, 1) * ROW_INDICES * 2, gl.DYNAMIC_DRAW);
+    }
+    if (this.viewed !== rectangles) {
+      this.viewed = rectangles;
+      this.views = [];
+    }
+    for (let row = 0; row < rows; row++) {
+      if ((!all && dirty[row] === 0) || used[row] === 0) continue;
+      const granules = Math.ceil(used[row] / UPLOAD_GRANULE), key = row * GRANULES_PER_ROW + granules - 1;
+      const view = this.views[key] ??= rectangles.subarray(row * ROW_INDICES, row * ROW_INDICES + granules * UPLOAD_GRANULE);
+      gl.bufferSubData(gl.ELEMENT_ARRAY_BUFFER, row * ROW_INDICES * 2, view);
+    }
   }
 
   /** Fills the quad using the current program. */
@@ -60,10 +94,10 @@ export class LightShapes {
     this.gl.drawArrays(this.gl.TRIANGLES, DISK_FIRST, 3 * (DISK_SIDES - 2));
   }
 
-  /** Draws every tile of the grid using the current program (built with TILED). */
-  drawTiles(): void {
+  /** Draws `count` indices of the tile rectangles from index `first` (see `LightTiles.writeLists`) using the current program (built with TILED). */
+  drawTileRectangles(first: number, count: number): void {
     this.gl.bindVertexArray(this.tileVertexArray);
-    this.gl.drawElements(this.gl.TRIANGLES, 6 * this.tileGrid * this.tileGrid, this.gl.UNSIGNED_SHORT, 0);
+    this.gl.drawElements(this.gl.TRIANGLES, count, this.gl.UNSIGNED_SHORT, 2 * first);
   }
 
   dispose(): void {
@@ -91,28 +125,18 @@ function shapeVertices(): Float32Array {
   return new Float32Array(vertices);
 }
 
-function tileVertices(grid: number): Uint8Array {
-  const vertices = new Uint8Array(grid * grid * 16);
-  let k = 0;
-  for (let row = 0; row < grid; row++) {
-    for (let column = 0; column < grid; column++) {
-      for (let corner = 0; corner < 4; corner++) {
-        vertices[k++] = column;
-        vertices[k++] = row;
-        vertices[k++] = corner & 1;
-        vertices[k++] = corner >> 1;
-      }
+/** Indices uploaded per row are rounded up to a multiple of this (64 rectangles), so that a row has few views. */
+const UPLOAD_GRANULE = 384;
+const GRANULES_PER_ROW = ROW_INDICES / UPLOAD_GRANULE;
+
+/** The tile grid's corner points, row by row (see `tileCorner`). */
+function tileCorners(): Float32Array {
+  const points = new Float32Array(2 * (TILE_GRID + 1) * (TILE_GRID + 1));
+  for (let j = 0, k = 0; j <= TILE_GRID; j++) {
+    for (let i = 0; i <= TILE_GRID; i++) {
+      points[k++] = i;
+      points[k++] = j;
     }
   }
-  return vertices;
-}
-
-function tileIndices(grid: number): Uint16Array {
-  const indices = new Uint16Array(grid * grid * 6);
-  for (let tile = 0, k = 0; tile < grid * grid; tile++) {
-    const v = 4 * tile;
-    indices.set([v, v + 1, v + 2, v + 2, v + 1, v + 3], k);
-    k += 6;
-  }
-  return indices;
+  return points;
 }

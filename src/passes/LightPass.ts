@@ -61,7 +61,6 @@ export class LightPass {
   private readonly towardsLight = new Float32Array(4);
   private readonly darkColor = new Float32Array(3);
   private readonly tiles = new Float32Array(4);
-  private readonly tileDraw = new Float32Array(2);
   private readonly surfaceFrame = new Float32Array(3);
   private readonly clearZero = new Float32Array(4);
 
@@ -99,7 +98,6 @@ export class LightPass {
       if (uniforms.u_recordTags) gl.uniform1i(uniforms.u_recordTags, ShadowUnits.recordTags);
       if (uniforms.u_bins) gl.uniform1i(uniforms.u_bins, ShadowUnits.bins);
       if (uniforms.u_entries) gl.uniform1i(uniforms.u_entries, ShadowUnits.entries);
-      if (uniforms.u_tileCodes) gl.uniform1i(uniforms.u_tileCodes, ShadowUnits.tileCodes);
       if (uniforms.u_cookie) gl.uniform1i(uniforms.u_cookie, COOKIE_UNIT);
       if (uniforms.u_normals) gl.uniform1i(uniforms.u_normals, SurfaceUnits.normals);
       if (uniforms.u_material) gl.uniform1i(uniforms.u_material, SurfaceUnits.material);
@@ -172,7 +170,6 @@ export class LightPass {
       this.shapes.drawQuad();
     } else {
       draw.filing.writeTiles(this.tiles);
-      this.tileDraw[0] = draw.binRow;
       const counts = draw.tileCounts, kept = this.shadowKept, dark = this.darkColor;
       if (counts[TILE_CLASSES.lit] > 0) this.drawTiles(programs.plainTiles, draw, TILE_CLASSES.lit, this.lightColor);
       if (counts[TILE_CLASSES.dark] > 0 && (kept[0] > 0 || kept[1] > 0 || kept[2] > 0)) {
@@ -186,12 +183,9 @@ export class LightPass {
 
   /** Draws the light's tiles of class `tileClass` with `program` in `color`. */
   private drawTiles(program: Program, draw: LightDraw, tileClass: number, color: Float32Array): void {
-    const uniforms = program.uniforms;
     this.setUniforms(program, draw, color);
-    this.tileDraw[1] = tileClass;
-    this.gl.uniform4fv(uniforms.u_tiles, this.tiles);
-    this.gl.uniform2fv(uniforms.u_tileDraw, this.tileDraw);
-    this.shapes.drawTiles();
+    this.gl.uniform4fv(program.uniforms.u_tiles, this.tiles);
+    this.shapes.drawTileRectangles(draw.tileLists[2 * tileClass], draw.tileLists[2 * tileClass + 1]);
   }
 
   /** Makes `program` current and sets its uniforms from the arrays `writeLightUniforms` filled, the light's colour as `color`. */

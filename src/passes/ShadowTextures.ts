@@ -1,30 +1,26 @@
-import type { LightTiles } from '../geometry/LightTiles';
 import type { ShadowBins } from '../geometry/ShadowBins';
 import type { ShadowGeometry } from '../geometry/ShadowGeometry';
-import { BIN_COUNT, RECORDS_PER_ROW, TEXTURE_WIDTH, TILE_GRID } from '../geometry/shadowLayout';
+import { BIN_COUNT, RECORDS_PER_ROW, TEXTURE_WIDTH } from '../geometry/shadowLayout';
 
 /** Texture units of the shadow textures; the light pass binds a light's cookie on unit 2. */
-export const ShadowUnits = { records: 0, bins: 1, entries: 3, recordTags: 4, tileCodes: 7 } as const;
+export const ShadowUnits = { records: 0, bins: 1, entries: 3, recordTags: 4 } as const;
 
 /**
  * The GPU copy of the shadow data (see shadowLayout): the records of every hull and their tags, and
- * the lights' bins, entries and tile classes, each uploaded by the rows written since the last
- * upload (records when hulls change, bins and entries when lights are filed anew, tile classes then
- * and while moving hulls are near), or whole when it grew.
+ * the lights' bins and entries, each uploaded by the rows written since the last upload (records
+ * when hulls change, bins and entries when lights are filed anew), or whole when it grew.
  */
 export class ShadowTextures {
   private readonly recordData: DataTexture;
   private readonly recordTagData: DataTexture;
   private readonly binData: DataTexture;
   private readonly entryData: DataTexture;
-  private readonly tileCodeData: DataTexture;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
     this.recordData = new DataTexture(gl, TEXTURE_WIDTH, 4);
     this.recordTagData = new DataTexture(gl, RECORDS_PER_ROW, 1);
     this.binData = new DataTexture(gl, BIN_COUNT, 4);
     this.entryData = new DataTexture(gl, TEXTURE_WIDTH, 4);
-    this.tileCodeData = new DataTexture(gl, TILE_GRID * TILE_GRID, 'bytes');
   }
 
   get records(): WebGLTexture {
@@ -32,7 +28,7 @@ export class ShadowTextures {
   }
 
   /** Uploads what changed; leaves the textures bound on their units (see {@link ShadowUnits}) and unit 0 active. */
-  upload(geometry: ShadowGeometry, bins: ShadowBins, tiles: LightTiles): void {
+  upload(geometry: ShadowGeometry, bins: ShadowBins): void {
     const gl = this.gl;
     gl.activeTexture(gl.TEXTURE0 + ShadowUnits.recordTags);
     this.recordTagData.upload(geometry.dirtyRows, geometry.recordTags);
@@ -42,8 +38,6 @@ export class ShadowTextures {
     this.binData.upload(bins.dirtyBinRows, bins.bins);
     gl.activeTexture(gl.TEXTURE0 + ShadowUnits.entries);
     this.entryData.upload(bins.dirtyEntryRows, bins.entries);
-    gl.activeTexture(gl.TEXTURE0 + ShadowUnits.tileCodes);
-    this.tileCodeData.upload(tiles.dirtyRows, tiles.codes);
     gl.activeTexture(gl.TEXTURE0);
   }
 
@@ -52,15 +46,13 @@ export class ShadowTextures {
     this.recordTagData.dispose();
     this.binData.dispose();
     this.entryData.dispose();
-    this.tileCodeData.dispose();
   }
 }
 
-/** Floats per texel (RGBA32F, R32F), or one byte (R8). */
-type Channels = 1 | 4 | 'bytes';
-type RowData = Float32Array | Uint8Array;
+/** Floats per texel (RGBA32F, R32F). */
+type Channels = 1 | 4;
 
-/** A nearest-filtered RGBA32F, R32F or R8 texture `width` texels wide, a copy of the rows of an array. */
+/** A nearest-filtered RGBA32F or R32F texture `width` texels wide, a copy of the rows of an array. */
 class DataTexture {
   readonly texture: WebGLTexture;
   private rows = -1;
@@ -68,8 +60,8 @@ class DataTexture {
    * Per row, a view of the array from that row on, made once per array: texSubImage2D's source
    * offset would do without views, but headless-gl ignores it (it uploads from the array's start).
    */
-  private views: RowData[] = [];
-  private viewed: RowData | null = null;
+  private views: Float32Array[] = [];
+  private viewed: Float32Array | null = null;
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly width: number, private readonly channels: Channels) {
     this.texture = gl.createTexture()!;
@@ -83,7 +75,7 @@ class DataTexture {
    * Binds the texture on the active unit and uploads `data` (one row per entry of `dirty`): all of
    * it, reallocating, when its rows changed in number, else the runs of dirty rows, one call each.
    */
-  upload(dirty: Uint8Array, data: RowData): void {
+  upload(dirty: Uint8Array, data: Float32Array): void {
     const gl = this.gl;
     gl.bindTexture(gl.TEXTURE_2D, this.texture);
     if (dirty.length !== this.rows) {
@@ -106,28 +98,24 @@ class DataTexture {
 
   private allocate(rows: number): void {
     const gl = this.gl;
-    gl.texImage2D(gl.TEXTURE_2D, 0, this.internalFormat(), this.width, Math.max(rows, 1), 0, this.layout(), this.type(), null);
+    gl.texImage2D(gl.TEXTURE_2D, 0, this.internalFormat(), this.width, Math.max(rows, 1), 0, this.layout(), gl.FLOAT, null);
   }
 
   private internalFormat(): number {
-    return this.channels === 4 ? this.gl.RGBA32F : this.channels === 1 ? this.gl.R32F : this.gl.R8;
+    return this.channels === 4 ? this.gl.RGBA32F : this.gl.R32F;
   }
 
   private layout(): number {
     return this.channels === 4 ? this.gl.RGBA : this.gl.RED;
   }
 
-  private type(): number {
-    return this.channels === 'bytes' ? this.gl.UNSIGNED_BYTE : this.gl.FLOAT;
-  }
-
-  private uploadRows(data: RowData, firstRow: number, rows: number): void {
+  private uploadRows(data: Float32Array, firstRow: number, rows: number): void {
     const gl = this.gl;
     if (this.viewed !== data) {
       this.viewed = data;
       this.views = [];
     }
-    const view = this.views[firstRow] ??= data.subarray(firstRow * this.width * (this.channels === 4 ? 4 : 1));
-    gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, firstRow, this.width, rows, this.layout(), this.type(), view);
+    const view = this.views[firstRow] ??= data.subarray(firstRow * this.width * this.channels);
+    gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, firstRow, this.width, rows, this.layout(), gl.FLOAT, view);
   }
 }

@@ -13,7 +13,7 @@ import shadowBehind from '../../shaders/chunks/shadow-behind.glsl?raw';
 import shadowQuadrature from '../../shaders/chunks/shadow-quadrature.glsl?raw';
 import shadowVisibility from '../../shaders/chunks/shadow-visibility.glsl?raw';
 import surface from '../../shaders/surface.glsl?raw';
-import { SHADOW_DEFINES, TILE_CLASS_CODES, TILE_GRID, TILE_IN_RUN } from '../geometry/shadowLayout';
+import { SHADOW_DEFINES } from '../geometry/shadowLayout';
 import { COMPOSITE_DEFINES, MAX_BLUR_RADIUS } from './compositeLayout';
 import { LIGHT_DEFINES } from './lightLayout';
 import { SURFACE_DEFINES } from './surfaceLayout';
@@ -52,7 +52,7 @@ export function lightStages(fragment: string, normals: boolean): LightStages {
   const resolved = normals ? withDefines(fragment, NORMALS_DEFINES) : fragment;
   return {
     vertex: lightVertex,
-    tiledVertex: withDefines(lightVertex, { TILED: '', TILE_GRID, TILE_IN_RUN, TILE_CLASS_CODES }),
+    tiledVertex: withDefines(lightVertex, { TILED: '' }),
     unshadowed: resolved,
     shadowed: withDefines(resolved, { SHADOWED: '', ...SHADOW_DEFINES }),
     lean: withDefines(resolved, { SHADOWED: '', LEAN_SHADOW: '', ...SHADOW_DEFINES }),

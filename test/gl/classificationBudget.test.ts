@@ -87,7 +87,9 @@ describe('classification budget', () => {
     let fewerLit = 0;
     for (let frame = 0; frame < 12; frame++) {
       for (const light of lights) light.setPosition(10 + 7 * frame, 20);
-      for (const set of crates) set.forEach((crate, i) => (crate.position = [56 + 8 * i, 40 + 0.5 * frame]));
+      // Edges off the pixel centres: a pixel centre on a hull's edge is inside it or not by rounding,
+      // which differs between draws of different rectangles.
+      for (const set of crates) set.forEach((crate, i) => (crate.position = [56 + 8 * i, 40.2 + 0.5 * frame]));
       const kept = renderLightmap(gl, limited, W, H), reference = renderLightmap(gl, unlimited, W, H);
       if (limited.stats.tilesLit < unlimited.stats.tilesLit) fewerLit++;
       expect(maxDifference(kept, reference), `frame ${frame}`).toBeLessThan(1e-3);

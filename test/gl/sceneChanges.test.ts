@@ -183,14 +183,17 @@ describe('lights whose shadows did not change', () => {
     return { left, right, rightBox };
   }
 
-  /** Counts the texture uploads of each frame. */
+  /** Counts the texture and buffer uploads of each frame. */
   function countUploads(): { count: number } {
     const counter = { count: 0 };
-    const upload = gl.texSubImage2D.bind(gl) as (...args: unknown[]) => void;
-    (gl as unknown as { texSubImage2D: (...args: unknown[]) => void }).texSubImage2D = (...args: unknown[]) => {
-      counter.count++;
-      upload(...args);
-    };
+    const calls = gl as unknown as Record<'texSubImage2D' | 'bufferSubData', (...args: unknown[]) => void>;
+    for (const name of ['texSubImage2D', 'bufferSubData'] as const) {
+      const upload = calls[name].bind(gl);
+      calls[name] = (...args: unknown[]) => {
+        counter.count++;
+        upload(...args);
+      };
+    }
     return counter;
   }
 
@@ -205,7 +208,7 @@ describe('lights whose shadows did not change', () => {
     left.setPosition(14, 33);
     frame();
     expect(renderer.stats.lightsFiled).toBe(1);
-    // The left light's row of bins, its entries and its row of tile classes: a run of texture rows each.
+    // The left light's row of bins and its entries (a run of texture rows each), and its tile rectangles.
     expect(uploads.count).toBe(3);
     rightBox.position = [66, 35];
     uploads.count = 0;

@@ -198,3 +198,60 @@ describe('LightTiles', () => {
     expect(lit[tile]).toBe(TILE_CLASSES.lean);
   });
 });
+
+describe('LightTiles rectangles', () => {
+  /** The class each tile of `row` is drawn in by the row's rectangles (−1 where none, −2 where several). */
+  function drawnClasses(tiles: LightTiles, row: number): Int8Array {
+    const drawn = new Int8Array(TILE_GRID * TILE_GRID).fill(-1);
+    const lists = new Int32Array(2 * TILE_CLASS_COUNT);
+    tiles.writeLists(row, lists);
+    for (let c = 0; c < TILE_CLASS_COUNT; c++) {
+      for (let k = lists[2 * c]; k < lists[2 * c] + lists[2 * c + 1]; k += 3) {
+        const corners = [0, 1, 2].map((v) => tiles.rectangles[k + v]).map((index) => [index % (TILE_GRID + 1), Math.floor(index / (TILE_GRID + 1))]);
+        // Each triangle is half a rectangle: its tiles are those whose centre lies inside it, moved
+        // off the diagonals by an irrational step.
+        for (let j = 0; j < TILE_GRID; j++) {
+          for (let i = 0; i < TILE_GRID; i++) {
+            if (!insideTriangle(corners, i + 0.5, j + 0.5 + 0.01 * Math.SQRT2)) continue;
+            const tile = j * TILE_GRID + i;
+            drawn[tile] = drawn[tile] === -1 ? c : -2;
+          }
+        }
+      }
+    }
+    return drawn;
+  }
+
+  function insideTriangle(corners: number[][], x: number, y: number): boolean {
+    const side = (a: number[], b: number[]) => Math.sign((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]));
+    const s = [side(corners[0], corners[1]), side(corners[1], corners[2]), side(corners[2], corners[0])];
+    return s.every((v) => v >= 0) || s.every((v) => v <= 0);
+  }
+
+  it('draws every tile once in its class, and none outside the reach, as classes change frame to frame', () => {
+    const random = createRandom(11);
+    const geometry = new ShadowGeometry();
+    const hulls = Array.from({ length: 8 }, () => new Hull(convexAround(random, 200 + (random() - 0.5) * 200, 200 + (random() - 0.5) * 200, 4 + random() * 12)));
+    geometry.update(hulls);
+    const indices = Int32Array.from(hulls.keys());
+    for (const i of indices) geometry.prepare(i);
+    const tiles = new LightTiles();
+    const bounds = Float64Array.of(80, 80, 320, 320);
+    for (let row = 0; row < 3; row++) {
+      tiles.beginLight(bounds, Float64Array.of(200 + 10 * row, 200, 3 + 4 * row, 120), true, SHADOW_TYPE_CODES.solid);
+      tiles.addStillHulls(geometry, indices, 4);
+      tiles.endLight(row);
+      tiles.beginLight(bounds, Float64Array.of(200 + 10 * row, 200, 3 + 4 * row, 120), true, row === 1 ? SHADOW_TYPE_CODES.occluded : SHADOW_TYPE_CODES.solid);
+      tiles.addMovingHulls(row, geometry, indices.subarray(4), 4);
+    }
+    for (let row = 0; row < 3; row++) {
+      const drawn = drawnClasses(tiles, row);
+      const wrong: string[] = [];
+      for (let tile = 0; tile < TILE_GRID * TILE_GRID; tile++) {
+        const value = tiles.tileClass(row, tile), expected = value === TILE_CLASSES.outside ? -1 : value;
+        if (drawn[tile] !== expected) wrong.push(`row ${row} tile ${tile}: class ${value}, drawn ${drawn[tile]}`);
+      }
+      expect(wrong.slice(0, 5)).toEqual([]);
+    }
+  });
+});
