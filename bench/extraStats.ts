@@ -13,6 +13,7 @@ export const EXTRA_STATS = [
   { key: 'tilesLitShare', label: 'tiles lit', format: (value: number) => `${(value * 100).toFixed(1)}%` },
   { key: 'tilesExactShare', label: 'tiles exact', format: (value: number) => `${(value * 100).toFixed(1)}%` },
   { key: 'tilesLeanShare', label: 'tiles lean', format: (value: number) => `${(value * 100).toFixed(1)}%` },
+  { key: 'tilesHeldShare', label: 'tiles held', format: (value: number) => `${(value * 100).toFixed(1)}%` },
   { key: 'tilesDarkShare', label: 'tiles dark', format: (value: number) => `${(value * 100).toFixed(1)}%` },
 ] as const;
 

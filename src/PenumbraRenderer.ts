@@ -113,7 +113,8 @@ export interface FrameStats {
    * The tiles of the shadowed point lights, spotlights and textured lights drawn for the last
    * lightmap, by how they were drawn (docs/shadows.md): lit (the plain light program), dark (not
    * drawn, or the plain program in the colour the shadows keep), exact (an exact shadow program:
-   * the lean one or the general one), and outside the light's reach (not drawn). Each such light has 1,024 tiles. This one: the lit tiles.
+   * the lean one or the general one, or for an Illuminated light's dark tiles with hulls in them
+   * the held one, lit inside hulls), and outside the light's reach (not drawn). Each such light has 1,024 tiles. This one: the lit tiles.
    */
   tilesLit: number;
   /** The dark tiles of the last lightmap (see {@link FrameStats.tilesLit}). */
@@ -122,6 +123,8 @@ export interface FrameStats {
   tilesExact: number;
   /** Of the exact tiles, those drawn with the lean exact program: every record that hides part of the disk from a pixel lies in front of it (docs/shadows.md). */
   tilesLean: number;
+  /** Of the exact tiles, those drawn with the held program: dark but inside hulls (docs/shadows.md). */
+  tilesHeld: number;
   /** The tiles beyond their light's reach (see {@link FrameStats.tilesLit}). */
   tilesOutside: number;
   /** Shadowed point lights, spotlights and textured lights drawn wholly exact, unclassified (see `PenumbraRendererOptions.classificationBudget`). */
@@ -191,7 +194,7 @@ export class PenumbraRenderer {
    */
   onContextRestored: ((renderer: PenumbraRenderer) => void) | null;
   /** Figures about the last frame. */
-  readonly stats: FrameStats = { lights: 0, lightsDrawn: 0, lightsFiled: 0, hulls: 0, edges: 0, cpuTime: 0, tilesLit: 0, tilesDark: 0, tilesExact: 0, tilesLean: 0, tilesOutside: 0, lightsUnclassified: 0 };
+  readonly stats: FrameStats = { lights: 0, lightsDrawn: 0, lightsFiled: 0, hulls: 0, edges: 0, cpuTime: 0, tilesLit: 0, tilesDark: 0, tilesExact: 0, tilesLean: 0, tilesHeld: 0, tilesOutside: 0, lightsUnclassified: 0 };
 
   private readonly gl: WebGL2RenderingContext;
   private readonly _lights: Light[] = [];
@@ -721,7 +724,7 @@ export class PenumbraRenderer {
     stats.hulls = this._hulls.length;
     stats.edges = this.geometry.validEdgeCount;
     stats.cpuTime = cpuTime;
-    stats.tilesLit = stats.tilesDark = stats.tilesExact = stats.tilesLean = stats.tilesOutside = 0;
+    stats.tilesLit = stats.tilesDark = stats.tilesExact = stats.tilesLean = stats.tilesHeld = stats.tilesOutside = 0;
     stats.lightsUnclassified = this.plan.unclassifiedCount;
     for (let i = 0; i < this.plan.drawCount; i++) {
       const draw = this.plan.draws[i];
@@ -729,8 +732,9 @@ export class PenumbraRenderer {
       const counts = draw.tileCounts;
       stats.tilesLit += counts[TILE_CLASSES.lit];
       stats.tilesDark += counts[TILE_CLASSES.dark];
-      stats.tilesExact += counts[TILE_CLASSES.lean] + counts[TILE_CLASSES.exact];
+      stats.tilesExact += counts[TILE_CLASSES.lean] + counts[TILE_CLASSES.exact] + counts[TILE_CLASSES.held];
       stats.tilesLean += counts[TILE_CLASSES.lean];
+      stats.tilesHeld += counts[TILE_CLASSES.held];
       stats.tilesOutside += counts[TILE_CLASSES.outside];
     }
   }

@@ -135,10 +135,10 @@ const page: BenchPage = {
     if (!current) return {};
     const { now } = current;
     const statistics = measureShadowStatistics(gl, {}, now.scene.lights, now.scene.hulls);
-    const stats = now.renderer.stats as { tilesLit?: number; tilesDark?: number; tilesExact?: number; tilesLean?: number; tilesOutside?: number };
+    const stats = now.renderer.stats as { tilesLit?: number; tilesDark?: number; tilesExact?: number; tilesLean?: number; tilesHeld?: number; tilesOutside?: number };
     const tiles = (stats.tilesLit ?? 0) + (stats.tilesDark ?? 0) + (stats.tilesExact ?? 0) + (stats.tilesOutside ?? 0);
     return readExtraStats({
-      ...(tiles > 0 ? { tilesLitShare: stats.tilesLit! / tiles, tilesExactShare: stats.tilesExact! / tiles, tilesLeanShare: (stats.tilesLean ?? 0) / tiles, tilesDarkShare: (stats.tilesDark! + stats.tilesOutside!) / tiles } : {}),
+      ...(tiles > 0 ? { tilesLitShare: stats.tilesLit! / tiles, tilesExactShare: stats.tilesExact! / tiles, tilesLeanShare: (stats.tilesLean ?? 0) / tiles, tilesHeldShare: (stats.tilesHeld ?? 0) / tiles, tilesDarkShare: (stats.tilesDark! + stats.tilesOutside!) / tiles } : {}),
       shadowVisitsPerPixel: statistics.visits / statistics.pixels,
       shadowSkipShare: statistics.decidedWithoutLoop / statistics.pixels,
       shadowQuadratureShare: statistics.swept / statistics.pixels,

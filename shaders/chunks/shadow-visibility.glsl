@@ -38,6 +38,9 @@
 // the records seen past (they hide nothing there), the closed form, the quadrature and the holder
 // pass, and is as exact as the general program.
 //
+// Built with HELD_SHADOW, the held program: for an Illuminated light's pixels that lie in one
+// record's umbra unless inside a hull (its held tiles), 1 inside a hull of the bin and 0 elsewhere.
+//
 // Needs: v_world (the pixel's world position), u_shadow (light centre xy, disk radius, bin row),
 // u_binning (how the bins were filed, below) and u_shadowType (SHADOW_SOLID, SHADOW_ILLUMINATED or
 // SHADOW_OCCLUDED).
@@ -537,6 +540,21 @@ float visibleFraction(int shadowType, out int heldBy) {
   return clamp(1.0 - hidden, 0.0, 1.0);
 }
 
+#ifdef HELD_SHADOW
+// Whether a hull of the pixel's bin holds it: a walk that seeks only holders.
+float shadowVisibility() {
+  beginShadow();
+  seekingHolders = true;
+  for (int i = 0; i < binCount; i++) {
+    ivec2 records = recordsOfEntry(i);
+    for (int record = records.x; record <= records.y; record++) {
+      loadRecordPoints(record);
+      if (pixelInsideRecord()) return 1.0;
+    }
+  }
+  return 0.0;
+}
+#else
 // The fraction of the disk visible from the pixel. One pass over the pixel's bin merges the records
 // in front into the union, leaving each list at its first hull farther from the light than the pixel; where
 // records are seen past, the quadrature adds what they hide. An Occluded light's pixel found inside
@@ -558,3 +576,4 @@ float shadowVisibility() {
   return visible;
 #endif
 }
+#endif

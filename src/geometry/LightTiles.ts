@@ -5,7 +5,7 @@ import type { ShadowGeometry } from './ShadowGeometry';
 /** Tiles per light. */
 const TILE_COUNT = TILE_GRID * TILE_GRID;
 /** The classes drawn, in the order their rectangles follow each other in a row's slot. */
-const DRAWN_CLASSES = [TILE_CLASSES.lit, TILE_CLASSES.dark, TILE_CLASSES.lean, TILE_CLASSES.exact] as const;
+const DRAWN_CLASSES = [TILE_CLASSES.lit, TILE_CLASSES.dark, TILE_CLASSES.held, TILE_CLASSES.lean, TILE_CLASSES.exact] as const;
 /**
  * A row of tiles as a bit mask, tile i at bit i: marking a span, the classes' logic and counting
  * are word operations, not per tile (TILE_GRID ≤ 32). Masks are int32 (Int32Array), and no function
@@ -23,14 +23,15 @@ const NEAR_BUCKETS = 32;
 /** The shader's radius for a hard light (shadow-visibility's MIN_RADIUS). */
 const MIN_RADIUS = 1e-3;
 /** Room for a convex polygon clipped by the half-planes of one record: the box's 4 corners, one more per half-plane. */
-const POLYGON_CAPACITY = 4 + 2 * RECORD_POINTS + RECORD_POINTS + 2;
+const POLYGON_CAPACITY = 4 + 2 * RECORD_POINTS + RECORD_POINTS + 3;
 
 /**
  * The per-light tile classes (see shadowLayout, TILE_CLASSES): every shadowed point light's box
  * (its filed bounds) cut into TILE_GRID² tiles, each found **lit** (no hull can hide any part of the
  * disk from any of its pixels), **dark** (one record hides the whole disk from all of them, and no
  * record lies in it where the light lights the inside of hulls), **outside** the light's reach, or
- * exact (anything else: the shader computes it), **lean** or **general**. Lit and dark are proven,
+ * **held** (an Illuminated light's dark tile with a record in it: lit inside hulls, dark elsewhere),
+ * or exact (anything else: the shader computes it), **lean** or **general**. Lit and dark are proven,
  * never guessed, by two convex regions per record P of disk D (centre o, radius R, with D and P apart):
  *
  * - **The shadow region** S(P), the points from which some segment to D meets P, lies on P's side
@@ -85,6 +86,9 @@ export class LightTiles {
   /** The exact tiles that take the general program (the others the lean one), kept and shown. */
   private keptGeneral = new Int32Array(TILE_GRID);
   private general = new Int32Array(TILE_GRID);
+  /** The held tiles, kept and shown. */
+  private keptHeld = new Int32Array(TILE_GRID);
+  private held = new Int32Array(TILE_GRID);
   /** Per row, its tiles of each class. */
   private counts = new Int32Array(TILE_CLASS_COUNT);
   /** Per tile row of the light being classified: the tiles it may be shadowed in, dark in, with a record in them. */
@@ -113,6 +117,8 @@ export class LightTiles {
   private readonly nextDark = new Int32Array(TILE_GRID);
   private readonly nextExact = new Int32Array(TILE_GRID);
   private readonly nextGeneral = new Int32Array(TILE_GRID);
+  private readonly nextHeld = new Int32Array(TILE_GRID);
+  private readonly noTiles = new Int32Array(TILE_GRID);
   /** The rasterization's x range per tile row (touched) and per tile row boundary (the polygon's chord there). */
   private readonly rowLeft = new Float64Array(TILE_GRID);
   private readonly rowRight = new Float64Array(TILE_GRID);
@@ -130,7 +136,11 @@ export class LightTiles {
   private readonly ys = new Float64Array(RECORD_POINTS);
   private pointCount = 0;
   /** Half-planes `a·x + b·y ≤ c`: the shadow region's and the umbra's, for the loaded record. */
-  private readonly shadowPlanes = new Float64Array(3 * (3 * RECORD_POINTS + 1));
+  private readonly shadowPlanes = new Float64Array(3 * (3 * RECORD_POINTS + 2));
+  /** The corners the shadow region's tangents touch: how many, and the first two. */
+  private tangentCorners = 0;
+  private readonly tangentX = new Float64Array(2);
+  private readonly tangentY = new Float64Array(2);
   private shadowPlaneCount = 0;
   private readonly umbraPlanes = new Float64Array(3 * (3 * RECORD_POINTS));
   private umbraPlaneCount = 0;
@@ -176,7 +186,16 @@ export class LightTiles {
   /** The class (TILE_CLASSES) of tile `tile` (`j × TILE_GRID + i`) of `row`, as the codes show it. */
   tileClass(row: number, tile: number): number {
     const word = row * TILE_GRID + Math.floor(tile / TILE_GRID), bit = 1 << tile % TILE_GRID;
-    return classOf(this.outside[word] & bit, this.dark[word] & bit, this.exact[word] & bit, this.general[word] & bit);
+    return this.classAt(word, bit);
+  }
+
+  /** The class (TILE_CLASSES) the shown masks give the tile of tile row `word` at `bit`. */
+  private classAt(word: number, bit: number): number {
+    if ((this.outside[word] & bit) !== 0) return TILE_CLASSES.outside;
+    if ((this.dark[word] & bit) !== 0) return TILE_CLASSES.dark;
+    if ((this.held[word] & bit) !== 0) return TILE_CLASSES.held;
+    if ((this.exact[word] & bit) === 0) return TILE_CLASSES.lit;
+    return (this.general[word] & bit) !== 0 ? TILE_CLASSES.exact : TILE_CLASSES.lean;
   }
 
   /**
@@ -264,11 +283,18 @@ export class LightTiles {
     for (let j = 0; j < TILE_GRID; j++) {
       this.writeOutside(at, j);
       const outside = this.outside[at + j], dark = this.darkened[j] & ~outside & (this.solid ? FULL_ROW : ~this.occupied[j]);
+      const held = this.illuminated() ? this.darkened[j] & this.occupied[j] & ~outside : 0;
       this.keptDark[at + j] = dark;
-      this.keptExact[at + j] = this.shadowed[j] & ~dark & ~outside;
+      this.keptHeld[at + j] = held;
+      this.keptExact[at + j] = this.shadowed[j] & ~dark & ~held & ~outside;
       this.keptGeneral[at + j] = this.keptExact[at + j] & this.generalMask(j);
     }
-    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, at, true);
+    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, at, true);
+  }
+
+  /** Whether the light being classified lights the inside of hulls from anywhere (Illuminated): its dark tiles with a record in them are then held. */
+  private illuminated(): boolean {
+    return !this.solid && !this.holderPass;
   }
 
   /** The tiles of tile row `j` whose exact pixels take the general program, by the records added since {@link LightTiles.beginLight}. */
@@ -279,7 +305,7 @@ export class LightTiles {
   /** Shows `row`'s kept classes (a light whose moving hulls left it). */
   restoreKept(row: number): void {
     this.ensureRow(row);
-    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, row * TILE_GRID, false);
+    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, row * TILE_GRID, false);
   }
 
   /**
@@ -291,10 +317,10 @@ export class LightTiles {
     const at = row * TILE_GRID;
     for (let j = 0; j < TILE_GRID; j++) {
       this.writeOutside(at, j);
-      this.keptDark[at + j] = 0;
+      this.keptDark[at + j] = this.keptHeld[at + j] = 0;
       this.keptExact[at + j] = this.keptGeneral[at + j] = FULL_ROW & ~this.outside[at + j];
     }
-    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, at, true);
+    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, at, true);
   }
 
   /**
@@ -308,14 +334,15 @@ export class LightTiles {
       dark[j] = this.solid ? this.keptDark[at + j] : 0;
       exact[j] = FULL_ROW & ~this.outside[at + j] & ~dark[j];
     }
-    this.show(row, dark, exact, exact, 0, false);
+    this.show(row, dark, exact, exact, this.noTiles, 0, false);
   }
 
   /**
    * Shows `row`'s kept classes less what the `count` moving hulls at `indices` (prepared) may
    * change: the lit tiles their shadow regions touch, and, unless `solid` (set by the last
    * {@link LightTiles.beginLight} for this light's filing, with `bounds`, disk and reach as there),
-   * the dark tiles they lie in, become exact (general where `generalMask` says).
+   * the dark tiles they lie in, become exact (general where `generalMask` says; held for an
+   * Illuminated light). Held tiles stay held: outside hulls they lie in a still record's umbra.
    */
   addMovingHulls(row: number, geometry: ShadowGeometry, indices: Int32Array, count: number): void {
     for (let i = 0; i < count; i++) {
@@ -331,50 +358,55 @@ export class LightTiles {
         if (!this.solid) this.markRecordBox();
       }
     }
-    const at = row * TILE_GRID, dark = this.nextDark, exact = this.nextExact, general = this.nextGeneral;
+    const at = row * TILE_GRID, dark = this.nextDark, exact = this.nextExact, general = this.nextGeneral, held = this.nextHeld;
+    const illuminated = this.illuminated();
     for (let j = 0; j < TILE_GRID; j++) {
-      const keptDark = this.keptDark[at + j], keptExact = this.keptExact[at + j];
-      const lit = FULL_ROW & ~(this.outside[at + j] | keptDark | keptExact);
+      const keptDark = this.keptDark[at + j], keptExact = this.keptExact[at + j], keptHeld = this.keptHeld[at + j];
+      const lit = FULL_ROW & ~(this.outside[at + j] | keptDark | keptExact | keptHeld);
       const lost = this.solid ? 0 : keptDark & this.occupied[j];
       dark[j] = keptDark & ~lost;
-      exact[j] = keptExact | (this.shadowed[j] & lit) | lost;
+      held[j] = keptHeld | (illuminated ? lost : 0);
+      exact[j] = keptExact | (this.shadowed[j] & lit) | (illuminated ? 0 : lost);
       general[j] = this.keptGeneral[at + j] | (exact[j] & this.generalMask(j));
     }
-    this.show(row, dark, exact, general, 0, false);
+    this.show(row, dark, exact, general, held, 0, false);
   }
 
   /**
-   * Shows `row` with the dark, exact and general masks `dark[from + j]`, `exact[from + j]`,
-   * `general[from + j]` (general within exact): when a tile row changed (or `force`, for a new
-   * filing), rewrites the row's rectangles, recounts it and marks it dirty.
+   * Shows `row` with the masks `dark[from + j]`, `exact[from + j]`, `general[from + j]` (within
+   * exact) and `held[from + j]`: when a tile row changed (or `force`, for a new filing), rewrites
+   * the row's rectangles, recounts it and marks it dirty.
    */
-  private show(row: number, dark: Int32Array, exact: Int32Array, general: Int32Array, from: number, force: boolean): void {
+  private show(row: number, dark: Int32Array, exact: Int32Array, general: Int32Array, held: Int32Array, from: number, force: boolean): void {
     const at = row * TILE_GRID;
     let changed = false;
     for (let j = 0; j < TILE_GRID; j++) {
-      const d = dark[from + j], e = exact[from + j], g = general[from + j];
-      if (!force && d === this.dark[at + j] && e === this.exact[at + j] && g === this.general[at + j]) continue;
+      const d = dark[from + j], e = exact[from + j], g = general[from + j], h = held[from + j];
+      if (!force && d === this.dark[at + j] && e === this.exact[at + j] && g === this.general[at + j] && h === this.held[at + j]) continue;
       this.dark[at + j] = d;
       this.exact[at + j] = e;
       this.general[at + j] = g;
+      this.held[at + j] = h;
       changed = true;
     }
     if (!changed) return;
     this.writeRectangles(row);
     this.dirtyRows[row] = 1;
-    let outside = 0, darkCount = 0, exactCount = 0, generalCount = 0;
+    let outside = 0, darkCount = 0, exactCount = 0, generalCount = 0, heldCount = 0;
     for (let j = 0; j < TILE_GRID; j++) {
       outside += bitCount(this.outside[at + j]);
       darkCount += bitCount(this.dark[at + j]);
       exactCount += bitCount(this.exact[at + j]);
       generalCount += bitCount(this.general[at + j]);
+      heldCount += bitCount(this.held[at + j]);
     }
     const counts = this.counts, c = row * TILE_CLASS_COUNT;
     counts[c + TILE_CLASSES.outside] = outside;
     counts[c + TILE_CLASSES.dark] = darkCount;
     counts[c + TILE_CLASSES.lean] = exactCount - generalCount;
     counts[c + TILE_CLASSES.exact] = generalCount;
-    counts[c + TILE_CLASSES.lit] = TILE_COUNT - outside - darkCount - exactCount;
+    counts[c + TILE_CLASSES.held] = heldCount;
+    counts[c + TILE_CLASSES.lit] = TILE_COUNT - outside - darkCount - exactCount - heldCount;
   }
 
   /**
@@ -388,8 +420,7 @@ export class LightTiles {
     for (let j = 0; j <= TILE_GRID; j++) {
       let kept = 0, k = 0;
       for (let i = 0; i < TILE_GRID && j < TILE_GRID;) {
-        const word = row * TILE_GRID + j;
-        const value = classOf(this.outside[word] & (1 << i), this.dark[word] & (1 << i), this.exact[word] & (1 << i), this.general[word] & (1 << i));
+        const word = row * TILE_GRID + j, value = this.classAt(word, 1 << i);
         const last = i + this.runLength(word, i, value) - 1;
         while (k < open && this.openStart[k] < i) this.closeRectangle(k++, j);
         if (k < open && this.openStart[k] === i && this.openEnd[k] === last && this.openClass[k] === value) {
@@ -411,8 +442,7 @@ export class LightTiles {
   private runLength(word: number, i: number, value: number): number {
     let run = 1;
     for (; i + run < TILE_GRID; run++) {
-      const bit = 1 << (i + run);
-      if (classOf(this.outside[word] & bit, this.dark[word] & bit, this.exact[word] & bit, this.general[word] & bit) !== value) break;
+      if (this.classAt(word, 1 << (i + run)) !== value) break;
     }
     return run;
   }
@@ -479,6 +509,8 @@ export class LightTiles {
     this.exact = grown(this.exact, words);
     this.keptGeneral = grown(this.keptGeneral, words);
     this.general = grown(this.general, words);
+    this.keptHeld = grown(this.keptHeld, words);
+    this.held = grown(this.held, words);
     const rectangles = new Uint16Array(rows * ROW_INDICES), used = new Int32Array(rows), dirty = new Uint8Array(rows);
     rectangles.set(this.rectangles);
     used.set(this.usedIndices);
@@ -550,10 +582,13 @@ export class LightTiles {
   /**
    * The half-planes of the loaded record (the disk apart from it): per corner, its two tangents to
    * the disk that have the whole record on one side; per edge, its line when it faces the whole disk
-   * (shadow region) or some of it (umbra); and the line through the point nearest the centre.
+   * (shadow region) or some of it (umbra); the line through the point nearest the centre; and for a
+   * light that lights the inside of hulls, the chord between the shadow region's two tangent
+   * corners (see `addChordPlane`).
    */
   private findPlanes(): void {
     const xs = this.xs, ys = this.ys, n = this.pointCount, cx = this.centreX, cy = this.centreY, r = this.radius;
+    this.tangentCorners = 0;
     for (let k = 0; k < n; k++) {
       const vx = xs[k], vy = ys[k];
       const dx = cx - vx, dy = cy - vy, distance = Math.sqrt(dx * dx + dy * dy);
@@ -579,8 +614,10 @@ export class LightTiles {
         plane[1] = sign * ny;
         plane[2] = sign * (nx * vx + ny * vy) + (umbra ? -eps : eps);
         this.addPlane(umbra);
+        if (!umbra) this.noteTangentCorner(k);
       }
     }
+    if (!this.solid && !this.holderPass) this.addChordPlane();
     let nearest2 = Infinity, nearestX = 0, nearestY = 0;
     for (let k = 0; k < n; k++) {
       const ax = xs[k], ay = ys[k], bx = xs[(k + 1) % n], by = ys[(k + 1) % n];
@@ -614,6 +651,42 @@ export class LightTiles {
       plane[2] = nx * nearestX + ny * nearestY + this.slack;
       this.addPlane(false);
     }
+  }
+
+  /** Notes corner `k` as one a tangent of the shadow region touches (the first two in `tangentX`, `tangentY`). */
+  private noteTangentCorner(k: number): void {
+    if (this.tangentCorners < 2) {
+      this.tangentX[this.tangentCorners] = this.xs[k];
+      this.tangentY[this.tangentCorners] = this.ys[k];
+    }
+    this.tangentCorners++;
+  }
+
+  /**
+   * For an Illuminated light, whose pixels inside a hull are lit: the record shades only the part
+   * of its shadow region outside it, which lies beyond the chord between the two corners t1, t2 the
+   * region's tangents touch, when the disk lies wholly on the other side. (A point x outside P
+   * whose segment to d in D meets P leaves P through its chain between t1 and t2 away from D, which
+   * lies beyond the chord; the segment from d, on the near side, goes on beyond it.) Left out when
+   * more than two corners touch a tangent (an edge along one) or the disk meets the chord's line.
+   */
+  private addChordPlane(): void {
+    if (this.tangentCorners !== 2) return;
+    const ax = this.tangentX[0], ay = this.tangentY[0], ex = this.tangentX[1] - ax, ey = this.tangentY[1] - ay, length = Math.sqrt(ex * ex + ey * ey);
+    if (length === 0) return;
+    // The chord's normal towards the side away from the centre.
+    let nx = ey / length, ny = -ex / length;
+    const centreSide = nx * (this.centreX - ax) + ny * (this.centreY - ay);
+    if (Math.abs(centreSide) <= this.radius) return;
+    if (centreSide > 0) {
+      nx = -nx;
+      ny = -ny;
+    }
+    const plane = this.plane;
+    plane[0] = -nx;
+    plane[1] = -ny;
+    plane[2] = -(nx * ax + ny * ay) + this.slack;
+    this.addPlane(false);
   }
 
   /** Adds `plane` (`a·x + b·y ≤ c`, the slack already in c) to the umbra's half-planes or the shadow region's. */
@@ -812,14 +885,6 @@ export class LightTiles {
     }
   }
 
-}
-
-/** The class (TILE_CLASSES) of a tile from its bits in the outside, dark, exact and general masks. */
-function classOf(outside: number, dark: number, exact: number, general: number): number {
-  if (outside !== 0) return TILE_CLASSES.outside;
-  if (dark !== 0) return TILE_CLASSES.dark;
-  if (exact === 0) return TILE_CLASSES.lit;
-  return general !== 0 ? TILE_CLASSES.exact : TILE_CLASSES.lean;
 }
 
 /** Sets tiles `first` to `last` (0 ≤ first ≤ last < TILE_GRID) in the mask `masks[index]`. */

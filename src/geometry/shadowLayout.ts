@@ -112,13 +112,15 @@ export const ROW_INDICES = 6 * TILE_GRID * TILE_GRID;
 /**
  * A tile's class, what the light pass draws it with: nothing (outside the light's reach, or dark
  * where the shadows keep nothing), the plain light program (lit; dark with the colour the shadows
- * keep), the lean exact program (every record that hides part of the disk from a pixel of the
- * tile lies wholly in front of the disk, and none holds a pixel of an Occluded light: see the
- * chunk shadow-visibility, LEAN_SHADOW), or the general exact program.
+ * keep), the held program (an Illuminated light's tile in a record's umbra with hulls in it: lit
+ * inside a hull, dark elsewhere; HELD_SHADOW), the lean exact program (every record that hides
+ * part of the disk from a pixel of the tile lies wholly in front of the disk, and none holds a
+ * pixel of an Occluded light: LEAN_SHADOW; see the chunk shadow-visibility), or the general exact
+ * program.
  */
-export const TILE_CLASSES = { outside: 0, lit: 1, dark: 2, lean: 3, exact: 4 } as const;
+export const TILE_CLASSES = { outside: 0, lit: 1, dark: 2, lean: 3, exact: 4, held: 5 } as const;
 /** How many classes TILE_CLASSES has: the length of a light's tile counts. */
-export const TILE_CLASS_COUNT = 5;
+export const TILE_CLASS_COUNT = 6;
 
 /** The layout constants the shader reads, as `#define`s. */
 export const SHADOW_DEFINES: Readonly<Record<string, number>> = {

@@ -31,7 +31,7 @@ export interface Surface {
  * the colour its shadows keep (not at all when they keep none), the others with an exact program,
  * which computes the visible fraction from the shadow textures (see the chunk shadow-visibility):
  * the lean one where every record that hides anything lies in front of the disk, else the general
- * one. A directional light with hulls is drawn as its quad with an exact program: the lean one
+ * one; an Illuminated light's dark tiles with hulls in them with the held program (lit inside hulls). A directional light with hulls is drawn as its quad with an exact program: the lean one
  * (from a disk at infinity every record is in front) but for an Occluded light (the holder pass).
  *
  * With normals the lightmap has a second attachment for the highlights, and the programs weight
@@ -41,7 +41,7 @@ export class LightPass {
   readonly lightmap: RenderTarget;
   /**
    * Per kind of light, its programs: for a light with no hull in range (its shape), and for one
-   * with some: its lit and dark tiles (plain), its lean tiles (lean exact; a directional light's
+   * with some: its lit and dark tiles (plain), its held tiles, its lean tiles (lean exact; a directional light's
    * quad), its other tiles (general exact; an Occluded directional light's quad).
    */
   private readonly programs: Record<LightKind, LightPrograms>;
@@ -82,7 +82,7 @@ export class LightPass {
         ...sourcesOf('directional', 'directional light', lightStages(shaderSources.lightDirectionalFragment, normals)),
       });
       const programsOf = (kind: LightKind): LightPrograms => ({
-        unshadowed: made[`${kind} unshadowed`], plainTiles: made[`${kind} plain tiles`] ?? null, lean: made[`${kind} lean`],
+        unshadowed: made[`${kind} unshadowed`], plainTiles: made[`${kind} plain tiles`] ?? null, heldTiles: made[`${kind} held tiles`] ?? null, lean: made[`${kind} lean`],
         shadowed: made[`${kind} shadowed`],
       });
       this.programs = { point: programsOf('point'), spot: programsOf('spot'), textured: programsOf('textured'), directional: programsOf('directional') };
@@ -176,6 +176,7 @@ export class LightPass {
         for (let c = 0; c < 3; c++) dark[c] = this.lightColor[c] * kept[c];
         this.drawTiles(programs.plainTiles, draw, TILE_CLASSES.dark, dark);
       }
+      if (counts[TILE_CLASSES.held] > 0 && programs.heldTiles !== null) this.drawTiles(programs.heldTiles, draw, TILE_CLASSES.held, this.lightColor);
       if (counts[TILE_CLASSES.lean] > 0) this.drawTiles(programs.lean, draw, TILE_CLASSES.lean, this.lightColor);
       if (counts[TILE_CLASSES.exact] > 0) this.drawTiles(programs.shadowed, draw, TILE_CLASSES.exact, this.lightColor);
     }
@@ -275,11 +276,12 @@ export class LightPass {
 interface LightPrograms {
   unshadowed: Program;
   plainTiles: Program | null;
+  heldTiles: Program | null;
   lean: Program;
   shadowed: Program;
 }
 
-/** The sources of a kind's programs, keyed `<kind> unshadowed`, `<kind> plain tiles` (but for a directional light), `<kind> lean` and `<kind> shadowed`. */
+/** The sources of a kind's programs, keyed `<kind> unshadowed`, `<kind> plain tiles` and `<kind> held tiles` (but for a directional light), `<kind> lean` and `<kind> shadowed`. */
 function sourcesOf(kind: LightKind, name: string, stages: LightStages): Record<string, ProgramSources> {
   if (kind === 'directional') {
     return {
@@ -291,6 +293,7 @@ function sourcesOf(kind: LightKind, name: string, stages: LightStages): Record<s
   return {
     [`${kind} unshadowed`]: [name, stages.vertex, stages.unshadowed],
     [`${kind} plain tiles`]: [`${name}'s plain tiles`, stages.tiledVertex, stages.unshadowed],
+    [`${kind} held tiles`]: [`${name}'s held tiles`, stages.tiledVertex, stages.held],
     [`${kind} lean`]: [`${name}'s lean exact tiles`, stages.tiledVertex, stages.lean],
     [`${kind} shadowed`]: [`${name} with shadows`, stages.tiledVertex, stages.shadowed],
   };

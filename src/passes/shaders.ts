@@ -39,6 +39,8 @@ export interface LightStages {
   shadowed: string;
   /** For the tiles of a light with hulls whose records all lie in front of the disk (`SHADOWED`, `LEAN_SHADOW`). */
   lean: string;
+  /** For an Illuminated light's tiles that are dark but inside hulls (`SHADOWED`, `HELD_SHADOW`). */
+  held: string;
 }
 
 /** The defines of the light passes of a renderer with normals. */
@@ -56,6 +58,7 @@ export function lightStages(fragment: string, normals: boolean): LightStages {
     unshadowed: resolved,
     shadowed: withDefines(resolved, { SHADOWED: '', ...SHADOW_DEFINES }),
     lean: withDefines(resolved, { SHADOWED: '', LEAN_SHADOW: '', ...SHADOW_DEFINES }),
+    held: withDefines(resolved, { SHADOWED: '', HELD_SHADOW: '', ...SHADOW_DEFINES }),
   };
 }
 

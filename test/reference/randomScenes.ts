@@ -108,7 +108,10 @@ export function randomScene(seed: number, width: number, height: number): Refere
       light.radius = radius;
     }
   }
-  return { name: `random scene (seed ${seed})`, width, height, lights, hulls, polylines };
+  // One scene in three lights the inside of hulls (Illuminated, the default shadow type): its dark
+  // tiles with hulls in them are held, lit inside the hulls.
+  const shadowType = seed % 3 === 0 ? 'illuminated' : 'solid';
+  return { name: `random scene (seed ${seed})`, width, height, lights, hulls, polylines, shadowType };
 }
 
 /** `count` points at (radius, angle) pairs around (cx, cy). */

@@ -29,10 +29,10 @@ export interface ReferenceScene {
    */
   darkUmbra?: boolean;
   /**
-   * How the lights treat hull insides: `'solid'` (the default: dark, as computeReference has them)
-   * or `'occluded'` (lit where the light reaches them: computeOccludedReference).
+   * How the lights treat hull insides: `'solid'` (the default: dark), `'illuminated'` (lit), both as
+   * computeReference has them, or `'occluded'` (lit where the light reaches them: computeOccludedReference).
    */
-  shadowType?: 'solid' | 'occluded';
+  shadowType?: 'solid' | 'illuminated' | 'occluded';
 }
 
 const WIDTH = 160;
@@ -121,6 +121,10 @@ export const REFERENCE_SCENES: readonly ReferenceScene[] = [
     lights: [{ position: [24, 60], range: 150, radius: 40 }], hulls: Array.from({ length: 6 }, (_, k) => box(70, 40 + 7 * k, 3, 3)) },
   // Four touching crates, each its own hull, lit from two sides: the lights add up, and neither
   // may leak through the seams between crates.
+  // Crates in a wall's umbra, lit inside and dark around (an Illuminated light's held tiles), and
+  // one half in it.
+  { name: 'crates behind a wall, Illuminated (r=6)', width: WIDTH, height: HEIGHT, shadowType: 'illuminated',
+    lights: [{ position: [30, 60], range: 150, radius: 6 }], hulls: [box(60, 30, 8, 60), box(100, 50, 12, 12), box(120, 70, 10, 10), box(110, 88, 10, 10)] },
   { name: '2×2 touching crates, two lights (r=8, r=6)', width: WIDTH, height: HEIGHT,
     lights: [
       { position: [40, 35], range: 130, radius: 8 },

@@ -6,9 +6,9 @@ import type { ReferenceLight, ReferenceScene } from './scenes';
  * The ground truth of SPEC §6 on the CPU, without any of the renderer's math: each light is a
  * uniformly emitting disk, and a pixel centre receives falloff × colour × intensity × the fraction
  * of the disk whose straight segment to it crosses no hull edge; the lights add up. Pixel centres
- * inside a hull receive nothing (the scenes use Solid shadows, which keep hulls dark; without that
- * rule a pixel inside a hull that overlaps a disk would see the part of the disk inside the same
- * hull).
+ * inside a hull receive nothing for Solid lights (the default: without that rule a pixel inside a
+ * hull that overlaps a disk would see the part of the disk inside the same hull), and the whole
+ * disk for Illuminated ones (scene.shadowType; Occluded scenes have their own reference).
  *
  * Three ways to get the fraction:
  * - `'exact'` (default): integrates over the directions from the pixel, in closed form piece by
@@ -89,7 +89,7 @@ export function computeReference(scene: ReferenceScene, options: ReferenceOption
         if (falloff === 0) return;
         inRange[pixel] = 1;
         if (source.radius === 0 && nearHardEdge(geometry, px, py, lx, ly)) ambiguous[pixel] = 1;
-        const fraction = insideHull ? 0 : fractionOf(px, py, source);
+        const fraction = insideHull ? (scene.shadowType === 'illuminated' ? 1 : 0) : fractionOf(px, py, source);
         visibility[l][pixel] = fraction;
         if (fraction !== 1) all = false;
         if (fraction !== 0) none = false;
