@@ -113,6 +113,8 @@ export class LightTiles {
   private nextOpenRow = new Int32Array(TILE_GRID);
   private readonly classIndices = Array.from({ length: TILE_CLASS_COUNT }, () => new Uint16Array(ROW_INDICES));
   private readonly classLengths = new Int32Array(TILE_CLASS_COUNT);
+  /** One tile row's masks per class (`splitClasses`). */
+  private readonly rowClasses = new Int32Array(TILE_CLASS_COUNT);
   /** A row's classes as a moving hull leaves them, before they are shown. */
   private readonly nextDark = new Int32Array(TILE_GRID);
   private readonly nextExact = new Int32Array(TILE_GRID);
@@ -419,9 +421,9 @@ export class LightTiles {
     this.classLengths.fill(0);
     for (let j = 0; j <= TILE_GRID; j++) {
       let kept = 0, k = 0;
+      if (j < TILE_GRID) this.splitClasses(row * TILE_GRID + j);
       for (let i = 0; i < TILE_GRID && j < TILE_GRID;) {
-        const word = row * TILE_GRID + j, value = this.classAt(word, 1 << i);
-        const last = i + this.runLength(word, i, value) - 1;
+        const value = this.classOfTile(i), last = i + runFrom(this.rowClasses[value], i) - 1;
         while (k < open && this.openStart[k] < i) this.closeRectangle(k++, j);
         if (k < open && this.openStart[k] === i && this.openEnd[k] === last && this.openClass[k] === value) {
           this.keepOpen(kept++, i, last, value, this.openRow[k++]);
@@ -438,13 +440,23 @@ export class LightTiles {
     this.gatherLists(row);
   }
 
-  /** The tiles from tile `i` of tile row `word` on that have class `value`, at least 1. */
-  private runLength(word: number, i: number, value: number): number {
-    let run = 1;
-    for (; i + run < TILE_GRID; run++) {
-      if (this.classAt(word, 1 << (i + run)) !== value) break;
-    }
-    return run;
+  /** Sets `rowClasses` to the masks of each class in tile row `word`, as `classAt` tells them apart. */
+  private splitClasses(word: number): void {
+    const masks = this.rowClasses, outside = this.outside[word], dark = this.dark[word] & ~outside;
+    const held = this.held[word] & ~outside & ~dark, exact = this.exact[word] & ~outside & ~dark & ~held;
+    masks[TILE_CLASSES.outside] = outside;
+    masks[TILE_CLASSES.dark] = dark;
+    masks[TILE_CLASSES.held] = held;
+    masks[TILE_CLASSES.exact] = exact & this.general[word];
+    masks[TILE_CLASSES.lean] = exact & ~this.general[word];
+    masks[TILE_CLASSES.lit] = FULL_ROW & ~(outside | dark | held | exact);
+  }
+
+  /** The class of tile `i` in the row `splitClasses` split. */
+  private classOfTile(i: number): number {
+    let value = 0;
+    while (((this.rowClasses[value] >>> i) & 1) === 0) value++;
+    return value;
   }
 
   /** Sets open rectangle `k` of the next tile row: tiles `start` to `end` of class `value`, from tile row `firstRow`. */
@@ -890,6 +902,13 @@ export class LightTiles {
 /** Sets tiles `first` to `last` (0 ≤ first ≤ last < TILE_GRID) in the mask `masks[index]`. */
 function markSpan(masks: Int32Array, index: number, first: number, last: number): void {
   masks[index] |= (FULL_ROW >>> (TILE_GRID - 1 - last)) & (FULL_ROW << first);
+}
+
+/** The set bits of `mask` from bit `i` (set) on, before the first clear one: at least 1. */
+function runFrom(mask: number, i: number): number {
+  const rest = ~(mask >>> i);
+  // Its lowest set bit: the first clear bit from i on (the shift brings zeros in above bit 31 − i).
+  return rest === 0 ? TILE_GRID : 31 - Math.clz32(rest & -rest);
 }
 
 /** The set bits of a 32-bit word. */
