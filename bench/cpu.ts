@@ -1,7 +1,7 @@
 import { mat4 } from 'gl-matrix';
 import { createContext, destroyContext } from '../test/gl/context';
 import { readExtraStats, type ExtraStats } from './extraStats';
-import { probeCalls, stubCalls } from './glProbe';
+import { answerVertexArrayLikeBrowsers, probeCalls, stubCalls } from './glProbe';
 import type { BenchRenderer, RendererLibrary } from './library';
 import { createScene, WORLD_HEIGHT, WORLD_WIDTH, type SceneSpec } from './scenes';
 import { summarize, type Summary } from './stats';
@@ -60,6 +60,7 @@ interface Contender {
 function createContender(spec: SceneSpec, library: RendererLibrary): Contender {
   const width = WORLD_WIDTH / TARGET_DIVISOR, height = WORLD_HEIGHT / TARGET_DIVISOR;
   const gl = createContext(width, height);
+  answerVertexArrayLikeBrowsers(gl);
   const renderer = new library.PenumbraRenderer(gl, {
     ambientColor: [0.05, 0.05, 0.05], width, height,
     viewProjection: mat4.ortho(mat4.create(), 0, WORLD_WIDTH, WORLD_HEIGHT, 0, -1, 1),

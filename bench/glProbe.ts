@@ -35,6 +35,20 @@ export function probeCalls(gl: WebGL2RenderingContext): GLProbe {
 }
 
 /**
+ * Makes `gl.getParameter(VERTEX_ARRAY_BINDING)` answer `null` where headless-gl answers the raw name
+ * 0 (no vertex array bound), as browsers do: the baseline renderers' host state passes the answer
+ * back to `bindVertexArray`, which headless-gl rejects as a number. The bench's contexts bind no
+ * vertex array of their own, so 0 is the only name it sees.
+ */
+export function answerVertexArrayLikeBrowsers(gl: WebGL2RenderingContext): void {
+  const realGetParameter = gl.getParameter.bind(gl);
+  (gl as unknown as { getParameter: (pname: number) => unknown }).getParameter = (pname: number) => {
+    const answer: unknown = realGetParameter(pname);
+    return pname === gl.VERTEX_ARRAY_BINDING && answer === 0 ? null : answer;
+  };
+}
+
+/**
  * Replaces every method of `gl` with a stub that does nothing and allocates nothing, so that heap
  * growth across a frame is the renderer's own: headless-gl's JavaScript layer allocates in many
  * calls (bindFramebuffer ~95 B, isEnabled ~29 B), which a browser's native WebGL does not.
