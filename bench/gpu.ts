@@ -16,6 +16,7 @@ import { dirname, resolve } from 'node:path';
 import { createContext, destroyContext } from '../test/gl/context';
 import { EXTRA_STATS, extraStatCells, readExtraStats, type ExtraStats } from './extraStats';
 import { FillFloor } from './floor';
+import { answerVertexArrayLikeBrowsers } from './glProbe';
 import { CURRENT, type BenchRenderer, type RendererLibrary } from './library';
 import { createScene, runsOn, runsOnHeadlessGl, SCENES, WORLD_HEIGHT, WORLD_WIDTH, type BenchScene, type SceneSpec } from './scenes';
 import { summarize, type Summary } from './stats';
@@ -60,6 +61,7 @@ const oldName = baseline ? `old ${baseline.ref}` : 'old';
 let gl: WebGL2RenderingContext;
 try {
   gl = createContext(WORLD_WIDTH, WORLD_HEIGHT);
+  answerVertexArrayLikeBrowsers(gl);
 } catch (error) {
   console.error(`${String(error)}\nOn Vulkan: set ANGLE_DEFAULT_PLATFORM=vulkan, put libvulkan.so.1 beside node_modules/gl/build/Release/libGLESv2.so, and make a Vulkan driver visible (VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json for Mesa's lavapipe).`);
   process.exit(1);
