@@ -35,17 +35,24 @@ export function probeCalls(gl: WebGL2RenderingContext): GLProbe {
 }
 
 /**
- * Makes `gl.getParameter(VERTEX_ARRAY_BINDING)` answer `null` where headless-gl answers the raw name
- * 0 (no vertex array bound), as browsers do: the baseline renderers' host state passes the answer
- * back to `bindVertexArray`, which headless-gl rejects as a number. The bench's contexts bind no
- * vertex array of their own, so 0 is the only name it sees.
+ * Makes `gl.getParameter(VERTEX_ARRAY_BINDING)` answer the bound vertex array object (or `null`),
+ * as browsers do, where headless-gl answers its raw name: the baseline renderers' host state hands
+ * the answer back to `bindVertexArray`, which rejects a number. The context remembers what was
+ * bound through it.
  */
 export function answerVertexArrayLikeBrowsers(gl: WebGL2RenderingContext): void {
-  const realGetParameter = gl.getParameter.bind(gl);
-  (gl as unknown as { getParameter: (pname: number) => unknown }).getParameter = (pname: number) => {
-    const answer: unknown = realGetParameter(pname);
-    return pname === gl.VERTEX_ARRAY_BINDING && answer === 0 ? null : answer;
+  const calls = gl as unknown as Record<'getParameter' | 'bindVertexArray' | 'deleteVertexArray', (...args: never[]) => unknown>;
+  const realGetParameter = gl.getParameter.bind(gl), realBind = gl.bindVertexArray.bind(gl), realDelete = gl.deleteVertexArray.bind(gl);
+  let bound: WebGLVertexArrayObject | null = null;
+  calls.bindVertexArray = (vertexArray: WebGLVertexArrayObject | null) => {
+    bound = vertexArray;
+    realBind(vertexArray);
   };
+  calls.deleteVertexArray = (vertexArray: WebGLVertexArrayObject | null) => {
+    if (vertexArray === bound) bound = null;
+    realDelete(vertexArray);
+  };
+  calls.getParameter = (pname: number) => (pname === gl.VERTEX_ARRAY_BINDING ? bound : realGetParameter(pname));
 }
 
 /**

@@ -203,6 +203,27 @@ bool entryIsFan;
 // the pixel are left to find.
 bool seekingHolders;
 
+#ifndef DIRECTIONAL
+// Whether the hull of `entry` and all after it in its list are farther from the filing's centre
+// than the pixel. A segment between two points within ρ ≥ r' of that centre stays within ρ: a hull
+// farther than the pixel and the filed disk (radius r') cannot reach a segment between them. The
+// list is ordered by distance buckets from that centre (ShadowBins), so one bucket beyond the
+// pixel, all the rest are too.
+bool beyondPixel(vec4 entry) {
+  float filedNearest = length(entry.yz - u_binning.xy) - entry.w, bucketWidth = u_binning.w;
+  return filedNearest > u_binning.z + bucketWidth && distanceToBinOrigin < (floor(filedNearest / bucketWidth) - 1.0) * bucketWidth;
+}
+#endif
+
+// The first and last record of `entry`; sets entryIsFan.
+ivec2 recordsOf(vec4 entry) {
+  int code = int(entry.x);
+  entryIsFan = code % 2 == 1;
+  int records = code / 2;
+  int first = records / ENTRY_MAX_RECORDS;
+  return ivec2(first, first + records % ENTRY_MAX_RECORDS);
+}
+
 // The records of entry `i` of the pixel's bin, first and last, or (0, -1) when this hull cannot hide
 // anything from the pixel. When it and all after it in its list are farther from the centre than the
 // pixel, moves `i` to the last entry of that list, so that a walk's next step leaves the list.
@@ -222,12 +243,7 @@ ivec2 recordsOfEntry(inout int i) {
   bool between = upstream > -hullRadius
     && abs(cross2(travel, hull)) <= hullRadius * (1.0 + tangent) + max(upstream + hullRadius, 0.0) * tangent + 1e-3;
 #else
-  // A segment between two points within ρ ≥ r' of the filing's centre stays within ρ: a hull
-  // farther than the pixel and the filed disk (radius r') cannot reach a segment between them. The
-  // list is ordered by distance buckets from that centre (ShadowBins), so one bucket beyond the
-  // pixel, all the rest are too.
-  float filedNearest = length(entry.yz - u_binning.xy) - hullRadius;
-  farther = filedNearest > u_binning.z + bucketWidth && distanceToBinOrigin < (floor(filedNearest / bucketWidth) - 1.0) * bucketWidth;
+  farther = beyondPixel(entry);
   float nearest = length(entry.yz - centre) - hullRadius;
   // The hull must meet the region between the pixel and the disk, which lies within r of the
   // segment from the pixel to the centre and nearer to the pixel than the disk's far side.
@@ -241,11 +257,7 @@ ivec2 recordsOfEntry(inout int i) {
     i = i < stillCount ? stillCount - 1 : binCount - 1;
     between = false;
   }
-  int code = int(entry.x);
-  entryIsFan = code % 2 == 1;
-  int records = code / 2;
-  int first = records / ENTRY_MAX_RECORDS;
-  return between ? ivec2(first, first + records % ENTRY_MAX_RECORDS) : ivec2(0, -1);
+  return between ? recordsOf(entry) : ivec2(0, -1);
 }
 
 // What a record does to the pixel's view of the disk.
@@ -547,12 +559,18 @@ float visibleFraction(int shadowType, out int heldBy) {
 }
 
 #ifdef HELD_SHADOW
-// Whether a hull of the pixel's bin holds it: a walk that seeks only holders.
+// Whether a hull of the pixel's bin holds it: a walk that looks only into the hulls whose circle
+// holds the pixel, and leaves each list where its hulls lie beyond the pixel.
 float shadowVisibility() {
   beginShadow();
-  seekingHolders = true;
   for (int i = 0; i < binCount; i++) {
-    ivec2 records = recordsOfEntry(i);
+    vec4 entry = texelAt(u_entries, i < stillCount ? binFirst + i : movingFirst + i);
+    if (beyondPixel(entry)) {
+      i = i < stillCount ? stillCount - 1 : binCount - 1;
+      continue;
+    }
+    if (length(entry.yz - pixel) > entry.w) continue;
+    ivec2 records = recordsOf(entry);
     for (int record = records.x; record <= records.y; record++) {
       loadRecordPoints(record);
       if (pixelInsideRecord()) return 1.0;
