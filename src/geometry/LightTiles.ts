@@ -455,7 +455,7 @@ export class LightTiles {
   /** The class of tile `i` in the row `splitClasses` split. */
   private classOfTile(i: number): number {
     let value = 0;
-    while (((this.rowClasses[value] >>> i) & 1) === 0) value++;
+    while (((this.rowClasses[value] >> i) & 1) === 0) value++;
     return value;
   }
 
@@ -904,11 +904,15 @@ function markSpan(masks: Int32Array, index: number, first: number, last: number)
   masks[index] |= (FULL_ROW >>> (TILE_GRID - 1 - last)) & (FULL_ROW << first);
 }
 
-/** The set bits of `mask` from bit `i` (set) on, before the first clear one: at least 1. */
+/**
+ * The set bits of `mask` from bit `i` (set) on, before the first clear one: at least 1. Int32
+ * shifts only: `>>>` makes a uint32 that unoptimized code boxes.
+ */
 function runFrom(mask: number, i: number): number {
-  const rest = ~(mask >>> i);
-  // Its lowest set bit: the first clear bit from i on (the shift brings zeros in above bit 31 − i).
-  return rest === 0 ? TILE_GRID : 31 - Math.clz32(rest & -rest);
+  // Its lowest set bit is the first clear bit from i on; none when the bits from i on are all set
+  // (the shift copies bit 31 into those above 31 − i).
+  const rest = ~(mask >> i);
+  return rest === 0 ? TILE_GRID - i : 31 - Math.clz32(rest & -rest);
 }
 
 /** The set bits of a 32-bit word. */

@@ -26,11 +26,12 @@ export class LightShapes {
   /** Filing rows the index buffer has room for; -1 before the first upload. */
   private tileRows = -1;
   /**
-   * Views of the rectangles' array for uploads: per row and length in UPLOAD_GRANULES, made once
-   * per array (headless-gl's bufferSubData has no source offset and length).
+   * A row's indices are copied here and uploaded through the view of the fewest UPLOAD_GRANULEs
+   * that hold them: views made once (headless-gl's bufferSubData has no source offset and length,
+   * and a view per upload would be heap each frame).
    */
-  private views: (Uint16Array | undefined)[] = [];
-  private viewed: Uint16Array | null = null;
+  private readonly staging = new Uint16Array(ROW_INDICES);
+  private readonly stagingViews = Array.from({ length: GRANULES_PER_ROW }, (_, k) => this.staging.subarray(0, (k + 1) * UPLOAD_GRANULE));
 
   constructor(private readonly gl: WebGL2RenderingContext) {
     this.vertexArray = gl.createVertexArray()!;
@@ -64,15 +65,11 @@ export class LightShapes {
       this.tileRows = rows;
       gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, Math.max(rows, 1) * ROW_INDICES * 2, gl.DYNAMIC_DRAW);
     }
-    if (this.viewed !== rectangles) {
-      this.viewed = rectangles;
-      this.views = [];
-    }
     for (let row = 0; row < rows; row++) {
       if ((!all && dirty[row] === 0) || used[row] === 0) continue;
-      const granules = Math.ceil(used[row] / UPLOAD_GRANULE), key = row * GRANULES_PER_ROW + granules - 1;
-      const view = this.views[key] ??= rectangles.subarray(row * ROW_INDICES, row * ROW_INDICES + granules * UPLOAD_GRANULE);
-      gl.bufferSubData(gl.ELEMENT_ARRAY_BUFFER, row * ROW_INDICES * 2, view);
+      const count = used[row], slot = row * ROW_INDICES;
+      for (let k = 0; k < count; k++) this.staging[k] = rectangles[slot + k];
+      gl.bufferSubData(gl.ELEMENT_ARRAY_BUFFER, slot * 2, this.stagingViews[Math.ceil(count / UPLOAD_GRANULE) - 1]);
     }
   }
 
@@ -125,7 +122,7 @@ function shapeVertices(): Float32Array {
   return new Float32Array(vertices);
 }
 
-/** Indices uploaded per row are rounded up to a multiple of this (64 rectangles), so that a row has few views. */
+/** Indices uploaded per row are rounded up to a multiple of this (64 rectangles): the staging views' lengths. */
 const UPLOAD_GRANULE = 384;
 const GRANULES_PER_ROW = ROW_INDICES / UPLOAD_GRANULE;
 
