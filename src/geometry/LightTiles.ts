@@ -76,7 +76,8 @@ export class LightTiles {
   /**
    * Per filing row, TILE_GRID masks each (tile row j at `row × TILE_GRID + j`): the tiles beyond the
    * reach; the dark and exact ones from the still hulls alone (kept with the filing); and those the
-   * codes show now. The classes' masks are disjoint; a tile in none is lit.
+   * rectangles show now. Outside, dark, held and exact are disjoint, general lies within exact; a
+   * tile in none is lit.
    */
   private outside = new Int32Array(TILE_GRID);
   private keptDark = new Int32Array(TILE_GRID);
@@ -185,7 +186,7 @@ export class LightTiles {
     }
   }
 
-  /** The class (TILE_CLASSES) of tile `tile` (`j × TILE_GRID + i`) of `row`, as the codes show it. */
+  /** The class (TILE_CLASSES) of tile `tile` (`j × TILE_GRID + i`) of `row`, as its rectangles show it. */
   tileClass(row: number, tile: number): number {
     const word = row * TILE_GRID + Math.floor(tile / TILE_GRID), bit = 1 << tile % TILE_GRID;
     return this.classAt(word, bit);
@@ -278,7 +279,7 @@ export class LightTiles {
     return true;
   }
 
-  /** Ends the still hulls' classification of `row` (a new filing): its kept classes, which its codes then show. */
+  /** Ends the still hulls' classification of `row` (a new filing): its kept classes, which its rectangles then show. */
   endLight(row: number): void {
     this.ensureRow(row);
     const at = row * TILE_GRID;
