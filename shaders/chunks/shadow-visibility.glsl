@@ -257,7 +257,8 @@ ivec2 recordsOfEntry(inout int i) {
     i = i < stillCount ? stillCount - 1 : binCount - 1;
     between = false;
   }
-  return between ? recordsOf(entry) : ivec2(0, -1);
+  ivec2 records = recordsOf(entry);
+  return between ? records : ivec2(0, -1);
 }
 
 // What a record does to the pixel's view of the disk.
