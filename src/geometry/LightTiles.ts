@@ -23,7 +23,7 @@ const NEAR_BUCKETS = 32;
 /** The shader's radius for a hard light (shadow-visibility's MIN_RADIUS). */
 const MIN_RADIUS = 1e-3;
 /** Room for a convex polygon clipped by the half-planes of one record: the box's 4 corners, one more per half-plane. */
-const POLYGON_CAPACITY = 4 + 2 * RECORD_POINTS + RECORD_POINTS + 2;
+const POLYGON_CAPACITY = 4 + 2 * RECORD_POINTS + RECORD_POINTS + 3;
 
 /**
  * The per-light tile classes (see shadowLayout, TILE_CLASSES): every shadowed point light's box
@@ -139,9 +139,11 @@ export class LightTiles {
   private readonly ys = new Float64Array(RECORD_POINTS);
   private pointCount = 0;
   /** Half-planes `a·x + b·y ≤ c`: the shadow region's and the umbra's, for the loaded record. */
-  private readonly shadowPlanes = new Float64Array(3 * (3 * RECORD_POINTS + 1));
-  /** The half-plane beyond one of the loaded record's edges, `[a, b, c]` (see `markShadowRegion`). */
-  private readonly beyondEdge = new Float64Array(3);
+  private readonly shadowPlanes = new Float64Array(3 * (3 * RECORD_POINTS + 2));
+  /** The corners the shadow region's tangents touch: how many, and the first two. */
+  private tangentCorners = 0;
+  private readonly tangentX = new Float64Array(2);
+  private readonly tangentY = new Float64Array(2);
   private shadowPlaneCount = 0;
   private readonly umbraPlanes = new Float64Array(3 * (3 * RECORD_POINTS));
   private umbraPlaneCount = 0;
@@ -593,10 +595,13 @@ export class LightTiles {
   /**
    * The half-planes of the loaded record (the disk apart from it): per corner, its two tangents to
    * the disk that have the whole record on one side; per edge, its line when it faces the whole disk
-   * (shadow region) or some of it (umbra); and the line through the point nearest the centre.
+   * (shadow region) or some of it (umbra); the line through the point nearest the centre; and for a
+   * light that lights the inside of hulls, the chord between the shadow region's two tangent
+   * corners (see `addChordPlane`).
    */
   private findPlanes(): void {
     const xs = this.xs, ys = this.ys, n = this.pointCount, cx = this.centreX, cy = this.centreY, r = this.radius;
+    this.tangentCorners = 0;
     for (let k = 0; k < n; k++) {
       const vx = xs[k], vy = ys[k];
       const dx = cx - vx, dy = cy - vy, distance = Math.sqrt(dx * dx + dy * dy);
@@ -622,8 +627,10 @@ export class LightTiles {
         plane[1] = sign * ny;
         plane[2] = sign * (nx * vx + ny * vy) + (umbra ? -eps : eps);
         this.addPlane(umbra);
+        if (!umbra) this.noteTangentCorner(k);
       }
     }
+    if (!this.solid && !this.holderPass) this.addChordPlane();
     let nearest2 = Infinity, nearestX = 0, nearestY = 0;
     for (let k = 0; k < n; k++) {
       const ax = xs[k], ay = ys[k], bx = xs[(k + 1) % n], by = ys[(k + 1) % n];
@@ -659,6 +666,42 @@ export class LightTiles {
     }
   }
 
+  /** Notes corner `k` as one a tangent of the shadow region touches (the first two in `tangentX`, `tangentY`). */
+  private noteTangentCorner(k: number): void {
+    if (this.tangentCorners < 2) {
+      this.tangentX[this.tangentCorners] = this.xs[k];
+      this.tangentY[this.tangentCorners] = this.ys[k];
+    }
+    this.tangentCorners++;
+  }
+
+  /**
+   * For an Illuminated light, whose pixels inside a hull are lit: the record shades only the part
+   * of its shadow region outside it, which lies beyond the chord between the two corners t1, t2 the
+   * region's tangents touch, when the disk lies wholly on the other side. (A point x outside P
+   * whose segment to d in D meets P leaves P through its chain between t1 and t2 away from D, which
+   * lies beyond the chord; the segment from d, on the near side, goes on beyond it.) Left out when
+   * more than two corners touch a tangent (an edge along one) or the disk meets the chord's line.
+   */
+  private addChordPlane(): void {
+    if (this.tangentCorners !== 2) return;
+    const ax = this.tangentX[0], ay = this.tangentY[0], ex = this.tangentX[1] - ax, ey = this.tangentY[1] - ay, length = Math.sqrt(ex * ex + ey * ey);
+    if (length === 0) return;
+    // The chord's normal towards the side away from the centre.
+    let nx = ey / length, ny = -ex / length;
+    const centreSide = nx * (this.centreX - ax) + ny * (this.centreY - ay);
+    if (Math.abs(centreSide) <= this.radius) return;
+    if (centreSide > 0) {
+      nx = -nx;
+      ny = -ny;
+    }
+    const plane = this.plane;
+    plane[0] = -nx;
+    plane[1] = -ny;
+    plane[2] = -(nx * ax + ny * ay) + this.slack;
+    this.addPlane(false);
+  }
+
   /** Adds `plane` (`a·x + b·y ≤ c`, the slack already in c) to the umbra's half-planes or the shadow region's. */
   private addPlane(umbra: boolean): void {
     const planes = umbra ? this.umbraPlanes : this.shadowPlanes, k = 3 * (umbra ? this.umbraPlaneCount++ : this.shadowPlaneCount++);
@@ -669,27 +712,8 @@ export class LightTiles {
 
   /** Marks in `shadowed` the tiles the loaded record's shadow region touches. */
   private markShadowRegion(): void {
-    if (!this.illuminated()) {
-      this.clipBox(this.shadowPlanes, this.shadowPlaneCount);
-      this.markTouched(this.shadowed);
-      return;
-    }
-    // An Illuminated light's pixels inside the record are lit: it shades S(P) \ P, which lies beyond
-    // one of its edges, and beyond none that faces the whole disk (S(P) lies behind those).
-    const xs = this.xs, ys = this.ys, n = this.pointCount, plane = this.beyondEdge;
-    for (let k = 0; k < n; k++) {
-      const ax = xs[k], ay = ys[k], ex = xs[(k + 1) % n] - ax, ey = ys[(k + 1) % n] - ay, length = Math.sqrt(ex * ex + ey * ey);
-      if (length === 0) continue;
-      // The outward normal of a counter-clockwise edge; the centre's distance outward.
-      const nx = ey / length, ny = -ex / length;
-      if (nx * (this.centreX - ax) + ny * (this.centreY - ay) > this.radius) continue;
-      plane[0] = -nx;
-      plane[1] = -ny;
-      plane[2] = -(nx * ax + ny * ay) + this.slack;
-      this.clipBox(this.shadowPlanes, this.shadowPlaneCount);
-      if (this.polygonCount > 0) this.clip(plane, 0);
-      this.markTouched(this.shadowed);
-    }
+    this.clipBox(this.shadowPlanes, this.shadowPlaneCount);
+    this.markTouched(this.shadowed);
   }
 
   /** Marks in `darkened` the tiles wholly inside the loaded record's umbra. */
