@@ -114,7 +114,8 @@ export interface FrameStats {
    * lightmap, by how they were drawn (docs/shadows.md): lit (the plain light program), dark (not
    * drawn, or the plain program in the colour the shadows keep), exact (an exact shadow program:
    * the lean one or the general one, or for an Illuminated light's dark tiles with hulls in them
-   * the held one, lit inside hulls), and outside the light's reach (not drawn). Each such light has 1,024 tiles. This one: the lit tiles.
+   * the held one, lit inside hulls), and outside the light's reach (not drawn). Each such light
+   * has 1,024 tiles. This one: the lit tiles.
    */
   tilesLit: number;
   /** The dark tiles of the last lightmap (see {@link FrameStats.tilesLit}). */

@@ -215,6 +215,16 @@ bool beyondPixel(vec4 entry) {
 }
 #endif
 
+// Entry `i` of the pixel's bin (see above).
+vec4 entryAt(int i) {
+  return texelAt(u_entries, i < stillCount ? binFirst + i : movingFirst + i);
+}
+
+// Moves `i` to the last entry of its list, so that a walk's next step leaves the list.
+void leaveList(inout int i) {
+  i = i < stillCount ? stillCount - 1 : binCount - 1;
+}
+
 // The first and last record of `entry`; sets entryIsFan.
 ivec2 recordsOf(vec4 entry) {
   int code = int(entry.x);
@@ -228,7 +238,7 @@ ivec2 recordsOf(vec4 entry) {
 // anything from the pixel. When it and all after it in its list are farther from the centre than the
 // pixel, moves `i` to the last entry of that list, so that a walk's next step leaves the list.
 ivec2 recordsOfEntry(inout int i) {
-  vec4 entry = texelAt(u_entries, i < stillCount ? binFirst + i : movingFirst + i);
+  vec4 entry = entryAt(i);
   vec2 hull = entry.yz - pixel, toCentre = centre - pixel;
   float hullRadius = entry.w, bucketWidth = u_binning.w;
   bool farther;
@@ -254,7 +264,7 @@ ivec2 recordsOfEntry(inout int i) {
 #endif
   if (seekingHolders) between = length(hull) <= hullRadius;
   if (farther) {
-    i = i < stillCount ? stillCount - 1 : binCount - 1;
+    leaveList(i);
     between = false;
   }
   ivec2 records = recordsOf(entry);
@@ -565,9 +575,9 @@ float visibleFraction(int shadowType, out int heldBy) {
 float shadowVisibility() {
   beginShadow();
   for (int i = 0; i < binCount; i++) {
-    vec4 entry = texelAt(u_entries, i < stillCount ? binFirst + i : movingFirst + i);
+    vec4 entry = entryAt(i);
     if (beyondPixel(entry)) {
-      i = i < stillCount ? stillCount - 1 : binCount - 1;
+      leaveList(i);
       continue;
     }
     if (length(entry.yz - pixel) > entry.w) continue;

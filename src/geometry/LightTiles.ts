@@ -188,17 +188,8 @@ export class LightTiles {
 
   /** The class (TILE_CLASSES) of tile `tile` (`j × TILE_GRID + i`) of `row`, as its rectangles show it. */
   tileClass(row: number, tile: number): number {
-    const word = row * TILE_GRID + Math.floor(tile / TILE_GRID), bit = 1 << tile % TILE_GRID;
-    return this.classAt(word, bit);
-  }
-
-  /** The class (TILE_CLASSES) the shown masks give the tile of tile row `word` at `bit`. */
-  private classAt(word: number, bit: number): number {
-    if ((this.outside[word] & bit) !== 0) return TILE_CLASSES.outside;
-    if ((this.dark[word] & bit) !== 0) return TILE_CLASSES.dark;
-    if ((this.held[word] & bit) !== 0) return TILE_CLASSES.held;
-    if ((this.exact[word] & bit) === 0) return TILE_CLASSES.lit;
-    return (this.general[word] & bit) !== 0 ? TILE_CLASSES.exact : TILE_CLASSES.lean;
+    this.splitClasses(row * TILE_GRID + Math.floor(tile / TILE_GRID));
+    return this.classOfTile(tile % TILE_GRID);
   }
 
   /**
@@ -441,7 +432,10 @@ export class LightTiles {
     this.gatherLists(row);
   }
 
-  /** Sets `rowClasses` to the masks of each class in tile row `word`, as `classAt` tells them apart. */
+  /**
+   * Sets `rowClasses` to the masks of each class in tile row `word`: outside before dark before
+   * held before exact (general or lean), the rest lit.
+   */
   private splitClasses(word: number): void {
     const masks = this.rowClasses, outside = this.outside[word], dark = this.dark[word] & ~outside;
     const held = this.held[word] & ~outside & ~dark, exact = this.exact[word] & ~outside & ~dark & ~held;

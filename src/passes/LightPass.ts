@@ -31,7 +31,8 @@ export interface Surface {
  * the colour its shadows keep (not at all when they keep none), the others with an exact program,
  * which computes the visible fraction from the shadow textures (see the chunk shadow-visibility):
  * the lean one where every record that hides anything lies in front of the disk, else the general
- * one; an Illuminated light's dark tiles with hulls in them with the held program (lit inside hulls). A directional light with hulls is drawn as its quad with an exact program: the lean one
+ * one; an Illuminated light's dark tiles with hulls in them with the held program (lit inside
+ * hulls). A directional light with hulls is drawn as its quad with an exact program: the lean one
  * (from a disk at infinity every record is in front) but for an Occluded light (the holder pass).
  *
  * With normals the lightmap has a second attachment for the highlights, and the programs weight
@@ -41,8 +42,8 @@ export class LightPass {
   readonly lightmap: RenderTarget;
   /**
    * Per kind of light, its programs: for a light with no hull in range (its shape), and for one
-   * with some: its lit and dark tiles (plain), its held tiles, its lean tiles (lean exact; a directional light's
-   * quad), its other tiles (general exact; an Occluded directional light's quad).
+   * with some: its lit and dark tiles (plain), its held tiles, its lean tiles (lean exact; a
+   * directional light's quad), its other tiles (general exact; an Occluded directional light's quad).
    */
   private readonly programs: Record<LightKind, LightPrograms>;
   private readonly programList: readonly Program[];
