@@ -1,10 +1,10 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
-import type { LightDraw } from '../geometry/FramePlan';
-import { RECORD_POINTS } from '../geometry/shadowLayout';
+import type { LightDraw } from '../shadow/FramePlan';
+import { RECORD_POINTS } from '../shadow/shadowLayout';
 import { createPrograms, deletePrograms, type Program } from '../gl/program';
-import type { LightShapes } from '../gl/LightShapes';
+import type { LightShapes } from './LightShapes';
 import { shaderSources } from './shaders';
-import { ShadowUnits } from './ShadowTextures';
+import { ShadowUnits } from '../shadow/ShadowTextures';
 
 /** Vertices per record in the wireframe: each of its point slots starts a side drawn as a line. */
 const RECORD_VERTICES = 2 * RECORD_POINTS;

@@ -2,7 +2,7 @@ import { mat4, type ReadonlyMat4 } from 'gl-matrix';
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget } from '../gl/RenderTarget';
 import { shaderSources } from './shaders';
-import { ShadowUnits } from './ShadowTextures';
+import { ShadowUnits } from '../shadow/ShadowTextures';
 
 /** Vertices per record: its convex quad as two triangles. */
 const RECORD_VERTICES = 6;

@@ -1,13 +1,13 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
-import type { LightDraw } from '../geometry/FramePlan';
+import type { LightDraw } from '../shadow/FramePlan';
 import { createPrograms, deletePrograms, type Program, type ProgramSources } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
-import type { LightShapes } from '../gl/LightShapes';
-import { SHADOW_TYPE_CODES, TILE_CLASSES } from '../geometry/shadowLayout';
+import type { LightShapes } from './LightShapes';
+import { SHADOW_TYPE_CODES, TILE_CLASSES } from '../shadow/shadowLayout';
 import { FALLOFF_CODES } from './lightLayout';
 import { DirectionalLight, Spotlight, TexturedLight, type LightKind } from '../scene/lights';
 import { lightStages, shaderSources, type LightStages } from './shaders';
-import { ShadowUnits } from './ShadowTextures';
+import { ShadowUnits } from '../shadow/ShadowTextures';
 import { SurfaceUnits } from './surfaceLayout';
 
 /** The texture unit of a textured light's cookie (the shadow textures take the others, see ShadowUnits). */

@@ -13,7 +13,7 @@ import shadowBehind from '../../shaders/chunks/shadow-behind.glsl?raw';
 import shadowQuadrature from '../../shaders/chunks/shadow-quadrature.glsl?raw';
 import shadowVisibility from '../../shaders/chunks/shadow-visibility.glsl?raw';
 import surface from '../../shaders/surface.glsl?raw';
-import { SHADOW_DEFINES } from '../geometry/shadowLayout';
+import { SHADOW_DEFINES } from '../shadow/shadowLayout';
 import { COMPOSITE_DEFINES, MAX_BLUR_RADIUS } from './compositeLayout';
 import { LIGHT_DEFINES } from './lightLayout';
 import { SURFACE_DEFINES } from './surfaceLayout';

@@ -1,9 +1,9 @@
 import { mat4 } from 'gl-matrix';
 import { describe, expect, it, vi } from 'vitest';
-import { FramePlan } from '../../src/geometry/FramePlan';
+import { FramePlan } from '../../src/shadow/FramePlan';
 import { signedArea2 } from '../../src/geometry/polygon';
-import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, MOVING_LIST, pseudoAngle, RECORD_FLOATS, STATIC_LIST } from '../../src/geometry/shadowLayout';
-import { ShadowGeometry } from '../../src/geometry/ShadowGeometry';
+import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, MOVING_LIST, pseudoAngle, RECORD_FLOATS, STATIC_LIST } from '../../src/shadow/shadowLayout';
+import { ShadowGeometry } from '../../src/shadow/ShadowGeometry';
 import { Hull, PointLight, TexturedLight, type Light } from '../../src/index';
 
 const WIDTH = 200, HEIGHT = 100;

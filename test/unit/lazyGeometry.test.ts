@@ -1,8 +1,8 @@
 import { mat4 } from 'gl-matrix';
 import { describe, expect, it, vi } from 'vitest';
-import { FramePlan } from '../../src/geometry/FramePlan';
-import { ShadowGeometry } from '../../src/geometry/ShadowGeometry';
-import { RECORD_FLOATS, RECORDS_PER_ROW } from '../../src/geometry/shadowLayout';
+import { FramePlan } from '../../src/shadow/FramePlan';
+import { ShadowGeometry } from '../../src/shadow/ShadowGeometry';
+import { RECORD_FLOATS, RECORDS_PER_ROW } from '../../src/shadow/shadowLayout';
 import { Hull, PointLight, type Light } from '../../src/index';
 
 const WIDTH = 400, HEIGHT = 200;

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { LightTiles } from '../../src/geometry/LightTiles';
-import { SHADOW_TYPE_CODES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_GRID } from '../../src/geometry/shadowLayout';
-import { ShadowGeometry } from '../../src/geometry/ShadowGeometry';
+import { LightTiles } from '../../src/shadow/LightTiles';
+import { SHADOW_TYPE_CODES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_GRID } from '../../src/shadow/shadowLayout';
+import { ShadowGeometry } from '../../src/shadow/ShadowGeometry';
 import { Hull } from '../../src/index';
 import { createRandom } from '../reference/randomScenes';
 import { diskSamples, shareOfSamplesSeen } from '../reference/softShadowReference';

@@ -1,8 +1,8 @@
 import { mat4 } from 'gl-matrix';
 import { describe, expect, it } from 'vitest';
-import { FramePlan } from '../../src/geometry/FramePlan';
-import { ShadowGeometry } from '../../src/geometry/ShadowGeometry';
-import { RECORD_FLOATS, RECORD_POINTS } from '../../src/geometry/shadowLayout';
+import { FramePlan } from '../../src/shadow/FramePlan';
+import { ShadowGeometry } from '../../src/shadow/ShadowGeometry';
+import { RECORD_FLOATS, RECORD_POINTS } from '../../src/shadow/shadowLayout';
 import { Hull, PointLight } from '../../src/index';
 
 /** The records the geometry writes for `hull` (placed alone), each as its points `[[x, y], …]`. */

@@ -1,9 +1,9 @@
 import { mat4, type ReadonlyMat4 } from 'gl-matrix';
 import type { Hull } from '../scene/Hull';
 import { DirectionalLight, type Light, type ShadowType } from '../scene/lights';
-import { HullGrid } from './HullGrid';
+import { HullGrid } from '../geometry/HullGrid';
 import { LightTiles } from './LightTiles';
-import { isInsidePolygon } from './polygon';
+import { isInsidePolygon } from '../geometry/polygon';
 import { scissorOf } from './scissor';
 import { type BinSpan, bucketWidthOf, DirectionalStrips, DISTANCE_BUCKETS, type FiledDisk, grow, ShadowBins } from './ShadowBins';
 import { BIN_COUNT, MOVING_LIST, SHADOW_TYPE_CODES, STATIC_LIST, TILE_CLASS_COUNT, TILE_GRID } from './shadowLayout';

@@ -1,6 +1,6 @@
-import type { ShadowBins } from '../geometry/ShadowBins';
-import type { ShadowGeometry } from '../geometry/ShadowGeometry';
-import { BIN_COUNT, RECORDS_PER_ROW, TEXTURE_WIDTH } from '../geometry/shadowLayout';
+import type { ShadowBins } from './ShadowBins';
+import type { ShadowGeometry } from './ShadowGeometry';
+import { BIN_COUNT, RECORDS_PER_ROW, TEXTURE_WIDTH } from './shadowLayout';
 
 /** Texture units of the shadow textures; the light pass binds a light's cookie on unit 2. */
 export const ShadowUnits = { records: 0, bins: 1, entries: 3, recordTags: 4 } as const;

@@ -1,4 +1,4 @@
-import { ROW_INDICES, TILE_GRID } from '../geometry/shadowLayout';
+import { ROW_INDICES, TILE_GRID } from '../shadow/shadowLayout';
 
 /**
  * Sides of the polygon drawn for a light's range disk. It is circumscribed, so it covers the whole
