@@ -34,6 +34,12 @@ function randomMap(size: number, fill: number): number[][] {
   return Array.from({ length: size }, () => Array.from({ length: size }, () => (random() < fill ? 1 : 0)));
 }
 
+/** A size² map of rooms: walls one tile thick every `room` tiles and around the edge, all joined into one group. */
+function rooms(size: number, room: number): number[][] {
+  return Array.from({ length: size }, (_, y) => Array.from({ length: size }, (_, x) => (
+    x % room === 0 || y % room === 0 || x === size - 1 || y === size - 1 ? 1 : 0)));
+}
+
 const count = (rows: number[][]) => rows.reduce((sum, row) => sum + row.reduce((a, b) => a + b, 0), 0);
 
 export interface Case {
@@ -97,6 +103,34 @@ function edit(rows: number[][]): Case {
   };
 }
 
+/**
+ * One door per run, in a random wall between two rooms of {@link rooms} (never at a crossing): every
+ * other run closes the door the previous one opened, so the map stays as it started.
+ */
+function door(rows: number[][], room: number): Case {
+  const tiles = new TileHulls(rows, { tileSize: 32 });
+  const random = createRandom(4), walls = Math.floor((rows.length - 1) / room);
+  let open: [number, number] | null = null;
+  return {
+    describe: () => `${rows[0].length}×${rows.length}, ${count(rows)} solid, ${tiles.hulls.length} hulls`,
+    run: () => {
+      let x: number, y: number;
+      if (open) [x, y] = open;
+      else {
+        let along: number;
+        do along = 1 + Math.floor(random() * (rows.length - 2)); while (along % room === 0);
+        const across = room * Math.floor(random() * walls);
+        [x, y] = random() < 0.5 ? [along, across] : [across, along];
+      }
+      const start = performance.now();
+      tiles.setTile(x, y, open !== null);
+      const ms = performance.now() - start;
+      open = open ? null : [x, y];
+      return ms;
+    },
+  };
+}
+
 export const CASES: Record<string, () => Case> = {
   'hullsFromTiles: 100×100 all solid': () => build(randomMap(100, 1)),
   'hullsFromTiles: maze': () => build(maze(70)),
@@ -104,4 +138,5 @@ export const CASES: Record<string, () => Case> = {
   'holeFreeRegions + traceOutlines only: 256×256, 30% random walls': () => outlines(randomMap(256, 0.3)),
   'setTile: 256×256, 30% random walls': () => edit(randomMap(256, 0.3)),
   'setTile: maze (every edit re-traces the whole maze)': () => edit(maze(70)),
+  'setTile: a door in a 1000×1000 map of 25×25 rooms': () => door(rooms(1000, 25), 25),
 };

@@ -25,7 +25,19 @@ export interface TileHullsOptions<T = number | boolean> {
   width?: number;
   /** Rows: required for a function; for a flat array, its length / `width` unless given. */
   height?: number;
+  /**
+   * Side, in tiles, of the square chunks the grid is cut into from tile (0, 0): a positive integer.
+   * Each chunk's solid tiles make their own hulls, so a group of tiles that spans chunks (a level's
+   * joined walls) is cut along the chunks' edges, and {@link TileHulls.setTile} rebuilds hulls of
+   * one chunk only. Larger chunks make fewer hulls and slower edits. Default `32`.
+   */
+  chunkSize?: number;
 }
+
+/** Tiles per side of a chunk unless `options.chunkSize` says otherwise. */
+const DEFAULT_CHUNK_SIZE = 32;
+/** Most tiles in a grid ({@link TileHulls.maxTiles}). */
+const MAX_TILES = 2 ** 28;
 
 /** What {@link TileHulls.setTile} changed: hulls to add to the renderer and hulls to remove from it. */
 export interface TileHullsChange {
@@ -38,16 +50,19 @@ export interface TileHullsChange {
 /**
  * Hulls covering exactly the solid tiles of a grid: `hullsFromTiles(level, { tileSize: 32 })`.
  *
- * Each 4-connected group of solid tiles becomes one hull, its outline traced along the tile edges
- * with collinear points removed (a 16-tile wall is a 4-point rectangle). A group that encloses
- * empty tiles (a room's walls) or touches itself at a corner is cut along tile-row boundaries into
- * a few simple polygons (a room's ring becomes 2 hulls): every hull is valid, and hulls only meet
- * along edges. Points are in world units (`position` + tile corner × `tileSize`); each hull's own
- * `position` is `[0, 0]`.
+ * Each 4-connected group of solid tiles within a chunk (a square of `chunkSize` tiles, 32 by
+ * default) becomes one hull, its outline traced along the tile edges with collinear points removed
+ * (a 16-tile wall is a 4-point rectangle); a group that spans chunks is cut along their edges. A
+ * group that encloses empty tiles (a room's walls) or touches itself at a corner is cut along
+ * tile-row boundaries into a few simple polygons (a small room's ring becomes 2 hulls): every hull
+ * is valid, and hulls only meet along edges, with exactly the same points on both sides, so their
+ * shadows join without a gap (a light sees past the union of the hulls). Points are in world units
+ * (`position` + tile corner × `tileSize`); each hull's own `position` is `[0, 0]`.
  *
  * O(tiles) plus the hulls' own triangulation. To change tiles later without rebuilding them all,
  * keep a {@link TileHulls} instead.
- * @throws TypeError or RangeError for a grid or option of the wrong shape, naming it and the value.
+ * @throws TypeError or RangeError for a grid or option of the wrong shape, or a grid of more than
+ * {@link TileHulls.maxTiles} tiles, naming it and the value.
  */
 export function hullsFromTiles<T>(grid: ArrayLike<ArrayLike<T>>, options?: TileHullsOptions<T>): Hull[];
 export function hullsFromTiles<T>(grid: ArrayLike<T>, options: TileHullsOptions<T> & { width: number }): Hull[];
@@ -67,8 +82,8 @@ let messageName = 'TileHulls';
 /**
  * The hulls of a tile grid, kept up to date as tiles change: {@link hullsFromTiles} that can be
  * edited. The grid is read once, into solid or empty; after that {@link TileHulls.setTile} changes
- * one tile and rebuilds only the hulls of the group of tiles it touches, returning the hulls to add
- * to and remove from the renderer. The other hulls stay the same objects.
+ * one tile and rebuilds only the hulls of its chunk whose outline changes, returning the hulls to
+ * add to and remove from the renderer. The other hulls stay the same objects.
  *
  * ```ts
  * const walls = new TileHulls(level, { tileSize: 32 });
@@ -80,10 +95,17 @@ let messageName = 'TileHulls';
  * grid as it then is.
  */
 export class TileHulls<T = unknown> {
+  /**
+   * Most tiles a grid may hold (`width × height`): 2²⁸ = 268,435,456 (16,384²). One byte is kept
+   * per tile; a larger grid is refused before anything is allocated.
+   */
+  static readonly maxTiles = MAX_TILES;
   /** Tiles per row. */
   readonly width: number;
   /** Rows of tiles. */
   readonly height: number;
+  /** Side of the square chunks, in tiles (see {@link TileHullsOptions.chunkSize}). */
+  readonly chunkSize: number;
   private readonly tileWidth: number;
   private readonly tileHeight: number;
   private readonly originX: number;
@@ -91,18 +113,20 @@ export class TileHulls<T = unknown> {
   private readonly name: string;
   /** 1 for a solid tile, row-major. */
   private readonly cells: Uint8Array;
-  /** The piece (hull slot) of each solid tile, −1 for an empty one. */
-  private readonly pieces: Int32Array;
+  /** Chunks per row of chunks. */
+  private readonly chunkColumns: number;
+  /** Per chunk (row-major): the slots of its hulls; undefined when it has none. */
+  private readonly chunkSlots: Array<number[] | undefined> = [];
   private readonly slots: Array<Hull | undefined> = [];
+  /** Per slot: its hull's outline in tile corners, `[x0, y0, x1, y1, …]` from tile (0, 0). */
+  private readonly outlines: Array<Int32Array | undefined> = [];
   private readonly freeSlots: number[] = [];
   private hullList: readonly Hull[] | null = null;
-  /** Marks the tiles of one update: `mark[i] === markValue`. */
-  private readonly mark: Int32Array;
-  private markValue = 0;
 
   /**
    * Reads `grid` (see {@link TileGrid}) and builds its hulls, as {@link hullsFromTiles} does.
-   * @throws TypeError or RangeError for a grid or option of the wrong shape, naming it and the value.
+   * @throws TypeError or RangeError for a grid or option of the wrong shape, or a grid of more than
+   * {@link TileHulls.maxTiles} tiles, naming it and the value.
    */
   constructor(grid: ArrayLike<ArrayLike<T>>, options?: TileHullsOptions<T>);
   constructor(grid: ArrayLike<T>, options: TileHullsOptions<T> & { width: number });
@@ -112,13 +136,14 @@ export class TileHulls<T = unknown> {
     assertOptions(name, options);
     [this.tileWidth, this.tileHeight] = readTileSize(name, options.tileSize);
     [this.originX, this.originY] = readPosition(name, options.position);
+    this.chunkSize = readChunkSize(name, options.chunkSize);
     const read = readGrid(name, grid, options as TileHullsOptions<unknown>, readSolid(name, options.solid));
     this.width = read.width;
     this.height = read.height;
     this.cells = read.cells;
-    this.pieces = new Int32Array(this.cells.length).fill(-1);
-    this.mark = new Int32Array(this.cells.length);
-    this.rebuild(0, 0, this.width, this.height, (i) => this.cells[i] === 1);
+    this.chunkColumns = Math.ceil(this.width / this.chunkSize);
+    const chunks = this.chunkColumns * Math.ceil(this.height / this.chunkSize);
+    for (let chunk = 0; chunk < chunks; chunk++) this.rebuildChunk(chunk, [], []);
   }
 
   /** The current hulls (a new array after each change; the same one until then). */
@@ -132,97 +157,93 @@ export class TileHulls<T = unknown> {
   }
 
   /**
-   * Makes tile (x, y) solid or empty and rebuilds the hulls of the tiles it touches: the group of
-   * solid tiles it joins or leaves (4-connected, so corners do not count). Returns the hulls that
-   * replace the old ones of that group, and the old ones; both empty when the tile already was so.
+   * Makes tile (x, y) solid or empty and rebuilds the hulls of its chunk whose outline that
+   * changes. Returns the new hulls and the old ones they replace; both empty when the tile already
+   * was so. Every other hull stays the same object, unchanged (a renderer does not see it move).
    *
-   * O(size of the group's bounding box), plus triangulating its new hulls; the rest of the grid is
-   * not looked at.
+   * O(chunkSize²), plus triangulating the new hulls; the rest of the grid is not looked at.
    * @throws RangeError for a tile outside the grid, TypeError for a non-boolean `solid`.
    */
   setTile(x: number, y: number, solid: boolean): TileHullsChange {
     if (!Number.isInteger(x) || x < 0 || x >= this.width) throw new RangeError(`${this.name}.setTile x must be an integer in 0..${this.width - 1}, got ${describeValue(x)}`);
     if (!Number.isInteger(y) || y < 0 || y >= this.height) throw new RangeError(`${this.name}.setTile y must be an integer in 0..${this.height - 1}, got ${describeValue(y)}`);
     if (typeof solid !== 'boolean') throw new TypeError(`${this.name}.setTile solid must be true or false, got ${describeValue(solid)}`);
-    const w = this.width, tile = y * w + x;
+    const tile = y * this.width + x;
     if ((this.cells[tile] === 1) === solid) return { added: [], removed: [] };
     this.cells[tile] = solid ? 1 : 0;
-
-    // The groups the tile now belongs to or leaves: flood the solid tiles from it (or its neighbours).
-    const value = ++this.markValue, mark = this.mark, cells = this.cells;
-    const stack: number[] = [];
-    const push = (i: number) => {
-      if (cells[i] === 1 && mark[i] !== value) {
-        mark[i] = value;
-        stack.push(i);
-      }
-    };
-    if (solid) push(tile);
-    else {
-      if (x > 0) push(tile - 1);
-      if (x + 1 < w) push(tile + 1);
-      if (y > 0) push(tile - w);
-      if (y + 1 < this.height) push(tile + w);
-    }
-    let x0 = x, y0 = y, x1 = x, y1 = y;
-    const oldPieces = new Set<number>();
-    if (this.pieces[tile] >= 0) oldPieces.add(this.pieces[tile]);
-    this.pieces[tile] = -1;
-    for (let k = 0; k < stack.length; k++) {
-      const i = stack[k], cx = i % w, cy = (i - cx) / w;
-      if (this.pieces[i] >= 0) oldPieces.add(this.pieces[i]);
-      if (cx < x0) x0 = cx;
-      if (cx > x1) x1 = cx;
-      if (cy < y0) y0 = cy;
-      if (cy > y1) y1 = cy;
-      if (cx > 0) push(i - 1);
-      if (cx + 1 < w) push(i + 1);
-      if (cy > 0) push(i - w);
-      if (cy + 1 < this.height) push(i + w);
-    }
-
-    const removed: Hull[] = [];
-    for (const slot of oldPieces) {
-      removed.push(this.slots[slot]!);
-      this.slots[slot] = undefined;
-      this.freeSlots.push(slot);
-    }
-    const added = stack.length === 0 ? [] : this.rebuild(x0, y0, x1 + 1, y1 + 1, (i) => mark[i] === value);
-    this.hullList = null;
+    const added: Hull[] = [], removed: Hull[] = [];
+    this.rebuildChunk(Math.floor(y / this.chunkSize) * this.chunkColumns + Math.floor(x / this.chunkSize), added, removed);
     return { added, removed };
   }
 
   /**
-   * Splits the tiles `inSet` of the box [x0, x1) × [y0, y1) into regions, traces them and gives
-   * each a hull in a free slot, labelling its tiles. Every tile `inSet` must be solid and its group
-   * wholly in the set.
+   * Cuts the solid tiles of chunk `chunk` into regions and traces them. A region whose outline a
+   * hull of the chunk already has keeps that hull; every other region gets a new hull (pushed to
+   * `added`), and the chunk's hulls left over are dropped (pushed to `removed`).
    */
-  private rebuild(x0: number, y0: number, x1: number, y1: number, inSet: (i: number) => boolean): Hull[] {
-    const w = this.width, bw = x1 - x0, bh = y1 - y0;
-    const { labels, count } = holeFreeRegions({ width: bw, height: bh, solid: (x, y) => inSet((y + y0) * w + x + x0) });
-    const outlines = traceOutlines(labels, bw, bh, count);
-    const slotOf = new Int32Array(count), added: Hull[] = [];
-    for (let r = 0; r < count; r++) {
-      const outline = outlines[r], coords = new Float64Array(outline.length);
-      for (let k = 0; k < outline.length; k += 2) {
-        coords[k] = this.originX + (outline[k] + x0) * this.tileWidth;
-        coords[k + 1] = this.originY + (outline[k + 1] + y0) * this.tileHeight;
+  private rebuildChunk(chunk: number, added: Hull[], removed: Hull[]): void {
+    const size = this.chunkSize, width = this.width, cells = this.cells;
+    const x0 = (chunk % this.chunkColumns) * size, y0 = Math.floor(chunk / this.chunkColumns) * size;
+    const columns = Math.min(size, width - x0), rows = Math.min(size, this.height - y0);
+    const { labels, count } = holeFreeRegions({ width: columns, height: rows, solid: (x, y) => cells[(y + y0) * width + x + x0] === 1 });
+    const traced = traceOutlines(labels, columns, rows, count);
+    // An outline starts at the top-left corner of its region's first tile: no two regions of a chunk share it.
+    const cornerKey = (outline: Int32Array) => outline[1] * (width + 1) + outline[0];
+    const oldSlots = new Map<number, number>();
+    for (const slot of this.chunkSlots[chunk] ?? []) oldSlots.set(cornerKey(this.outlines[slot]!), slot);
+    const slots: number[] = [];
+    for (const local of traced) {
+      const outline = new Int32Array(local.length);
+      for (let k = 0; k < local.length; k += 2) {
+        outline[k] = local[k] + x0;
+        outline[k + 1] = local[k + 1] + y0;
       }
-      const hull = Hull.fromCoords(coords);
-      const slot = this.freeSlots.pop() ?? this.slots.length;
-      this.slots[slot] = hull;
-      slotOf[r] = slot;
-      added.push(hull);
+      const key = cornerKey(outline), old = oldSlots.get(key);
+      if (old !== undefined && sameValues(this.outlines[old]!, outline)) {
+        oldSlots.delete(key);
+        slots.push(old);
+      } else slots.push(this.addHull(outline, added));
     }
-    for (let by = 0; by < bh; by++) {
-      for (let bx = 0; bx < bw; bx++) {
-        const label = labels[by * bw + bx];
-        if (label >= 0) this.pieces[(by + y0) * w + bx + x0] = slotOf[label];
-      }
+    for (const slot of oldSlots.values()) {
+      removed.push(this.slots[slot]!);
+      this.slots[slot] = this.outlines[slot] = undefined;
+      this.freeSlots.push(slot);
     }
-    this.hullList = null;
-    return added;
+    this.chunkSlots[chunk] = slots.length > 0 ? slots : undefined;
+    if (added.length > 0 || removed.length > 0) this.hullList = null;
   }
+
+  /**
+   * Makes the hull of `outline` (tile corners), puts it in a free slot and in `added`; returns the
+   * slot. A corner's world point depends on the corner alone, so hulls that share an edge (across
+   * a chunk's edge or a cut) have exactly the same points along it.
+   */
+  private addHull(outline: Int32Array, added: Hull[]): number {
+    const coords = new Float64Array(outline.length);
+    for (let k = 0; k < outline.length; k += 2) {
+      coords[k] = this.originX + outline[k] * this.tileWidth;
+      coords[k + 1] = this.originY + outline[k + 1] * this.tileHeight;
+    }
+    const hull = Hull.fromCoords(coords);
+    const slot = this.freeSlots.pop() ?? this.slots.length;
+    this.slots[slot] = hull;
+    this.outlines[slot] = outline;
+    added.push(hull);
+    return slot;
+  }
+}
+
+function sameValues(a: Int32Array, b: Int32Array): boolean {
+  if (a.length !== b.length) return false;
+  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return false;
+  return true;
+}
+
+function readChunkSize(name: string, value: unknown): number {
+  if (value === undefined) return DEFAULT_CHUNK_SIZE;
+  if (typeof value !== 'number') throw new TypeError(`${name} options.chunkSize must be a positive integer, got ${describeValue(value)}`);
+  if (!Number.isInteger(value) || value < 1) throw new RangeError(`${name} options.chunkSize must be a positive integer, got ${describeValue(value)}`);
+  return value;
 }
 
 function readTileSize(name: string, value: number | Vec2Like | undefined): [number, number] {
@@ -287,6 +308,7 @@ function readGrid(name: string, grid: unknown, options: TileHullsOptions<unknown
       throw new TypeError(`${name} options.width and options.height must be given for a grid function, got ${describeValue(options.width)} and ${describeValue(options.height)}`);
     }
     const width = size('width', options.width), height = size('height', options.height);
+    assertTileCount(name, 'options.width × options.height', width, height);
     const cells = new Uint8Array(width * height);
     for (let y = 0; y < height; y++) {
       for (let x = 0; x < width; x++) cells[y * width + x] = isSolid(grid(x, y), x, y, () => `grid(${x}, ${y})`) ? 1 : 0;
@@ -303,6 +325,7 @@ function readGrid(name: string, grid: unknown, options: TileHullsOptions<unknown
     if (!Number.isInteger(height) || width * height !== grid.length) {
       throw new RangeError(`${name} grid must hold width × height = ${options.height === undefined ? `a multiple of ${width}` : width * height} tiles, got ${grid.length}`);
     }
+    assertTileCount(name, 'options.width × height', width, height);
     const cells = new Uint8Array(width * height);
     for (let i = 0; i < cells.length; i++) {
       const x = i % width, y = (i - x) / width;
@@ -324,12 +347,20 @@ function readGrid(name: string, grid: unknown, options: TileHullsOptions<unknown
     if (y === 0) width = row.length;
     else if (row.length !== width) throw new RangeError(`${name} grid[${y}] must have ${width} tiles like grid[0], got ${row.length}`);
   }
+  assertTileCount(name, 'grid[0].length × grid.length', width, height);
   const cells = new Uint8Array(width * height);
   for (let y = 0; y < height; y++) {
     const row = (grid as ArrayLike<ArrayLike<unknown>>)[y];
     for (let x = 0; x < width; x++) cells[y * width + x] = isSolid(row[x], x, y, () => `grid[${y}][${x}]`) ? 1 : 0;
   }
   return { width, height, cells };
+}
+
+/** Refuses a grid of more than {@link MAX_TILES} tiles, before its tiles are allocated or read. */
+function assertTileCount(name: string, fields: string, width: number, height: number): void {
+  if (width * height > MAX_TILES) {
+    throw new RangeError(`${name} ${fields} must be at most ${MAX_TILES} tiles (TileHulls.maxTiles), got ${width} × ${height} = ${width * height}`);
+  }
 }
 
 function isArrayLike(value: unknown): value is ArrayLike<unknown> {

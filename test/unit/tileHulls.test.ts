@@ -79,13 +79,27 @@ describe('hullsFromTiles', () => {
     expect(hullsFromTiles([], { width: 4 })).toEqual([]);
   });
 
+  it('cuts a group larger than a chunk along the chunk edges, the pieces meeting at the same points', () => {
+    const hulls = hullsFromTiles([Array(16).fill(1), Array(16).fill(1)], { tileSize: 32, position: [100, 50], chunkSize: 5 });
+    expect(hulls.map((hull) => hull.points)).toEqual([0, 5, 10, 15].map((x) => {
+      const left = 100 + 32 * x, right = 100 + 32 * Math.min(x + 5, 16);
+      return [[left, 50], [right, 50], [right, 114], [left, 114]];
+    }));
+    // A ring of 6 × 6 tiles in chunks of 4: four corners of the ring, each a disk, and no more.
+    const ring = ['######', '#....#', '#....#', '#....#', '#....#', '######'];
+    const pieces = hullsFromTiles(ring, { solid: '#', chunkSize: 4 });
+    expect(pieces).toHaveLength(4);
+    expectCovers(pieces, (x, y) => ring[y][x] === '#', 6, 6);
+  });
+
   it('covers random grids exactly with valid hulls (300 grids, seeded)', () => {
     const random = createRandom(2024);
     for (let k = 0; k < 300; k++) {
       const width = 1 + Math.floor(random() * 20), height = 1 + Math.floor(random() * 20);
       const rows = randomRows(width, height, 0.15 + 0.8 * random(), random);
       const size: [number, number] = [1 + Math.floor(random() * 40), 1 + Math.floor(random() * 40)];
-      expectCovers(hullsFromTiles(rows, { tileSize: size, position: [7, -3] }), (x, y) => rows[y][x] === 1, width, height, size, [7, -3]);
+      const chunkSize = random() < 0.5 ? undefined : 1 + Math.floor(random() * 6);
+      expectCovers(hullsFromTiles(rows, { tileSize: size, position: [7, -3], chunkSize }), (x, y) => rows[y][x] === 1, width, height, size, [7, -3]);
     }
   });
 
@@ -102,10 +116,32 @@ describe('hullsFromTiles', () => {
     expect(() => hullsFromTiles([[1]], { position: [0, NaN] })).toThrow(/options.position must be an \[x, y\] pair of finite numbers, got \[0,NaN\]/);
     expect(() => hullsFromTiles([[1]], { solid: () => 1 as never })).toThrow(/options.solid must return true or false, got 1 for tile \(0, 0\)/);
     expect(() => new TileHulls([[1]], { tileSize: -1 })).toThrow(/^TileHulls options.tileSize/);
+    expect(() => hullsFromTiles([[1]], { chunkSize: 0 })).toThrow(new RangeError('hullsFromTiles options.chunkSize must be a positive integer, got 0'));
+    expect(() => hullsFromTiles([[1]], { chunkSize: 2.5 })).toThrow(RangeError);
+    expect(() => hullsFromTiles([[1]], { chunkSize: '8' as never })).toThrow(new TypeError('hullsFromTiles options.chunkSize must be a positive integer, got "8"'));
     const tiles = new TileHulls([[1, 0]]);
     expect(() => tiles.setTile(2, 0, true)).toThrow(new RangeError('TileHulls.setTile x must be an integer in 0..1, got 2'));
     expect(() => tiles.setTile(0, 0.5, true)).toThrow(RangeError);
     expect(() => tiles.setTile(0, 0, 1 as never)).toThrow(new TypeError('TileHulls.setTile solid must be true or false, got 1'));
+  });
+});
+
+describe('the size of a grid', () => {
+  it('is at most TileHulls.maxTiles tiles, refused before a tile is allocated or read', () => {
+    expect(TileHulls.maxTiles).toBe(2 ** 28);
+    let reads = 0;
+    const tile = () => {
+      reads++;
+      return 0;
+    };
+    expect(() => new TileHulls(tile, { width: 1e5, height: 1e5 })).toThrow(new RangeError(
+      'TileHulls options.width × options.height must be at most 268435456 tiles (TileHulls.maxTiles), got 100000 × 100000 = 10000000000'));
+    expect(() => hullsFromTiles(tile, { width: 2 ** 31, height: 1 })).toThrow(/^hullsFromTiles options.width × options.height must be at most 268435456 tiles .*got 2147483648 × 1 = 2147483648$/);
+    expect(() => hullsFromTiles(tile, { width: 2 ** 14, height: 2 ** 14 + 1 })).toThrow(RangeError);
+    expect(reads).toBe(0);
+    expect(() => hullsFromTiles({ length: 2 ** 29 } as ArrayLike<number>, { width: 2 ** 10 })).toThrow(/^hullsFromTiles options.width × height must be at most 268435456 tiles .*got 1024 × 524288 = 536870912$/);
+    const row = { length: 2 ** 14 } as ArrayLike<number>;
+    expect(() => hullsFromTiles(new Array<ArrayLike<number>>(2 ** 15).fill(row))).toThrow(/^hullsFromTiles grid\[0\].length × grid.length must be at most 268435456 tiles .*got 16384 × 32768 = 536870912$/);
   });
 });
 
@@ -132,12 +168,42 @@ describe('TileHulls', () => {
     expect(tiles.hulls).toHaveLength(1);
   });
 
+  it('opens a door in the joined walls of a 1000×1000 map by replacing hulls of its chunk only', () => {
+    // Rooms of 25 × 25 tiles: every wall joined to every other, and to the map's outer wall.
+    const size = 1000, rows = Array.from({ length: size }, (_, y) => Array.from({ length: size }, (_, x) => (
+      x % 25 === 0 || y % 25 === 0 || x === size - 1 || y === size - 1 ? 1 : 0)));
+    const tiles = new TileHulls(rows, { tileSize: 32 });
+    const before = tiles.hulls, versions = before.map((hull) => hull.version), shapesBefore = shapes(before);
+    // The door's chunk (tiles 480..511 × 0..31) holds one piece of the walls: the outer wall's, a
+    // room's wall down from it at x = 500 and one across at y = 25. The door cuts tile 511 off it.
+    const open = tiles.setTile(510, 0, false);
+    rows[0][510] = 0;
+    expect(open.removed).toHaveLength(1);
+    expect(open.added).toHaveLength(2);
+    const inDoorChunk = (hull: Hull) => hull.points.every(([x, y]) => x >= 480 * 32 && x <= 512 * 32 && y >= 0 && y <= 32 * 32);
+    expect([...open.added, ...open.removed].every(inDoorChunk)).toBe(true);
+    // Every other hull is the same object, unchanged: a renderer sees none of them move.
+    const now = new Set(tiles.hulls);
+    before.forEach((hull, i) => {
+      if (open.removed.includes(hull)) return;
+      expect(now.has(hull)).toBe(true);
+      expect(hull.version).toBe(versions[i]);
+    });
+    expect(shapes(tiles.hulls)).toEqual(shapes(hullsFromTiles(rows, { tileSize: 32 })));
+    // Closing it again brings back the piece it was.
+    const close = tiles.setTile(510, 0, true);
+    expect(close.removed).toEqual(open.added);
+    expect(close.added).toHaveLength(1);
+    expect(shapes(tiles.hulls)).toEqual(shapesBefore);
+  });
+
   it('keeps the hulls a fresh hullsFromTiles makes, through random setTile sequences (200 grids, seeded)', () => {
     const random = createRandom(99);
     for (let k = 0; k < 200; k++) {
       const width = 1 + Math.floor(random() * 14), height = 1 + Math.floor(random() * 14);
       const rows = randomRows(width, height, 0.2 + 0.7 * random(), random);
-      const tiles = new TileHulls(rows, { tileSize: 2, position: [1, 1] });
+      const chunkSize = random() < 0.3 ? undefined : 1 + Math.floor(random() * 6);
+      const tiles = new TileHulls(rows, { tileSize: 2, position: [1, 1], chunkSize });
       let current = new Set(tiles.hulls);
       for (let step = 0; step < 20; step++) {
         const x = Math.floor(random() * width), y = Math.floor(random() * height), solid = random() < 0.5;
@@ -147,7 +213,7 @@ describe('TileHulls', () => {
         for (const hull of added) current.add(hull);
         expect(new Set(tiles.hulls)).toEqual(current);
       }
-      expect(shapes(tiles.hulls)).toEqual(shapes(hullsFromTiles(rows, { tileSize: 2, position: [1, 1] })));
+      expect(shapes(tiles.hulls)).toEqual(shapes(hullsFromTiles(rows, { tileSize: 2, position: [1, 1], chunkSize })));
       expectCovers(tiles.hulls, (x, y) => rows[y][x] === 1, width, height, [2, 2], [1, 1]);
     }
   });

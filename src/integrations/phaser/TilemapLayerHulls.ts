@@ -26,7 +26,7 @@ type SolidTest = (tile: Phaser.Tilemaps.Tile | null) => boolean;
 
 /**
  * The hulls of a Phaser tilemap layer's solid tiles, kept in step with the layer: built with the
- * core's {@link TileHulls} (one hull per group of touching tiles, not one per tile), placed at
+ * core's {@link TileHulls} (one hull per group of touching tiles in a chunk, not one per tile), placed at
  * the layer's position and scale, and, when tiles change, rebuilt only around the changed tiles
  * with {@link TileHulls.setTile}. Usually made with {@link PenumbraPlugin.addTilemapLayer}:
  *
