@@ -54,7 +54,7 @@ export interface SceneLook {
   toneMapping: 'none' | 'reinhard' | 'aces';
   /** `"none"`, `"ordered"` or `"noise"`. Optional, default `"none"`. */
   dithering: 'none' | 'ordered' | 'noise';
-  /** 0..32. Optional, default `0`. */
+  /** 0..32; below 1/8 is off and reads as `0`. Optional, default `0`. */
   lightmapBlur: number;
 }
 

@@ -2,6 +2,7 @@ import {
   booleanField, childPath, choiceField, colorField, layersField, nameField, numberField, positiveField, readArray, readObject,
   readVec2, vec2Field, type Fields,
 } from './fields';
+import { MAX_BLUR_RADIUS, MIN_BLUR_RADIUS } from '../passes/compositeLayout';
 import { describeValue, shortened } from '../scene/validate';
 import {
   DEFAULT_LOOK, SCENE_FORMAT, SCENE_FORMAT_VERSION, SCENE_MAX_HULL_POINTS,
@@ -124,8 +125,14 @@ function readLook(value: unknown, path: string): SceneLook {
     exposure: numberField(look, 'exposure', DEFAULT_LOOK.exposure, 0),
     toneMapping: choiceField(look, 'toneMapping', ['none', 'reinhard', 'aces'] as const, DEFAULT_LOOK.toneMapping),
     dithering: choiceField(look, 'dithering', ['none', 'ordered', 'noise'] as const, DEFAULT_LOOK.dithering),
-    lightmapBlur: numberField(look, 'lightmapBlur', DEFAULT_LOOK.lightmapBlur, 0, 32),
+    lightmapBlur: blurField(look),
   };
+}
+
+/** The look's blur radius, 0..{@link MAX_BLUR_RADIUS}; one below {@link MIN_BLUR_RADIUS} is off and reads as 0, as the renderer's setter has it. */
+function blurField(look: Fields): number {
+  const radius = numberField(look, 'lightmapBlur', DEFAULT_LOOK.lightmapBlur, 0, MAX_BLUR_RADIUS);
+  return radius < MIN_BLUR_RADIUS ? 0 : radius;
 }
 
 function readHull(value: unknown, path: string, fields: readonly string[]): SceneHull {

@@ -1,6 +1,6 @@
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
-import { MAX_BLUR_RADIUS } from './compositeLayout';
+import { MAX_BLUR_RADIUS, MIN_BLUR_RADIUS } from './compositeLayout';
 import { shaderSources } from './shaders';
 
 const SOURCE_UNIT = 0;
@@ -22,10 +22,12 @@ export class BlurPass {
   constructor(private readonly gl: WebGL2RenderingContext, private readonly format: TargetFormat) {}
 
   /**
-   * Blurs the first attachment of `lightmap` in place by `radius` texels (0 < radius ≤
-   * {@link MAX_BLUR_RADIUS}); leaves blending and scissor off.
+   * Blurs the first attachment of `lightmap` in place by `radius` texels (≤ {@link MAX_BLUR_RADIUS});
+   * leaves blending and scissor off. A radius below {@link MIN_BLUR_RADIUS} (the renderer's blur
+   * times a `lightmapScale` below 1 may be one) is the identity: it does nothing.
    */
   render(lightmap: RenderTarget, radius: number): void {
+    if (!(radius >= MIN_BLUR_RADIUS)) return;
     const gl = this.gl;
     const taps = Math.min(MAX_BLUR_RADIUS, Math.ceil(radius));
     const program = (this.program ??= createProgram(gl, 'lightmap blur', shaderSources.fullscreenVertex, shaderSources.blurFragment));

@@ -2,6 +2,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { Hull, PenumbraRenderer, PointLight } from '../../src/index';
 import { createContext, destroyContext } from './context';
 import { lightmapOf } from './fixtures';
+import { readTexture } from './readTexture';
 
 // The lightmap blur against a CPU version of the same filter applied to the unblurred lightmap:
 // per axis, Σ_k w_k × texel(x + k), k = −⌈R⌉..⌈R⌉, w_k ∝ exp(−k² / (2 (R/2)²)) normalised, taps past
@@ -66,6 +67,35 @@ describe('lightmap blur, on headless-gl', () => {
       expect(gl.getError()).toBe(0);
     });
   }
+
+  it('treats a radius too small to move any value as off: no NaN from an underflowing Gaussian', () => {
+    renderer.lightmapBlur = 0;
+    const sharp = lightmapOf(gl, renderer, WIDTH, HEIGHT);
+    // Down to the smallest double: σ² underflows to 0 below about 3e-162 (exp(−0 / 0) is NaN).
+    for (const radius of [0.12, 1e-10, 3e-162, 1e-200, 1e-320, Number.MIN_VALUE]) {
+      renderer.lightmapBlur = radius;
+      expect(renderer.lightmapBlur).toBe(0);
+      expect(lightmapOf(gl, renderer, WIDTH, HEIGHT)).toEqual(sharp);
+    }
+    // 1/8 is on: its weights are the single tap (the passes' sampling may still round).
+    renderer.lightmapBlur = 0.125;
+    expect(renderer.lightmapBlur).toBe(0.125);
+    const barely = lightmapOf(gl, renderer, WIDTH, HEIGHT);
+    expect(Math.max(...barely.map((value, i) => Math.abs(value - sharp[i])))).toBeLessThanOrEqual(0.002 * Math.max(...sharp));
+    expect(gl.getError()).toBe(0);
+  });
+
+  it('leaves the lightmap as it is where lightmapScale brings the radius below 1/8 of a lightmap texel', () => {
+    const scaled = new PenumbraRenderer(gl, { lightmapScale: 0.5, lightmapBlur: 0.2 });
+    scaled.addLight(new PointLight({ position: [14, 24], range: 60 }));
+    scaled.renderLightmap();
+    const blurred = readTexture(gl, scaled.lightmapTexture, WIDTH / 2, HEIGHT / 2);
+    scaled.lightmapBlur = 0;
+    scaled.renderLightmap();
+    expect(blurred).toEqual(readTexture(gl, scaled.lightmapTexture, WIDTH / 2, HEIGHT / 2));
+    expect(blurred.every(Number.isFinite)).toBe(true);
+    scaled.dispose();
+  });
 
   it('names the property and the value of a bad radius', () => {
     expect(() => { renderer.lightmapBlur = -1; }).toThrow(new RangeError('PenumbraRenderer.lightmapBlur must not be negative, got -1'));

@@ -120,6 +120,15 @@ describe('hull point cap', () => {
   });
 });
 
+describe('values the GPU cannot take', () => {
+  it('reads a lightmap blur below 1/8 (a denormal one included) as 0, the blur being off', () => {
+    for (const lightmapBlur of [1e-320, 3e-162, 0.1]) {
+      expect(readScene({ ...fullScene(), look: { ...fullScene().look, lightmapBlur } }).look.lightmapBlur).toBe(0);
+    }
+    expect(readScene({ ...fullScene(), look: { ...fullScene().look, lightmapBlur: 0.125 } }).look.lightmapBlur).toBe(0.125);
+  });
+});
+
 describe('every scene that loads can be saved', () => {
   it('keeps a textured light that follows its range, even when twice the range overflows', () => {
     const scene = readScene({ format: 'penumbra-scene', version: 1, lights: [{ kind: 'textured', position: [0, 0], cookie: 'flame', range: 1e308 }] });
