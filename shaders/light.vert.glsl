@@ -6,7 +6,7 @@
 //
 // Plain: a_corner is a point of the unit square (LightShapes), mapped onto the quad.
 // TILED: a_corner is a corner point (i, j) of the tile grid over the light's filed bounds, of a
-// rectangle of tiles of one class (see src/geometry/LightTiles.ts): the grid's corner plus whole
+// rectangle of tiles of one class (see src/shadow/LightTiles.ts): the grid's corner plus whole
 // numbers of tiles, the same expression in every program (`invariant`), so a light's draws meet
 // without gaps or overlaps.
 precision highp float;

@@ -1,5 +1,5 @@
 #version 300 es
-// The shadow records (src/geometry/shadowLayout.ts), vertex stage, no attributes. As outlines
+// The shadow records (src/shadow/shadowLayout.ts), vertex stage, no attributes. As outlines
 // (the debug wireframe, drawn as LINES): two vertices per side and RECORD_TEXELS * 2 sides per
 // record, vertex i of record i / (RECORD_TEXELS * 4); the padding repeats the last point, so its
 // sides have no length. With FILLED (the hull mask, drawn as TRIANGLES): each record's convex quad as

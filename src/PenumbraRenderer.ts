@@ -11,9 +11,10 @@ import { CompositePass, CompositeUnits } from './passes/CompositePass';
 import { HullMaskPass } from './passes/HullMaskPass';
 import { Dithering, MAX_BLUR_RADIUS, ToneMapping } from './passes/compositeLayout';
 import { DebugPass } from './passes/DebugPass';
-import { COOKIE_UNIT, LightPass, type Surface } from './passes/LightPass';
-import { ShadowTextures, ShadowUnits } from './shadow/ShadowTextures';
-import { LightmapAttachments, SceneAttachments, SurfaceUnits } from './passes/surfaceLayout';
+import { LightPass, type Surface } from './passes/LightPass';
+import { LIGHT_TEXTURE_UNITS, SHADOW_TEXTURE_UNITS } from './passes/lightLayout';
+import { ShadowTextures } from './shadow/ShadowTextures';
+import { LightmapAttachments, SceneAttachments } from './passes/surfaceLayout';
 import { Hull } from './scene/Hull';
 import { IlluminationQuery, type Illumination, type IlluminationOptions } from './scene/illumination';
 import { DirectionalLight, Light, TexturedLight, type LightOptions } from './scene/lights';
@@ -149,13 +150,14 @@ interface Resources {
 const TRANSPARENT = new Float32Array(4);
 
 /**
- * The texture units the passes bind (from 0: the shadow textures', the cookie's and the
- * composite's scene and lightmap; with normals the surface's; upsampling aware of hull edges the
+ * The texture units the passes bind (from 0: the light pass's, see LIGHT_TEXTURE_UNITS, and the
+ * composite's scene and lightmap; with normals its surface's; upsampling aware of hull edges the
  * hull masks'), saved and restored around every draw.
  */
 function textureUnits(normals: boolean, edgeAware: boolean): number {
-  const last = Math.max(COOKIE_UNIT, ...Object.values(ShadowUnits), CompositeUnits.scene, CompositeUnits.lightmap,
-    ...(normals ? [...Object.values(SurfaceUnits), CompositeUnits.specular, CompositeUnits.material] : []),
+  const { u_normals, u_material, ...lightUnits } = LIGHT_TEXTURE_UNITS;
+  const last = Math.max(...Object.values(lightUnits), CompositeUnits.scene, CompositeUnits.lightmap,
+    ...(normals ? [u_normals, u_material, CompositeUnits.specular, CompositeUnits.material] : []),
     ...(edgeAware ? [CompositeUnits.hullMask, CompositeUnits.lightmapHullMask] : []));
   return last + 1;
 }
@@ -825,7 +827,7 @@ export class PenumbraRenderer {
         const shapes = keep(new LightShapes(gl));
         this.resources = {
           shapes,
-          shadows: keep(new ShadowTextures(gl)),
+          shadows: keep(new ShadowTextures(gl, SHADOW_TEXTURE_UNITS)),
           scene: keep(new RenderTarget(gl, { format: 'rgba8', depthStencil: true, colorAttachments: this._normals ? 3 : 1 }, this.width, this.height)),
           light: keep(new LightPass(gl, shapes, this.lightmapFormat, this.lightmapWidth, this.lightmapHeight, this._normals)),
           composite: keep(new CompositePass(gl, this._normals, this.edgeAware)),

@@ -1,6 +1,6 @@
 // Shared by the light passes built with SHADOWED: the fraction of the light's disk visible from the
 // pixel (SPEC §6), computed in the light's own fragment from the hulls in the pixel's angular bin
-// (see src/geometry/shadowLayout.ts for the textures, ShadowBins for what a bin holds).
+// (see src/shadow/shadowLayout.ts for the textures, ShadowBins for what a bin holds).
 //
 // Seen from a pixel p outside the disk, the line through p in direction d passes the centre c at
 // the signed distance cross(c − p, d) / |d|; over the radius r this is the chord height t in
@@ -34,7 +34,7 @@
 //
 // Built with LEAN_SHADOW, the lean program: for pixels whose records that hide anything are all in
 // front and none of which holds the pixel for an Occluded light (the lean tiles of
-// src/geometry/LightTiles.ts: no record meets the disk), it leaves out what only the others need,
+// src/shadow/LightTiles.ts: no record meets the disk), it leaves out what only the others need,
 // the records seen past (they hide nothing there), the closed form, the quadrature and the holder
 // pass, and is as exact as the general program.
 //
@@ -50,7 +50,7 @@ uniform highp sampler2D u_entries;
 uniform highp sampler2D u_bins;
 
 uniform vec4 u_shadow; // position xy, disk radius, row of the light's shadow bins
-uniform float u_shadowType; // how the light treats the inside of hulls: SHADOW_SOLID, … (src/geometry/shadowLayout.ts)
+uniform float u_shadowType; // how the light treats the inside of hulls: SHADOW_SOLID, … (src/shadow/shadowLayout.ts)
 // A light's bins were filed for a disk of radius u_binning.z ≥ r around u_binning.xy, which holds
 // the light's disk (a moving light keeps its filing while its disk stays inside, see FramePlan): bins
 // and distance buckets (u_binning.w wide) are taken from that centre, the shadows from the light's
@@ -58,7 +58,7 @@ uniform float u_shadowType; // how the light treats the inside of hulls: SHADOW_
 uniform vec4 u_binning;
 #ifdef DIRECTIONAL
 // A directional light: u_shadow holds the unit direction it travels, sin α (α its angular radius)
-// and its row; u_binning its strips (DirectionalStrips in src/geometry/ShadowBins.ts): the least
+// and its row; u_binning its strips (DirectionalStrips in src/shadow/ShadowBins.ts): the least
 // coordinate across the travel, a strip's width, where the first distance bucket starts along it,
 // and a bucket's width.
 vec2 travel;
@@ -119,7 +119,7 @@ void loadRecordPoints(int record) {
   nextYs = ys.yzwx;
 }
 
-// The record's tag (src/geometry/shadowLayout.ts, recordTag): its hull's first record and its
+// The record's tag (src/shadow/shadowLayout.ts, recordTag): its hull's first record and its
 // outline edges.
 int tagOf(int record) {
   return int(texelFetch(u_recordTags, ivec2(record % RECORDS_PER_ROW, record / RECORDS_PER_ROW), 0).x);
@@ -187,7 +187,7 @@ bool pixelInsideRecord() {
 }
 
 // The light's bin for this pixel: two lists, each ordered nearest first (the hulls that stood
-// still, then those that moved lately; see src/geometry/shadowLayout.ts), walked as one of binCount
+// still, then those that moved lately; see src/shadow/shadowLayout.ts), walked as one of binCount
 // entries: entry i < stillCount is the still list's i-th, from binFirst, and the others the moving
 // list's, from movingFirst.
 int binFirst;
@@ -413,7 +413,7 @@ float coveredBetween(float low, float high) {
   return covered;
 }
 
-// Pseudo-angle of a direction, in [0, 4), as `pseudoAngle` in src/geometry/shadowLayout.ts (0 for
+// Pseudo-angle of a direction, in [0, 4), as `pseudoAngle` in src/shadow/shadowLayout.ts (0 for
 // the zero vector: a pixel at the bins' origin lies inside the filed disk, where every bin lists
 // every hull that can shade it).
 float pseudoAngle(vec2 d) {

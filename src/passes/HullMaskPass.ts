@@ -2,7 +2,7 @@ import { mat4, type ReadonlyMat4 } from 'gl-matrix';
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget } from '../gl/RenderTarget';
 import { shaderSources } from './shaders';
-import { ShadowUnits } from '../shadow/ShadowTextures';
+import { SHADOW_TEXTURE_UNITS } from './lightLayout';
 
 /** Vertices per record: its convex quad as two triangles. */
 const RECORD_VERTICES = 6;
@@ -49,7 +49,7 @@ export class HullMaskPass {
     }
     this.emptyVertexArray = gl.createVertexArray()!;
     gl.useProgram(this.program.handle);
-    gl.uniform1i(this.program.uniforms.u_records, ShadowUnits.records);
+    gl.uniform1i(this.program.uniforms.u_records, SHADOW_TEXTURE_UNITS.records);
     gl.uniform4f(this.program.uniforms.u_color, 1, 1, 1, 1);
   }
 
@@ -71,7 +71,7 @@ export class HullMaskPass {
     const gl = this.gl;
     gl.disable(gl.BLEND);
     gl.disable(gl.SCISSOR_TEST);
-    gl.activeTexture(gl.TEXTURE0 + ShadowUnits.records);
+    gl.activeTexture(gl.TEXTURE0 + SHADOW_TEXTURE_UNITS.records);
     gl.bindTexture(gl.TEXTURE_2D, records);
     gl.useProgram(this.program.handle);
     gl.uniformMatrix4fv(this.program.uniforms.u_viewProjection, false, viewProjection);

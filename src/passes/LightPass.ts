@@ -4,14 +4,11 @@ import { createPrograms, deletePrograms, type Program, type ProgramSources } fro
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import type { LightShapes } from './LightShapes';
 import { SHADOW_TYPE_CODES, TILE_CLASSES } from '../shadow/shadowLayout';
-import { FALLOFF_CODES } from './lightLayout';
+import { FALLOFF_CODES, LIGHT_TEXTURE_UNITS, type LightSampler } from './lightLayout';
 import { DirectionalLight, Spotlight, TexturedLight, type LightKind } from '../scene/lights';
 import { lightStages, shaderSources, type LightStages } from './shaders';
-import { ShadowUnits } from '../shadow/ShadowTextures';
-import { SurfaceUnits } from './surfaceLayout';
 
-/** The texture unit of a textured light's cookie (the shadow textures take the others, see ShadowUnits). */
-export const COOKIE_UNIT = 2;
+const LIGHT_SAMPLERS = Object.keys(LIGHT_TEXTURE_UNITS) as LightSampler[];
 
 /** The textures a light pass with normals reads the surface from (see `PenumbraRenderer.drawInPlace`). */
 export interface Surface {
@@ -61,7 +58,6 @@ export class LightPass {
   private readonly coneDecay = new Float32Array(1);
   private readonly towardsLight = new Float32Array(4);
   private readonly darkColor = new Float32Array(3);
-  private readonly tiles = new Float32Array(4);
   private readonly surfaceFrame = new Float32Array(3);
   private readonly clearZero = new Float32Array(4);
 
@@ -94,14 +90,10 @@ export class LightPass {
     this.programList = Object.values(this.programs).flatMap((programs) => Object.values(programs).filter((program): program is Program => program !== null));
     for (const program of this.programList) {
       gl.useProgram(program.handle);
-      const uniforms = program.uniforms;
-      if (uniforms.u_records) gl.uniform1i(uniforms.u_records, ShadowUnits.records);
-      if (uniforms.u_recordTags) gl.uniform1i(uniforms.u_recordTags, ShadowUnits.recordTags);
-      if (uniforms.u_bins) gl.uniform1i(uniforms.u_bins, ShadowUnits.bins);
-      if (uniforms.u_entries) gl.uniform1i(uniforms.u_entries, ShadowUnits.entries);
-      if (uniforms.u_cookie) gl.uniform1i(uniforms.u_cookie, COOKIE_UNIT);
-      if (uniforms.u_normals) gl.uniform1i(uniforms.u_normals, SurfaceUnits.normals);
-      if (uniforms.u_material) gl.uniform1i(uniforms.u_material, SurfaceUnits.material);
+      for (const sampler of LIGHT_SAMPLERS) {
+        const location = program.uniforms[sampler];
+        if (location) gl.uniform1i(location, LIGHT_TEXTURE_UNITS[sampler]);
+      }
     }
   }
 
@@ -142,9 +134,9 @@ export class LightPass {
   /** Binds the surface's textures on their units and fills the surface frame uniform's array. */
   private bindSurface(surface: Surface): void {
     const gl = this.gl;
-    gl.activeTexture(gl.TEXTURE0 + SurfaceUnits.normals);
+    gl.activeTexture(gl.TEXTURE0 + LIGHT_TEXTURE_UNITS.u_normals);
     gl.bindTexture(gl.TEXTURE_2D, surface.normals);
-    gl.activeTexture(gl.TEXTURE0 + SurfaceUnits.material);
+    gl.activeTexture(gl.TEXTURE0 + LIGHT_TEXTURE_UNITS.u_material);
     gl.bindTexture(gl.TEXTURE_2D, surface.material);
     gl.activeTexture(gl.TEXTURE0);
     this.surfaceFrame[0] = 1 / this.lightmap.width;
@@ -159,7 +151,7 @@ export class LightPass {
     const programs = this.programs[light.kind];
     this.writeLightUniforms(draw);
     if (light instanceof TexturedLight) {
-      gl.activeTexture(gl.TEXTURE0 + COOKIE_UNIT);
+      gl.activeTexture(gl.TEXTURE0 + LIGHT_TEXTURE_UNITS.u_cookie);
       gl.bindTexture(gl.TEXTURE_2D, light.texture);
     }
     if (draw.hullCount === 0) {
@@ -170,7 +162,6 @@ export class LightPass {
       this.setUniforms(light.shadowType === 'occluded' ? programs.shadowed : programs.lean, draw, this.lightColor);
       this.shapes.drawQuad();
     } else {
-      draw.filing.writeTiles(this.tiles);
       const counts = draw.tileCounts, kept = this.shadowKept, dark = this.darkColor;
       if (counts[TILE_CLASSES.lit] > 0) this.drawTiles(programs.plainTiles, draw, TILE_CLASSES.lit, this.lightColor);
       if (counts[TILE_CLASSES.dark] > 0 && (kept[0] > 0 || kept[1] > 0 || kept[2] > 0)) {
@@ -186,7 +177,7 @@ export class LightPass {
   /** Draws the light's tiles of class `tileClass` with `program` in `color`. */
   private drawTiles(program: Program, draw: LightDraw, tileClass: number, color: Float32Array): void {
     this.setUniforms(program, draw, color);
-    this.gl.uniform4fv(program.uniforms.u_tiles, this.tiles);
+    this.gl.uniform4fv(program.uniforms.u_tiles, draw.tileFrame);
     this.shapes.drawTileRectangles(draw.tileLists[2 * tileClass], draw.tileLists[2 * tileClass + 1]);
   }
 
@@ -228,7 +219,7 @@ export class LightPass {
     this.shadow[1] = light.position[1];
     this.shadow[2] = light.radius;
     this.shadow[3] = draw.binRow;
-    draw.filing.writeBinning(this.binning);
+    this.binning.set(draw.binning);
     light.writeShadowKept(this.shadowKept);
     this.falloff[0] = FALLOFF_CODES[light.falloff];
     this.falloff[1] = light.inverseSquareCore();

@@ -19,9 +19,6 @@ export const SURFACE_DEFINES: Readonly<Record<string, string>> = {
   PENUMBRA_SHININESS_LOG2_MAX: SHININESS_LOG2_MAX.toFixed(1),
 };
 
-/** The texture units the light passes read the normals and the material on (after the shadow textures' and the cookie's). */
-export const SurfaceUnits = { normals: 5, material: 6 } as const;
-
 /**
  * The material channel that holds a Blinn-Phong exponent: `log2(shininess) / 11`, for hosts that
  * write the material from JavaScript (a uniform or a vertex attribute); the GLSL helper

@@ -327,7 +327,7 @@ export class ShadowBins {
 export interface BinSpan {
   /** The light's row in {@link ShadowBins.bins}. */
   readonly row: number;
-  /** Which list of each bin the span holds, as its first float in the bin: `STATIC_LIST` or `MOVING_LIST` (shadowLayout). */
+  /** Which list of each bin the span holds, as its first float in the bin: `STILL_LIST` or `MOVING_LIST` (shadowLayout). */
   readonly list: number;
   /** The first entry of its span and how many entries the span holds (0: no span yet). */
   firstEntry: number;

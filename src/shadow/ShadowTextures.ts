@@ -2,8 +2,13 @@ import type { ShadowBins } from './ShadowBins';
 import type { ShadowGeometry } from './ShadowGeometry';
 import { BIN_COUNT, RECORDS_PER_ROW, TEXTURE_WIDTH } from './shadowLayout';
 
-/** Texture units of the shadow textures; the light pass binds a light's cookie on unit 2. */
-export const ShadowUnits = { records: 0, bins: 1, entries: 3, recordTags: 4 } as const;
+/** The texture units the shadow textures are bound on (the light pass's table gives them). */
+export interface ShadowTextureUnits {
+  readonly records: number;
+  readonly bins: number;
+  readonly entries: number;
+  readonly recordTags: number;
+}
 
 /**
  * The GPU copy of the shadow data (see shadowLayout): the records of every hull and their tags, and
@@ -16,7 +21,7 @@ export class ShadowTextures {
   private readonly binData: DataTexture;
   private readonly entryData: DataTexture;
 
-  constructor(private readonly gl: WebGL2RenderingContext) {
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly units: ShadowTextureUnits) {
     this.recordData = new DataTexture(gl, TEXTURE_WIDTH, 4);
     this.recordTagData = new DataTexture(gl, RECORDS_PER_ROW, 1);
     this.binData = new DataTexture(gl, BIN_COUNT, 4);
@@ -27,16 +32,16 @@ export class ShadowTextures {
     return this.recordData.texture;
   }
 
-  /** Uploads what changed; leaves the textures bound on their units (see {@link ShadowUnits}) and unit 0 active. */
+  /** Uploads what changed; leaves the textures bound on their units (`units`) and unit 0 active. */
   upload(geometry: ShadowGeometry, bins: ShadowBins): void {
     const gl = this.gl;
-    gl.activeTexture(gl.TEXTURE0 + ShadowUnits.recordTags);
+    gl.activeTexture(gl.TEXTURE0 + this.units.recordTags);
     this.recordTagData.upload(geometry.dirtyRows, geometry.recordTags);
-    gl.activeTexture(gl.TEXTURE0 + ShadowUnits.records);
+    gl.activeTexture(gl.TEXTURE0 + this.units.records);
     this.recordData.upload(geometry.dirtyRows, geometry.records);
-    gl.activeTexture(gl.TEXTURE0 + ShadowUnits.bins);
+    gl.activeTexture(gl.TEXTURE0 + this.units.bins);
     this.binData.upload(bins.dirtyBinRows, bins.bins);
-    gl.activeTexture(gl.TEXTURE0 + ShadowUnits.entries);
+    gl.activeTexture(gl.TEXTURE0 + this.units.entries);
     this.entryData.upload(bins.dirtyEntryRows, bins.entries);
     gl.activeTexture(gl.TEXTURE0);
   }

@@ -19,7 +19,7 @@ import type { ShadowType } from '../scene/lights';
  * - **Bins** (per frame): one row per shadowed light, {@link BIN_COUNT} texels; bin `k` holds the
  *   directions from the light's centre whose pseudo-angle (see `pseudoAngle`) lies in
  *   `[4k / N, 4(k + 1) / N)`: two lists of entries, each ordered nearest first, as
- *   `(first entry, entry count)` at {@link STATIC_LIST} and at {@link MOVING_LIST}: the hulls that
+ *   `(first entry, entry count)` at {@link STILL_LIST} and at {@link MOVING_LIST}: the hulls that
  *   stood still (kept with the light's filing) and those that moved lately (filed every frame). The
  *   width of the distance buckets is the light's uniform `u_binning.w`.
  *
@@ -76,7 +76,7 @@ export const BIN_COUNT = 32;
 /** Floats per bin. */
 export const BIN_FLOATS = 4;
 /** Where a bin's list of hulls that stood still starts, in floats: the texel's x and y. */
-export const STATIC_LIST = 0;
+export const STILL_LIST = 0;
 /** Where a bin's list of hulls that moved lately starts, in floats: the texel's z and w. */
 export const MOVING_LIST = 2;
 

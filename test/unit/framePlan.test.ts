@@ -2,7 +2,7 @@ import { mat4 } from 'gl-matrix';
 import { describe, expect, it, vi } from 'vitest';
 import { FramePlan } from '../../src/shadow/FramePlan';
 import { signedArea2 } from '../../src/geometry/polygon';
-import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, MOVING_LIST, pseudoAngle, RECORD_FLOATS, STATIC_LIST } from '../../src/shadow/shadowLayout';
+import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, MOVING_LIST, pseudoAngle, RECORD_FLOATS, STILL_LIST } from '../../src/shadow/shadowLayout';
 import { ShadowGeometry } from '../../src/shadow/ShadowGeometry';
 import { Hull, PointLight, TexturedLight, type Light } from '../../src/index';
 
@@ -17,31 +17,17 @@ function plan(lights: Light[], hulls: Hull[]): FramePlan {
   return framePlan;
 }
 
-/** The scissor `[x, y, w, h]` covers `[x0, y0, x1, y1]` and exceeds it by at most one pixel per side. */
-function expectScissorAround(scissor: Int32Array, [x0, y0, x1, y1]: number[]): void {
-  const [x, y, w, h] = scissor;
-  expect(x).toBeLessThanOrEqual(x0);
-  expect(x).toBeGreaterThanOrEqual(x0 - 1);
-  expect(y).toBeLessThanOrEqual(y0);
-  expect(y).toBeGreaterThanOrEqual(y0 - 1);
-  expect(x + w).toBeGreaterThanOrEqual(x1);
-  expect(x + w).toBeLessThanOrEqual(x1 + 1);
-  expect(y + h).toBeGreaterThanOrEqual(y1);
-  expect(y + h).toBeLessThanOrEqual(y1 + 1);
-}
-
 const drawnLights = (framePlan: FramePlan) => framePlan.draws.slice(0, framePlan.drawCount).map((d) => d.light);
 
 describe('FramePlan culling', () => {
-  it('draws an on-screen light with a scissor around its range, clamped to the target', () => {
+  it('draws a light whose quad reaches into the target by any part of a pixel, and only such a light', () => {
     const light = new PointLight({ position: [50, 50], range: 20 });
-    const framePlan = plan([light], []);
-    expect(drawnLights(framePlan)).toEqual([light]);
-    // World y down → GL window y up: rows 30..70 from the top are 30..70 from the bottom of 100.
-    // Rounding is outward, so float noise in the projection may widen the box by one pixel.
-    expectScissorAround(framePlan.draws[0].scissor, [30, 30, 70, 70]);
-    const edge = plan([new PointLight({ position: [5, 5], range: 20 })], []);
-    expectScissorAround(edge.draws[0].scissor, [0, 75, 25, 100]);
+    expect(drawnLights(plan([light], []))).toEqual([light]);
+    const corner = new PointLight({ position: [5, 5], range: 20 });
+    expect(drawnLights(plan([corner], []))).toEqual([corner]);
+    // Quads from x = -40.5 to -0.5 and from -39.5 to 0.5: only the second covers part of pixel column 0.
+    expect(plan([new PointLight({ position: [-20.5, 50], range: 20 })], []).drawCount).toBe(0);
+    expect(plan([new PointLight({ position: [-19.5, 50], range: 20 })], []).drawCount).toBe(1);
   });
 
   it('skips lights that are off screen, disabled, of zero intensity or range', () => {
@@ -88,7 +74,7 @@ describe('FramePlan culling', () => {
 function entriesOfBin(framePlan: FramePlan, draw: FramePlan['draws'][number], bin: number): number[] {
   const bins = framePlan.bins.bins, b = (draw.binRow * BIN_COUNT + bin) * BIN_FLOATS;
   const out: number[] = [];
-  for (const list of [STATIC_LIST, MOVING_LIST]) for (let e = bins[b + list]; e < bins[b + list] + bins[b + list + 1]; e++) out.push(e);
+  for (const list of [STILL_LIST, MOVING_LIST]) for (let e = bins[b + list]; e < bins[b + list] + bins[b + list + 1]; e++) out.push(e);
   return out;
 }
 
@@ -175,7 +161,7 @@ describe('FramePlan shadow bins', () => {
     expect(listed.map(([record]) => record)).toEqual([2, 1, 0]);
     expect(listed[1].slice(2, 5)).toEqual([95, 50, Math.fround(Math.hypot(5, 5))]);
     // Distance buckets of 160 / 32 = 5 units.
-    expect(framePlan.draws[0].filing.bucketWidth).toBe(5);
+    expect(framePlan.draws[0].binning[3]).toBe(5);
     for (let bin = 0; bin < BIN_COUNT; bin++) expect(binEntries(framePlan, bin)[0].slice(0, 2)).toEqual([2, 1]);
   });
 
@@ -217,7 +203,7 @@ describe('FramePlan filings kept from frame to frame', () => {
     const out = new Map<Light, string>();
     for (let d = 0; d < framePlan.drawCount; d++) {
       const draw = framePlan.draws[d];
-      const perBin: string[] = [`hulls ${draw.hullCount}, buckets ${draw.filing.bucketWidth}`];
+      const perBin: string[] = [`hulls ${draw.hullCount}, buckets ${draw.binning[3]}`];
       for (let bin = 0; draw.hullCount > 0 && bin < BIN_COUNT; bin++) {
         const listed = entriesOfBin(framePlan, draw, bin).map((e) => entries.subarray(e * ENTRY_FLOATS, (e + 1) * ENTRY_FLOATS).join(' '));
         perBin.push(listed.sort().join(', '));
@@ -267,16 +253,16 @@ describe('FramePlan filings kept from frame to frame', () => {
    * (as the chunk shadow-visibility walks them).
    */
   function hullsVisited(framePlan: FramePlan, geometry: ShadowGeometry, draw: FramePlan['draws'][number], x: number, y: number): Set<number> {
-    const { bins, entries } = framePlan.bins, filing = draw.filing, visited = new Set<number>();
-    const dx = x - filing.originX, dy = y - filing.originY, distance = Math.hypot(dx, dy);
+    const { bins, entries } = framePlan.bins, [originX, originY, filedRadius, bucketWidth] = draw.binning, visited = new Set<number>();
+    const dx = x - originX, dy = y - originY, distance = Math.hypot(dx, dy);
     // The shader's pseudo-angle of the zero vector is 0.
     const bin = distance === 0 ? 0 : Math.min(Math.floor(pseudoAngle(dx, dy) * (BIN_COUNT / 4)), BIN_COUNT - 1);
-    const b = (draw.binRow * BIN_COUNT + bin) * BIN_FLOATS, bucketWidth = filing.bucketWidth;
-    for (const list of [STATIC_LIST, MOVING_LIST]) {
+    const b = (draw.binRow * BIN_COUNT + bin) * BIN_FLOATS;
+    for (const list of [STILL_LIST, MOVING_LIST]) {
       for (let e = bins[b + list]; e < bins[b + list] + bins[b + list + 1]; e++) {
         const [code, hx, hy, rho] = entries.subarray(e * ENTRY_FLOATS, (e + 1) * ENTRY_FLOATS);
-        const nearest = Math.hypot(hx - filing.originX, hy - filing.originY) - rho;
-        if (nearest > filing.filedRadius + bucketWidth && distance < (Math.floor(nearest / bucketWidth) - 1) * bucketWidth) break;
+        const nearest = Math.hypot(hx - originX, hy - originY) - rho;
+        if (nearest > filedRadius + bucketWidth && distance < (Math.floor(nearest / bucketWidth) - 1) * bucketWidth) break;
         const first = Math.floor(Math.floor(code / 2) / ENTRY_MAX_RECORDS);
         visited.add(geometry.firstRecords.findIndex((record, index) => record === first && geometry.recordCounts[index] > 0));
       }
@@ -357,10 +343,10 @@ describe('FramePlan filings kept from frame to frame', () => {
     // A still light is filed with no margin again after its next filing.
     light.radius = 16;
     framePlan.build([light], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
-    expect(framePlan.draws[0].filing.filedRadius).toBeGreaterThan(16);
+    expect(framePlan.draws[0].binning[2]).toBeGreaterThan(16);
     light.radius = 20;
     framePlan.build([light], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
-    expect(framePlan.draws[0].filing.filedRadius).toBe(20);
+    expect(framePlan.draws[0].binning[2]).toBe(20);
   });
 
   it('packs the kept filings’ entries when released spans pile up, and they still equal a new plan’s', () => {
