@@ -3,7 +3,7 @@ import { FramePlan } from './shadow/FramePlan';
 import { ShadowGeometry } from './shadow/ShadowGeometry';
 import { TILE_CLASSES } from './shadow/shadowLayout';
 import { isWebGL2, supportsFloatTargets } from './gl/capabilities';
-import { HostState } from './gl/HostState';
+import { HostDrawBuffers, HostState } from './gl/HostState';
 import { RenderTarget, type TargetFormat } from './gl/RenderTarget';
 import { LightShapes } from './passes/LightShapes';
 import { BlurPass } from './passes/BlurPass';
@@ -17,7 +17,7 @@ import { ShadowTextures } from './shadow/ShadowTextures';
 import { LightmapAttachments, SceneAttachments } from './passes/surfaceLayout';
 import { Hull } from './scene/Hull';
 import { IlluminationQuery, type Illumination, type IlluminationOptions } from './scene/illumination';
-import { DirectionalLight, Light, TexturedLight, type LightOptions } from './scene/lights';
+import { describeTexture, DirectionalLight, Light, TexturedLight, type LightOptions } from './scene/lights';
 import { ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, describeValue, frozenColor, type ColorLike } from './scene/validate';
 
 /** Options of a {@link PenumbraRenderer}; every field has the default shown. */
@@ -28,9 +28,9 @@ export interface PenumbraRendererOptions {
   debug?: boolean;
   /** World → clip transform. Default: pixel space of the drawing buffer, origin top-left, y down. */
   viewProjection?: ReadonlyMat4 | null;
-  /** Width of the internal targets in pixels. Default: the context's drawing buffer width. */
+  /** Width of the internal targets in pixels. Default: the context's drawing buffer width (on a lost context, the restored one's). */
   width?: number;
-  /** Height of the internal targets in pixels. Default: the context's drawing buffer height. */
+  /** Height of the internal targets in pixels. Default: the context's drawing buffer height (on a lost context, the restored one's). */
   height?: number;
   /**
    * Resolution of the lightmap relative to `width × height`, in (0, 1]. Below 1 (e.g. 0.5) the
@@ -175,11 +175,14 @@ function textureUnits(normals: boolean, edgeAware: boolean): number {
  * polygon offset, sample coverage, rasterizer discard, dither), blend equations and factors, colour,
  * depth and stencil write masks, depth function, cull and front face, program, vertex array, array
  * and pixel-unpack buffers, renderbuffer, the unpack pixel-store parameters, the active texture
- * unit, and the texture and sampler bound on every unit it uses. After `beginDraw()` only the
- * framebuffer and viewport differ (they point at the internal scene target).
+ * unit, the texture and sampler bound on every unit it uses, and the draw and read buffers of the
+ * framebuffer it composites into. After `beginDraw()` only the framebuffer and viewport differ (they
+ * point at the internal scene target), and an exception cannot leave them so (see
+ * {@link PenumbraRenderer.beginDraw}).
  *
  * Context loss: while `gl.isContextLost()` is true every call is a no-op, also in the window between
- * the loss and the `webglcontextlost` event. When the context is restored the renderer rebuilds its
+ * the loss and the `webglcontextlost` event. A renderer made on a lost context waits likewise; a
+ * `width` or `height` not given is the restored drawing buffer's. When the context is restored the renderer rebuilds its
  * GL objects, keeps its lights and hulls, and calls {@link PenumbraRenderer.onContextRestored}.
  */
 export class PenumbraRenderer {
@@ -193,7 +196,7 @@ export class PenumbraRenderer {
   /**
    * Called after the renderer rebuilt itself on a restored context: the textures of the old
    * context are gone, so give each {@link TexturedLight} a new cookie texture here. A textured light
-   * left with an old texture is named in a console warning.
+   * left with an old texture is named in a console warning, and the next frame throws naming it.
    */
   onContextRestored: ((renderer: PenumbraRenderer) => void) | null;
   /** Figures about the last frame. */
@@ -215,6 +218,7 @@ export class PenumbraRenderer {
   /** Chosen with each build of the GL objects (see {@link PenumbraRenderer.chooseLightmapFormat}). */
   private lightmapFormat: TargetFormat = 'rgba16f';
   private resources: Resources | null = null;
+  /** The targets' size; a side is 0 while a renderer made on a lost context without it waits for the restore. */
   private width: number;
   private height: number;
   /** The largest target side the context allows (MAX_TEXTURE_SIZE and MAX_RENDERBUFFER_SIZE); read again on restore. */
@@ -223,7 +227,16 @@ export class PenumbraRenderer {
   private readonly _normals: boolean;
   /** The surface the light and composite passes read this frame (with normals), refilled per frame rather than made. */
   private readonly surface: Surface = { normals: null!, material: null!, flipY: false };
+  /** Whether a frame is open: between `beginDraw()` and its `draw()`. */
   private drawing = false;
+  private warnedAbandonedFrame = false;
+  /** The draw buffers of the framebuffer the open frame composites into. */
+  private readonly hostDrawBuffers: HostDrawBuffers;
+  /**
+   * Each textured light's cookie texture once found to be a texture of this context (see
+   * {@link PenumbraRenderer.checkCookies}): checked again only when it changes. Anew on a restored context.
+   */
+  private checkedCookies = new WeakMap<TexturedLight, WebGLTexture>();
   private contextLost = false;
   private disposed = false;
   private readonly compositeViewport = new Int32Array(4);
@@ -247,16 +260,19 @@ export class PenumbraRenderer {
     if (options.dithering !== undefined) this.dithering = options.dithering;
     if (options.lightmapBlur !== undefined) this.lightmapBlur = options.lightmapBlur;
     this.maxSize = maxTargetSize(gl);
-    this.width = checkSize('PenumbraRenderer.width', options.width ?? gl.drawingBufferWidth, this.maxSize);
-    this.height = checkSize('PenumbraRenderer.height', options.height ?? gl.drawingBufferHeight, this.maxSize);
+    // A lost context's drawing buffer is 0 × 0: a side left to it waits for the restore (0 until then).
+    const lost = gl.isContextLost();
+    this.width = options.width === undefined && lost ? 0 : checkSize('PenumbraRenderer.width', options.width ?? gl.drawingBufferWidth, this.maxSize);
+    this.height = options.height === undefined && lost ? 0 : checkSize('PenumbraRenderer.height', options.height ?? gl.drawingBufferHeight, this.maxSize);
     this.lightmapScale = checkScale(options.lightmapScale ?? 1);
     if (options.classificationBudget !== undefined) this.plan.classificationBudget = checkBudget(options.classificationBudget);
     this._normals = options.normals === undefined ? false : assertBoolean('PenumbraRenderer.normals', options.normals);
     if (options.viewProjection) this.viewProjection = options.viewProjection;
     else this.updateDefaultViewProjection();
     this.hostState = new HostState(gl, textureUnits(this._normals, this.edgeAware));
+    this.hostDrawBuffers = new HostDrawBuffers(gl);
     // Made in the loss window, it waits for the restored context to build its GL objects.
-    if (gl.isContextLost()) this.contextLost = true;
+    if (lost) this.contextLost = true;
     else this.createResources();
     const canvas = (gl as { canvas?: unknown }).canvas as EventTarget | undefined;
     this.canvas = canvas && typeof canvas.addEventListener === 'function' ? canvas : null;
@@ -395,9 +411,19 @@ export class PenumbraRenderer {
     return this.lightmapFormat === 'rgba16f';
   }
 
-  /** Adds a light (no-op if already added). */
+  /**
+   * Adds a light (no-op if already added).
+   * @throws TypeError for a {@link TexturedLight} whose texture is not a texture of this renderer's
+   *   context (another context's, deleted, or never bound), checked with `gl.isTexture` (unless the
+   *   context is lost). A texture assigned later is checked likewise by the next frame, before it
+   *   binds anything (`beginDraw`, `draw`, `drawInPlace`, `renderLightmap` throw naming the light);
+   *   a texture deleted while a light holds it is not noticed.
+   * @throws Error after {@link PenumbraRenderer.dispose}: a disposed renderer draws nothing.
+   */
   addLight<T extends Light>(light: T): T {
     if (!(light instanceof Light)) throw new TypeError(`penumbra: addLight expects a Light, got ${String(light)}`);
+    this.refuseIfDisposed('addLight');
+    if (light instanceof TexturedLight && !this.isContextLost()) this.checkCookie(light, 'PenumbraRenderer.addLight: the TexturedLight\'s texture');
     if (!this._lights.includes(light)) this._lights.push(light);
     return light;
   }
@@ -405,12 +431,41 @@ export class PenumbraRenderer {
   removeLight(light: Light): boolean {
     return removeFrom(this._lights, light);
   }
-  /** Adds a hull (no-op if already added). */
+  /**
+   * Adds a hull (no-op if already added).
+   * @throws Error after {@link PenumbraRenderer.dispose}: a disposed renderer draws nothing.
+   */
   addHull(hull: Hull): Hull {
     if (!(hull instanceof Hull)) throw new TypeError(`penumbra: addHull expects a Hull, got ${String(hull)}`);
+    this.refuseIfDisposed('addHull');
     if (!this._hulls.includes(hull)) this._hulls.push(hull);
     return hull;
   }
+  private refuseIfDisposed(method: string): void {
+    if (this.disposed) throw new Error(`penumbra: PenumbraRenderer.${method}: the renderer was disposed; make a new one`);
+  }
+
+  /**
+   * Throws naming the first textured light whose cookie is not a texture of this context. Per frame:
+   * `gl.isTexture` (a round trip to the GPU process in browsers) runs only for a texture not checked before.
+   */
+  private checkCookies(): void {
+    const lights = this._lights;
+    for (let i = 0; i < lights.length; i++) {
+      const light = lights[i];
+      if (light instanceof TexturedLight && this.checkedCookies.get(light) !== light.texture) this.checkCookie(light, `PenumbraRenderer.lights[${i}] (TexturedLight).texture`);
+    }
+  }
+
+  private checkCookie(light: TexturedLight, name: string): void {
+    const texture = light.texture;
+    if (!isTextureOf(this.gl, texture)) {
+      throw new TypeError(`penumbra: ${name} must be a texture of the renderer's WebGL context (not another context's, a deleted one, ` +
+        `one never bound, or one from before a context loss), got ${describeTexture(texture)}`);
+    }
+    this.checkedCookies.set(light, texture);
+  }
+
   /** Removes a hull; its shadow is gone from the next frame. Returns whether it was there. */
   removeHull(hull: Hull): boolean {
     return removeFrom(this._hulls, hull);
@@ -531,10 +586,53 @@ export class PenumbraRenderer {
    * scene after this call. With `normals` the target has three colour attachments, all cleared to
    * 0, with draw buffers for all three: the host's fragment shaders write colour, normal and
    * material at locations 0, 1, 2 (docs/normal-maps.md).
+   *
+   * A frame cannot be left open by an exception. What the renderer throws inside `draw()` or
+   * `drawInPlace()` (a bad argument included) ends the frame first: the framebuffers and viewport
+   * of its `beginDraw()` are bound again. A frame the host's own code abandoned (it threw between
+   * `beginDraw()` and `draw()`) is closed by the next `beginDraw()` or `drawInPlace()`, with a
+   * console warning the first time: when the scene target is still bound, the framebuffers and
+   * viewport of the abandoned frame's `beginDraw()` are bound again first; a framebuffer the host
+   * bound since is its choice and stays. The new frame then starts from what is bound.
+   *
+   * @throws TypeError before anything is bound when a {@link TexturedLight}'s texture is not a
+   *   texture of this context (see {@link PenumbraRenderer.addLight}).
    */
   beginDraw(): void {
-    if (this.isUnavailable()) return;
-    if (this.drawing) throw new Error('penumbra: beginDraw() called twice: call draw() to end the frame before the next beginDraw()');
+    this.openFrame(false);
+  }
+
+  /**
+   * Ends a frame: builds the lightmap and writes scene × lightmap into the framebuffer that was
+   * bound at `beginDraw()`, with the viewport of that moment. Then rebinds that framebuffer and
+   * viewport and restores the rest of the state, also when it throws.
+   *
+   * A framebuffer with several draw buffers (a G-buffer, a chain of MRT passes) gets the lit
+   * colour in the attachment of its draw buffer 0 only; the others keep what they hold, and its
+   * draw buffers are as the host set them afterwards.
+   *
+   * @param layers - content layers (a bit mask): the lightmap holds only the lights whose
+   *   `litLayers` share a bit with it (see {@link LightOptions.litLayers}). Default every layer.
+   */
+  draw(layers = ALL_LAYERS): void {
+    try {
+      assertLayerMask('PenumbraRenderer.draw: layers', layers);
+    } catch (error) {
+      if (this.drawing && !this.isUnavailable()) this.closeFrame();
+      throw error;
+    }
+    this.endFrame(layers | 0);
+  }
+
+  /**
+   * Opens a frame (see {@link PenumbraRenderer.beginDraw}); for `drawInPlace` (`inPlace`), after
+   * checking that the bound framebuffer's viewport can be copied. Every check runs before the
+   * scene target is bound. Returns whether a frame was opened (none while unavailable).
+   */
+  private openFrame(inPlace: boolean): boolean {
+    if (this.isUnavailable()) return false;
+    if (this.drawing) this.abandonFrame();
+    this.checkCookies();
     const gl = this.gl;
     const resources = this.requireResources();
     this.enterHostState();
@@ -543,6 +641,8 @@ export class PenumbraRenderer {
       this.compositeDrawFramebuffer = host.savedDrawFramebuffer;
       this.compositeReadFramebuffer = host.savedReadFramebuffer;
       this.compositeViewport.set(host.savedViewport);
+      if (inPlace) this.checkInPlaceSource();
+      this.hostDrawBuffers.record(this.compositeDrawFramebuffer);
       resources.scene.bind();
       gl.depthMask(true);
       gl.stencilMask(0xff);
@@ -558,42 +658,74 @@ export class PenumbraRenderer {
     }
     resources.scene.bind();
     this.drawing = true;
+    return true;
   }
 
   /**
-   * Ends a frame: builds the lightmap and writes scene × lightmap into the framebuffer that was
-   * bound at `beginDraw()`, with the viewport of that moment. Then rebinds that framebuffer and
-   * viewport and restores the rest of the state.
-   *
-   * @param layers - content layers (a bit mask): the lightmap holds only the lights whose
-   *   `litLayers` share a bit with it (see {@link LightOptions.litLayers}). Default every layer.
+   * Closes a frame left open by the host (see {@link PenumbraRenderer.beginDraw}): its framebuffers
+   * and viewport are bound again while the scene target still is.
    */
-  draw(layers = ALL_LAYERS): void {
-    assertLayerMask('PenumbraRenderer.draw: layers', layers);
-    this.endFrame(layers | 0);
+  private abandonFrame(): void {
+    if (!this.warnedAbandonedFrame) {
+      this.warnedAbandonedFrame = true;
+      console.warn('penumbra: a frame was started while the previous one was still open (an exception between beginDraw() and draw()?): ' +
+        'the open frame is abandoned and the framebuffer and viewport of its beginDraw() are bound again. Warned once.');
+    }
+    const scene = this.requireResources().scene.framebuffer;
+    if (this.gl.getParameter(this.gl.DRAW_FRAMEBUFFER_BINDING) === scene) this.closeFrame();
+    else this.drawing = false;
+  }
+
+  /** Ends the open frame's redirection: binds the framebuffers and viewport of its `beginDraw()` again. */
+  private closeFrame(): void {
+    this.drawing = false;
+    this.bindCompositeTarget();
+    this.gl.bindFramebuffer(this.gl.READ_FRAMEBUFFER, this.compositeReadFramebuffer);
+  }
+
+  /**
+   * Throws, before anything is bound, unless `blitFramebuffer` can copy the viewport of the bound
+   * framebuffer into the scene target: from a multisampled framebuffer (a browser canvas's, by
+   * default) it copies only between identical rectangles, so the viewport must be the renderer's
+   * size at the origin. Reads the viewport saved by the host state, and the samples of the bound
+   * draw framebuffer.
+   */
+  private checkInPlaceSource(): void {
+    const gl = this.gl, v = this.compositeViewport;
+    const samples = gl.getParameter(gl.SAMPLES) as number | null;
+    if (!samples || (v[0] === 0 && v[1] === 0 && v[2] === this.width && v[3] === this.height)) return;
+    throw new Error(`penumbra: PenumbraRenderer.drawInPlace: the bound framebuffer is multisampled (${samples} samples), which can be copied ` +
+      `only to the same rectangle: its viewport [${v.join(', ')}] must be [0, 0, ${this.width}, ${this.height}], the renderer's size at the origin ` +
+      '(resize the renderer to the viewport and draw at the origin, or draw into a framebuffer without multisampling)');
   }
 
   /** What {@link PenumbraRenderer.draw} does, with the layers as an int32 (see `renderLightmapInto`). */
   private endFrame(layers: number): void {
     if (this.isUnavailable()) return;
     if (!this.drawing) throw new Error('penumbra: draw() called without beginDraw()');
-    this.drawing = false;
-    const gl = this.gl;
-    const resources = this.requireResources();
-    this.enterHostState();
     try {
-      this.renderLightmapInto(resources, layers);
-      resources.hullMask?.render(resources.shadows.records, this.geometry.recordCount, this.geometry.recordsVersion, this._viewProjection);
-      this.bindCompositeTarget();
-      resources.composite.render(resources.scene.texture, resources.light.lightmap.textures, this, this.surface, resources.hullMask);
-      if (this.debug) {
-        resources.debug.render(this.plan.draws, this.plan.drawCount, resources.shadows.records, this.geometry.recordCount, this._viewProjection);
+      this.checkCookies();
+      const resources = this.requireResources();
+      this.enterHostState();
+      try {
+        this.renderLightmapInto(resources, layers);
+        resources.hullMask?.render(resources.shadows.records, this.geometry.recordCount, this.geometry.recordsVersion, this._viewProjection);
+        this.bindCompositeTarget();
+        this.hostDrawBuffers.drawFirstOnly();
+        try {
+          resources.composite.render(resources.scene.texture, resources.light.lightmap.textures, this, this.surface, resources.hullMask);
+          if (this.debug) {
+            resources.debug.render(this.plan.draws, this.plan.drawCount, resources.shadows.records, this.geometry.recordCount, this._viewProjection);
+          }
+        } finally {
+          this.hostDrawBuffers.restoreDraw();
+        }
+      } finally {
+        this.hostState.restore();
       }
     } finally {
-      this.hostState.restore();
+      this.closeFrame();
     }
-    this.bindCompositeTarget();
-    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.compositeReadFramebuffer);
   }
 
   /**
@@ -601,38 +733,49 @@ export class PenumbraRenderer {
    * the current viewport into the scene texture, then does what {@link PenumbraRenderer.draw}
    * does (lightmap, scene × lightmap written back to that framebuffer and viewport). For engines
    * such as PixiJS and Phaser that draw into their own targets, so that `beginDraw()` cannot
-   * redirect their drawing. The copy is a `blitFramebuffer`: a multisampled framebuffer must have
-   * the same size as the renderer and an RGBA8 colour buffer. The context state is left as it was.
+   * redirect their drawing. The copy is a `blitFramebuffer`, from the attachment of the
+   * framebuffer's draw buffer 0 (see {@link PenumbraRenderer.draw}); a multisampled framebuffer (a
+   * browser canvas's by default) must have an RGBA8 colour buffer and can be copied only whole: its
+   * viewport must be the renderer's size at the origin. The context state is left as it was, also
+   * when it throws.
    *
    * @param layers - content layers: only the lights whose `litLayers` share a bit with it (see
    *   {@link PenumbraRenderer.draw}). Default every layer.
    * @param surfaces - with `normals`, the host's normal and material textures for what it drew
    *   (see {@link SurfaceTextures}). Default: none (lit as without normals).
+   * @throws Error, before anything is bound, when the bound framebuffer is multisampled and its
+   *   viewport is not the renderer's size at the origin.
    */
   drawInPlace(layers = ALL_LAYERS, surfaces?: SurfaceTextures): void {
     assertLayerMask('PenumbraRenderer.drawInPlace: layers', layers);
     this.checkSurfaces('drawInPlace', surfaces);
-    if (this.isUnavailable()) return;
-    if (this.drawing) throw new Error('penumbra: drawInPlace() called between beginDraw() and draw(): call draw() to end that frame first');
-    this.beginDraw();
-    if (!this.drawing) return;
-    const gl = this.gl;
-    const resources = this.requireResources();
-    const v = this.compositeViewport;
+    if (!this.openFrame(true)) return;
+    try {
+      this.copyInPlaceSource(this.requireResources());
+      this.externalSurfaces = surfaces ?? null;
+      this.endFrame(layers | 0);
+    } finally {
+      this.externalSurfaces = null;
+      if (this.drawing) this.closeFrame();
+    }
+  }
+
+  /** Copies the colour of the host's framebuffer inside its viewport into the scene target (see `drawInPlace`). */
+  private copyInPlaceSource(resources: Resources): void {
+    const gl = this.gl, v = this.compositeViewport;
     this.enterHostState();
     try {
       // The colour only: a blit writes every draw buffer.
       resources.scene.bindFirst();
       gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.compositeDrawFramebuffer);
-      gl.blitFramebuffer(v[0], v[1], v[0] + v[2], v[1] + v[3], 0, 0, this.width, this.height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+      this.hostDrawBuffers.readFirst();
+      try {
+        gl.blitFramebuffer(v[0], v[1], v[0] + v[2], v[1] + v[3], 0, 0, this.width, this.height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+      } finally {
+        this.hostDrawBuffers.restoreRead();
+      }
     } finally {
       this.hostState.restore();
-    }
-    this.externalSurfaces = surfaces ?? null;
-    try {
-      this.endFrame(layers | 0);
-    } finally {
-      this.externalSurfaces = null;
     }
   }
 
@@ -648,6 +791,7 @@ export class PenumbraRenderer {
     assertLayerMask('PenumbraRenderer.renderLightmap: layers', layers);
     this.checkSurfaces('renderLightmap', surfaces);
     if (this.isUnavailable()) return;
+    this.checkCookies();
     const resources = this.requireResources();
     this.externalSurfaces = surfaces ?? null;
     this.enterHostState();
@@ -686,9 +830,14 @@ export class PenumbraRenderer {
     surface.flipY = external?.flipY ?? false;
   }
 
-  /** Frees every GL resource and forgets lights and hulls. Safe to call twice. */
+  /**
+   * Frees every GL resource and forgets lights and hulls; an open frame is closed first (its
+   * `beginDraw()`'s framebuffers and viewport bound again). Safe to call twice. Afterwards the
+   * frame calls do nothing, and `addLight` and `addHull` throw.
+   */
   dispose(): void {
     if (this.disposed) return;
+    if (this.drawing && !this.isContextLost()) this.closeFrame();
     this.disposed = true;
     this.canvas?.removeEventListener('webglcontextlost', this.onContextLost);
     this.canvas?.removeEventListener('webglcontextrestored', this.handleContextRestored);
@@ -801,6 +950,8 @@ export class PenumbraRenderer {
   }
 
   private updateDefaultViewProjection(): void {
+    // Without a size yet (made on a lost context) the identity stands in until the restore gives one.
+    if (this.width === 0 || this.height === 0) return;
     mat4.ortho(this._viewProjection, 0, this.width, this.height, 0, -1, 1);
   }
 
@@ -881,11 +1032,21 @@ export class PenumbraRenderer {
   private readonly handleContextRestored = (): void => {
     if (!this.contextLost || this.disposed || this.gl.isContextLost()) return;
     this.maxSize = maxTargetSize(this.gl);
+    this.takeDrawingBufferSize();
+    this.checkedCookies = new WeakMap();
     this.createResources();
     this.contextLost = false;
     this.onContextRestored?.(this);
     this.warnOfOldCookies();
   };
+
+  /** Gives a side still 0 (the renderer was made on a lost context without it) the drawing buffer's. */
+  private takeDrawingBufferSize(): void {
+    if (this.width !== 0 && this.height !== 0) return;
+    const gl = this.gl;
+    this.setSize(this.width || checkSize('PenumbraRenderer.width', gl.drawingBufferWidth, this.maxSize),
+      this.height || checkSize('PenumbraRenderer.height', gl.drawingBufferHeight, this.maxSize));
+  }
 
   /** Names each textured light whose cookie texture is not one of the restored context's. */
   private warnOfOldCookies(): void {
@@ -909,6 +1070,15 @@ function checkSize(name: string, value: number, max: number): number {
   if (!Number.isInteger(value) || value <= 0) throw new RangeError(`${name} must be a positive integer, got ${describeValue(value)}`);
   if (value > max) throw new RangeError(`${name} ${value} exceeds this context's largest texture size ${max} (MAX_TEXTURE_SIZE / MAX_RENDERBUFFER_SIZE)`);
   return value;
+}
+
+/** Whether `texture` is a live texture of `gl` (`isTexture` throws for an object that is no WebGLTexture). */
+function isTextureOf(gl: WebGL2RenderingContext, texture: WebGLTexture): boolean {
+  try {
+    return gl.isTexture(texture);
+  } catch {
+    return false;
+  }
 }
 
 /** Whether `value` is a non-null object (a WebGL texture is an opaque one). */

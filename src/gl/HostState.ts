@@ -198,3 +198,69 @@ export class HostState {
     return this.viewport;
   }
 }
+
+/**
+ * The draw and read buffers of the host framebuffer a frame composites into (`draw`,
+ * `drawInPlace`), which may have several draw buffers (a G-buffer, a chain of MRT passes). WebGL
+ * refuses a draw while an active draw buffer has no output of the fragment shader
+ * (INVALID_OPERATION), and the composite writes one colour: it writes the host's draw buffer 0
+ * alone, and `drawInPlace` copies from that same attachment. Draw and read buffers are the
+ * framebuffer's own state, which {@link HostState}'s bindings do not cover: each is set for the
+ * renderer's use and put back right after. The default framebuffer has one colour buffer: left alone.
+ * No allocation but when MAX_DRAW_BUFFERS changes (once).
+ */
+export class HostDrawBuffers {
+  private framebuffer: WebGLFramebuffer | null = null;
+  /** The host's DRAW_BUFFERi for every i below MAX_DRAW_BUFFERS. */
+  private hostBuffers: number[] = [];
+  /** The host's draw buffer 0, then NONE: what the composite draws with. */
+  private firstOnly: number[] = [];
+  /** Whether a draw buffer beyond 0 is active: only then are the draw buffers changed. */
+  private several = false;
+  private hostReadBuffer = 0;
+
+  constructor(private readonly gl: WebGL2RenderingContext) {}
+
+  /** Reads the draw buffers of `framebuffer`, the bound draw framebuffer (the host's, when a frame opens). */
+  record(framebuffer: WebGLFramebuffer | null): void {
+    const gl = this.gl;
+    this.framebuffer = framebuffer;
+    this.several = false;
+    if (framebuffer === null) return;
+    const count = (gl.getParameter(gl.MAX_DRAW_BUFFERS) as number | null) ?? 0;
+    if (this.hostBuffers.length !== count) {
+      this.hostBuffers = new Array<number>(count).fill(gl.NONE);
+      this.firstOnly = new Array<number>(count).fill(gl.NONE);
+    }
+    for (let i = 0; i < count; i++) {
+      const buffer = gl.getParameter(gl.DRAW_BUFFER0 + i) as number;
+      this.hostBuffers[i] = buffer;
+      if (i > 0 && buffer !== gl.NONE) this.several = true;
+    }
+    if (count > 0) this.firstOnly[0] = this.hostBuffers[0];
+  }
+
+  /** With the recorded framebuffer bound for drawing: leaves its draw buffer 0 the only one drawn into. */
+  drawFirstOnly(): void {
+    if (this.several) this.gl.drawBuffers(this.firstOnly);
+  }
+
+  /** Puts back the draw buffers of the recorded framebuffer, bound for drawing. */
+  restoreDraw(): void {
+    if (this.several) this.gl.drawBuffers(this.hostBuffers);
+  }
+
+  /** With the recorded framebuffer bound for reading: reads from the attachment of its draw buffer 0. */
+  readFirst(): void {
+    if (this.framebuffer === null || this.hostBuffers.length === 0) return;
+    const gl = this.gl;
+    this.hostReadBuffer = gl.getParameter(gl.READ_BUFFER) as number;
+    if (this.hostReadBuffer !== this.hostBuffers[0]) gl.readBuffer(this.hostBuffers[0]);
+  }
+
+  /** Puts back the read buffer of the recorded framebuffer, bound for reading. */
+  restoreRead(): void {
+    if (this.framebuffer === null || this.hostBuffers.length === 0) return;
+    if (this.hostReadBuffer !== this.hostBuffers[0]) this.gl.readBuffer(this.hostReadBuffer);
+  }
+}

@@ -501,7 +501,11 @@ export class TexturedLight extends Light {
     return 'textured';
   }
 
-  /** The light cookie texture: any object (WebGL textures are opaque handles), checked when set. */
+  /**
+   * The light cookie texture, a WebGLTexture of the renderer's context: a value of another kind
+   * throws a TypeError when set; the renderer checks the context when the light is added and when
+   * the texture changes (see `PenumbraRenderer.addLight`).
+   */
   get texture(): WebGLTexture {
     return this._texture;
   }
@@ -554,9 +558,25 @@ export class TexturedLight extends Light {
   }
 }
 
+/**
+ * Throws unless `value` is a WebGLTexture: an instance of the platform's class where there is one
+ * (browsers), else any object (headless-gl in Node has no global class). Whether it belongs to a
+ * renderer's context is for the renderer to check, when the light is added and drawn.
+ */
 function checkTexture(value: WebGLTexture): WebGLTexture {
-  if (typeof value !== 'object' || value === null) throw new TypeError(`TexturedLight.texture must be a WebGLTexture, got ${describeValue(value)}`);
+  const textureClass = (globalThis as { WebGLTexture?: unknown }).WebGLTexture;
+  const isTexture = typeof value === 'object' && value !== null && (typeof textureClass !== 'function' || value instanceof textureClass);
+  if (!isTexture) throw new TypeError(`TexturedLight.texture must be a WebGLTexture, got ${describeTexture(value)}`);
   return value;
+}
+
+/**
+ * A texture as messages show it: an object by its class (WebGL objects have no fields to list).
+ * @internal
+ */
+export function describeTexture(value: unknown): string {
+  const name = typeof value === 'object' && value !== null ? (value as { constructor?: { name?: unknown } }).constructor?.name : undefined;
+  return typeof name === 'string' && name !== '' && name !== 'Object' ? `a ${name}` : describeValue(value);
 }
 
 /** Options of a {@link DirectionalLight}: those of every light but the ones about a position and a range. */

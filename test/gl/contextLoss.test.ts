@@ -82,6 +82,29 @@ describe('context loss', () => {
     renderer.dispose();
   });
 
+  it('made in the loss window without a size, waits quietly and takes the restored drawing buffer’s size', () => {
+    const reference = sceneRenderer(real);
+    const before = lightmap(reference);
+    const view = Array.from(reference.viewProjection);
+    reference.dispose();
+    context.lose();
+    // The lost context reports a drawing buffer of 0 × 0, as browsers do.
+    expect(context.gl.drawingBufferWidth).toBe(0);
+    const renderer = new PenumbraRenderer(context.gl, { ambientColor: [0.1, 0.1, 0.1] });
+    const scene = sceneRenderer(real);
+    for (const light of scene.lights) renderer.addLight(light);
+    for (const hull of scene.hulls) renderer.addHull(hull);
+    scene.dispose();
+    expect(everyCall(renderer)).toEqual([]);
+    context.dispatchLost();
+    context.restore();
+    expect(lightmap(renderer)).toEqual(before);
+    // The default view follows the restored size, as a renderer made on the live context.
+    expect(Array.from(renderer.viewProjection)).toEqual(view);
+    renderer.dispose();
+    expect(real.getError()).toBe(0);
+  });
+
   it('ignores a restored event without a loss before it: no GL object is made', () => {
     const renderer = sceneRenderer(context.gl);
     const before = lightmap(renderer);

@@ -2,7 +2,8 @@
  * A headless-gl context that can be lost and restored as a browser's can (headless-gl has no
  * WEBGL_lose_context and always answers `isContextLost()` false). While lost it answers as the
  * WebGL specification says a lost context does: `isContextLost()` true, `getError()`
- * CONTEXT_LOST_WEBGL once, every other call null and without effect. The events go to its `canvas`
+ * CONTEXT_LOST_WEBGL once, every other call null and without effect, and a drawing buffer of 0 × 0
+ * (as browsers report it). The events go to its `canvas`
  * only when the test dispatches them, so a test can call in the window between a loss and its event,
  * as a `requestAnimationFrame` callback can in a browser.
  */
@@ -29,6 +30,7 @@ export function losableContext(real: WebGL2RenderingContext): LosableContext {
   const gl = new Proxy(real, {
     get(target, key) {
       if (key === 'canvas') return canvas;
+      if (lost && (key === 'drawingBufferWidth' || key === 'drawingBufferHeight')) return 0;
       const value = Reflect.get(target, key, target) as unknown;
       if (typeof value !== 'function') return value;
       return lost ? lostAnswer(String(key)) : (value as (...args: unknown[]) => unknown).bind(target);

@@ -1,5 +1,5 @@
-import { afterEach, beforeEach, describe, expect, it } from 'vitest';
-import { PenumbraRenderer } from '../../src/index';
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import { Hull, PenumbraRenderer, PointLight, TexturedLight } from '../../src/index';
 import { createContext, destroyContext } from './context';
 import { colorTarget, lightmapOf, sceneRenderer } from './fixtures';
 import { countGLObjects } from './glObjects';
@@ -15,6 +15,7 @@ beforeEach(() => {
 
 afterEach(() => {
   destroyContext(gl);
+  vi.restoreAllMocks();
 });
 
 function lightmap(renderer: PenumbraRenderer): Float32Array {
@@ -37,30 +38,183 @@ function hostTarget(): WebGLFramebuffer {
   return colorTarget(gl, W, H).framebuffer;
 }
 
-describe('call order', () => {
-  const insideFrame: [string, (renderer: PenumbraRenderer) => void, RegExp][] = [
-    ['beginDraw()', (renderer) => renderer.beginDraw(), /beginDraw\(\) called twice: call draw\(\) to end the frame/],
-    ['drawInPlace()', (renderer) => renderer.drawInPlace(), /drawInPlace\(\) called between beginDraw\(\) and draw\(\)/],
-  ];
-  for (const [call, run, message] of insideFrame) {
-    it(`${call} inside a frame throws an Error naming the order and changes nothing; the frame then ends as usual`, () => {
-      const renderer = sceneRenderer(gl);
-      const target = hostTarget();
-      const expected = frame(renderer, target);
+/** The host's framebuffer bound with a viewport unlike the renderer's, and the host state as it reads then. */
+function hostFrameState(target: WebGLFramebuffer, objects: HostObjects): ReturnType<typeof snapshot> {
+  objects.add('host framebuffer', target);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, target);
+  gl.viewport(0, 0, W, H);
+  return snapshot(gl, objects);
+}
+
+describe('a frame that throws', () => {
+  it('draw() with a bad layer mask throws naming it, after binding the host framebuffer and viewport again; the next frame draws as usual', () => {
+    const renderer = sceneRenderer(gl);
+    const target = hostTarget();
+    const expected = frame(renderer, target);
+    const objects = new HostObjects();
+    const before = hostFrameState(target, objects);
+    renderer.beginDraw();
+    expect(() => renderer.draw(~0)).toThrow(/PenumbraRenderer\.draw: layers must be an integer from 0 to 0xffffffff .*got -1/);
+    expect(differences(before, snapshot(gl, objects))).toEqual([]);
+    expect(() => renderer.draw()).toThrow(/draw\(\) called without beginDraw\(\)/);
+    expect(frame(renderer, target)).toEqual(expected);
+    renderer.dispose();
+    expect(gl.getError()).toBe(0);
+  });
+
+  it('a frame the host abandoned (its code threw before draw()) is closed by the next beginDraw(), with one warning; that frame draws as usual', () => {
+    const warn = vi.spyOn(console, 'warn').mockImplementation(() => undefined);
+    const renderer = sceneRenderer(gl);
+    const target = hostTarget();
+    const expected = frame(renderer, target);
+    const objects = new HostObjects();
+    for (let attempt = 0; attempt < 2; attempt++) {
+      const before = hostFrameState(target, objects);
       renderer.beginDraw();
-      const objects = new HostObjects();
-      const before = snapshot(gl, objects);
-      expect(() => run(renderer)).toThrow(message);
-      expect(differences(before, snapshot(gl, objects))).toEqual([]);
+      // The host's drawing throws here: draw() is never called. The next frame starts with the scene target still bound.
+      renderer.beginDraw();
       gl.clearColor(1, 1, 1, 1);
       gl.clear(gl.COLOR_BUFFER_BIT);
       renderer.draw();
-      expect(gl.getParameter(gl.DRAW_FRAMEBUFFER_BINDING)).toBe(target);
+      expect(differences(before, snapshot(gl, objects), ['COLOR_CLEAR_VALUE'])).toEqual([]);
       expect(frame(renderer, target)).toEqual(expected);
-      renderer.dispose();
-      expect(gl.getError()).toBe(0);
-    });
+    }
+    expect(warn.mock.calls.map((call) => String(call[0]))).toEqual([expect.stringMatching(/previous one was still open.*abandoned.*Warned once/)]);
+    renderer.dispose();
+    expect(gl.getError()).toBe(0);
+  });
+
+  it('a framebuffer the host bound after abandoning a frame is the next frame\'s target', () => {
+    vi.spyOn(console, 'warn').mockImplementation(() => undefined);
+    const renderer = sceneRenderer(gl);
+    const abandoned = hostTarget();
+    const target = hostTarget();
+    const expected = frame(renderer, target);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, abandoned);
+    renderer.beginDraw();
+    expect(frame(renderer, target)).toEqual(expected);
+    expect(gl.getParameter(gl.DRAW_FRAMEBUFFER_BINDING)).toBe(target);
+    renderer.dispose();
+    expect(gl.getError()).toBe(0);
+  });
+
+  it('drawInPlace() on an abandoned frame closes it likewise and lights the host framebuffer', () => {
+    vi.spyOn(console, 'warn').mockImplementation(() => undefined);
+    const renderer = sceneRenderer(gl);
+    const target = hostTarget();
+    const lightInPlace = () => {
+      gl.clearColor(1, 1, 1, 1);
+      gl.clear(gl.COLOR_BUFFER_BIT);
+      renderer.drawInPlace();
+      const pixels = new Uint8Array(W * H * 4);
+      gl.readPixels(0, 0, W, H, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+      return pixels;
+    };
+    const objects = new HostObjects();
+    hostFrameState(target, objects);
+    const expected = lightInPlace();
+    const before = snapshot(gl, objects);
+    renderer.beginDraw();
+    // The scene target is bound: drawInPlace lights the framebuffer of the abandoned frame's beginDraw.
+    renderer.drawInPlace();
+    expect(differences(before, snapshot(gl, objects))).toEqual([]);
+    expect(lightInPlace()).toEqual(expected);
+    renderer.dispose();
+    expect(gl.getError()).toBe(0);
+  });
+
+  it('dispose() inside a frame binds the host framebuffer and viewport again', () => {
+    const renderer = sceneRenderer(gl);
+    const objects = new HostObjects();
+    const before = hostFrameState(hostTarget(), objects);
+    renderer.beginDraw();
+    renderer.dispose();
+    expect(differences(before, snapshot(gl, objects))).toEqual([]);
+    expect(gl.getError()).toBe(0);
+  });
+});
+
+describe('a disposed renderer', () => {
+  it('refuses addLight and addHull with an Error naming the call; removing still answers false', () => {
+    const renderer = sceneRenderer(gl);
+    renderer.dispose();
+    const light = new PointLight({ position: [4, 4], range: 10 });
+    const hull = new Hull([[0, 0], [1, 0], [0, 1]]);
+    expect(() => renderer.addLight(light)).toThrow(/PenumbraRenderer\.addLight: the renderer was disposed/);
+    expect(() => renderer.addHull(hull)).toThrow(/PenumbraRenderer\.addHull: the renderer was disposed/);
+    expect(renderer.lights).toEqual([]);
+    expect(renderer.hulls).toEqual([]);
+    expect(renderer.removeLight(light)).toBe(false);
+  });
+});
+
+describe('a TexturedLight whose texture is not one of the context\'s', () => {
+  /** A 1 × 1 white cookie of `context`. */
+  function cookie(context: WebGL2RenderingContext): WebGLTexture {
+    const texture = context.createTexture()!;
+    context.bindTexture(context.TEXTURE_2D, texture);
+    context.texImage2D(context.TEXTURE_2D, 0, context.RGBA8, 1, 1, 0, context.RGBA, context.UNSIGNED_BYTE, new Uint8Array([255, 255, 255, 255]));
+    context.bindTexture(context.TEXTURE_2D, null);
+    return texture;
   }
+
+  /** Not a texture of `gl`: a plain object (headless-gl has no WebGLTexture class to check against), a buffer, another context's texture, a deleted one. */
+  function foreignTextures(other: WebGL2RenderingContext): [string, WebGLTexture, RegExp][] {
+    const deleted = cookie(gl);
+    gl.deleteTexture(deleted);
+    return [
+      ['a plain object', {} as WebGLTexture, /got \{\}/],
+      ['a buffer', gl.createBuffer()! as WebGLTexture, /got a WebGLBuffer/],
+      ['another context\'s texture', cookie(other), /got a WebGLTexture/],
+      ['a deleted texture', deleted, /got a WebGLTexture/],
+    ];
+  }
+
+  it('addLight throws a TypeError naming the texture; nothing is added and no GL error is left', () => {
+    const other = createContext(4, 4);
+    const renderer = sceneRenderer(gl);
+    for (const [name, texture, got] of foreignTextures(other)) {
+      const light = new TexturedLight({ position: [8, 8], range: 10, texture });
+      expect(() => renderer.addLight(light), name).toThrow(TypeError);
+      expect(() => renderer.addLight(light), name).toThrow(/PenumbraRenderer\.addLight: the TexturedLight's texture must be a texture of the renderer's WebGL context/);
+      expect(() => renderer.addLight(light), name).toThrow(got);
+      expect(renderer.lights.length, name).toBe(1);
+    }
+    expect(gl.getError()).toBe(0);
+    renderer.dispose();
+    destroyContext(other);
+  });
+
+  it('assigned after addLight, it is refused by the next frame before anything is bound: the host state is as it was; a good texture draws again', () => {
+    const other = createContext(4, 4);
+    const renderer = sceneRenderer(gl);
+    const light = renderer.addLight(new TexturedLight({ position: [8, 8], range: 10, texture: cookie(gl) }));
+    const good = light.texture;
+    const target = hostTarget();
+    const expected = frame(renderer, target);
+    const objects = new HostObjects();
+    const calls: [string, () => void][] = [
+      ['beginDraw', () => renderer.beginDraw()],
+      ['draw', () => renderer.draw()],
+      ['drawInPlace', () => renderer.drawInPlace()],
+      ['renderLightmap', () => renderer.renderLightmap()],
+    ];
+    for (const [name, texture] of foreignTextures(other)) {
+      for (const [call, run] of calls) {
+        light.texture = good;
+        const before = hostFrameState(target, objects);
+        if (call === 'draw') renderer.beginDraw();
+        light.texture = texture;
+        expect(run, `${call} with ${name}`).toThrow(/PenumbraRenderer\.lights\[1\] \(TexturedLight\)\.texture must be a texture of the renderer's WebGL context/);
+        expect(differences(before, snapshot(gl, objects)), `${call} with ${name}`).toEqual([]);
+        expect(gl.getError(), `${call} with ${name}`).toBe(0);
+      }
+    }
+    light.texture = good;
+    expect(frame(renderer, target)).toEqual(expected);
+    renderer.dispose();
+    destroyContext(other);
+  });
 });
 
 describe('sizes beyond the context', () => {
