@@ -2,7 +2,12 @@
  * Pure polygon helpers on flat coordinate arrays `[x0, y0, x1, y1, …]`.
  * Positive signed area means counter-clockwise in a y-up frame; the library stores every
  * hull with positive area so that each edge's outward normal is `(dy, -dx)`.
+ *
+ * Every decision on which side of a line a point lies (crossings, folds, collinear points,
+ * convexity, ears, inside tests) goes through the exact {@link orient2d}: rounding cannot make
+ * nearly collinear edges cross, nor a simple polygon look self-intersecting, at any placement.
  */
+import { orient2d, orientationSign } from './orient2d';
 
 /** Twice the signed area (shoelace formula). */
 export function signedArea2(coords: ArrayLike<number>, count = coords.length >> 1): number {
@@ -60,16 +65,10 @@ function closeSeam(out: number[]): number[] {
 function isRemovable(c: number[], p: number, i: number, qx: number, qy: number): boolean {
   const px = c[p], py = c[p + 1], ix = c[i], iy = c[i + 1];
   if (ix === px && iy === py) return true;
-  if ((ix - px) * (qy - py) - (iy - py) * (qx - px) !== 0) return false;
-  const dot = (ix - px) * (qx - px) + (iy - py) * (qy - py);
-  return dot >= 0 && dot <= (qx - px) ** 2 + (qy - py) ** 2;
+  return orient2d(px, py, ix, iy, qx, qy) === 0 && onSegment(px, py, qx, qy, ix, iy);
 }
 
-function orientation(ax: number, ay: number, bx: number, by: number, cx: number, cy: number): number {
-  const v = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-  return v > 0 ? 1 : v < 0 ? -1 : 0;
-}
-
+/** Whether (px, py), on the line through a and b, lies between them (a box test: exact). */
 function onSegment(ax: number, ay: number, bx: number, by: number, px: number, py: number): boolean {
   return Math.min(ax, bx) <= px && px <= Math.max(ax, bx) && Math.min(ay, by) <= py && py <= Math.max(ay, by);
 }
@@ -79,10 +78,10 @@ export function segmentsIntersect(
   ax: number, ay: number, bx: number, by: number,
   cx: number, cy: number, dx: number, dy: number,
 ): boolean {
-  const o1 = orientation(ax, ay, bx, by, cx, cy);
-  const o2 = orientation(ax, ay, bx, by, dx, dy);
-  const o3 = orientation(cx, cy, dx, dy, ax, ay);
-  const o4 = orientation(cx, cy, dx, dy, bx, by);
+  const o1 = orientationSign(ax, ay, bx, by, cx, cy);
+  const o2 = orientationSign(ax, ay, bx, by, dx, dy);
+  const o3 = orientationSign(cx, cy, dx, dy, ax, ay);
+  const o4 = orientationSign(cx, cy, dx, dy, bx, by);
   if (o1 !== o2 && o3 !== o4) return true;
   return (o1 === 0 && onSegment(ax, ay, bx, by, cx, cy))
     || (o2 === 0 && onSegment(ax, ay, bx, by, dx, dy))
@@ -93,13 +92,16 @@ export function segmentsIntersect(
 /**
  * True for a simple polygon: at least 3 points, non-zero area, and no two edges meeting
  * anywhere but at their shared end point (so also no outline folding back along itself).
+ * Exact for any doubles (see {@link orient2d}). Zero area needs no test of its own (a rounded
+ * area could call a thin polygon far from the origin degenerate): points all on one line always
+ * fold back at the outermost one.
  * O(n log n): after linear checks of the points, a sweep line (Shamos–Hoey) tests only edges
  * that become neighbours in the order the sweep meets them. Outlines of up to 8 points
  * (`PAIRWISE_MAX_POINTS`) test every pair instead, without sorting or allocating.
  */
 export function isSimplePolygon(coords: ArrayLike<number>): boolean {
   const n = coords.length >> 1;
-  if (n < 3 || signedArea2(coords, n) === 0 || foldsBack(coords, n)) return false;
+  if (n < 3 || foldsBack(coords, n)) return false;
   if (n <= PAIRWISE_MAX_POINTS) return !pairMeets(coords, n);
   const order = sortedPoints(coords, n);
   return !hasRepeatedPoint(coords, order) && !sweepFindsCrossing(coords, n, order);
@@ -149,9 +151,12 @@ function hasRepeatedPoint(coords: ArrayLike<number>, order: Int32Array): boolean
 function foldsBack(coords: ArrayLike<number>, n: number): boolean {
   for (let i = 0; i < n; i++) {
     const p = (i + n - 1) % n, q = (i + 1) % n;
+    if (orientationOf(coords, p, i, q) !== 0) continue;
+    // Collinear: the neighbours lie on one side of point i when each coordinate's difference has
+    // one sign (a difference of doubles has the sign of the exact one).
     const ux = coords[2 * p] - coords[2 * i], uy = coords[2 * p + 1] - coords[2 * i + 1];
     const vx = coords[2 * q] - coords[2 * i], vy = coords[2 * q + 1] - coords[2 * i + 1];
-    if (ux * vy - uy * vx === 0 && ux * vx + uy * vy > 0) return true;
+    if (ux * vx + uy * vy > 0) return true;
   }
   return false;
 }
@@ -181,7 +186,7 @@ function sweepFindsCrossing(coords: ArrayLike<number>, n: number, order: Int32Ar
 }
 
 function orientationOf(coords: ArrayLike<number>, a: number, b: number, c: number): number {
-  return orientation(coords[2 * a], coords[2 * a + 1], coords[2 * b], coords[2 * b + 1], coords[2 * c], coords[2 * c + 1]);
+  return orientationSign(coords[2 * a], coords[2 * a + 1], coords[2 * b], coords[2 * b + 1], coords[2 * c], coords[2 * c + 1]);
 }
 
 /**
@@ -310,16 +315,11 @@ export function isConvexPolygon(coords: ArrayLike<number>): boolean {
   return sharpestRightTurn(coords) >= 0;
 }
 
-/** The least cross product of two consecutive edges: negative where the outline turns clockwise, 0 where it runs straight on. */
+/** The least turn of the outline at a point, as a sign: −1 where it turns clockwise somewhere, 0 where it runs straight on, else 1. */
 function sharpestRightTurn(coords: ArrayLike<number>): number {
   const count = coords.length >> 1;
-  let least = Infinity;
-  for (let i = 0; i < count; i++) {
-    const a = (i + count - 1) % count, b = (i + 1) % count;
-    const ax = coords[2 * i] - coords[2 * a], ay = coords[2 * i + 1] - coords[2 * a + 1];
-    const bx = coords[2 * b] - coords[2 * i], by = coords[2 * b + 1] - coords[2 * i + 1];
-    least = Math.min(least, ax * by - ay * bx);
-  }
+  let least = 1;
+  for (let i = 0; i < count && least >= 0; i++) least = Math.min(least, orientationOf(coords, (i + count - 1) % count, i, (i + 1) % count));
   return least;
 }
 
@@ -340,7 +340,8 @@ export function isInsidePolygon(coords: ArrayLike<number>, point: ArrayLike<numb
   for (let i = 0, j = count - 1; i < count; j = i++) {
     const xi = coords[2 * (first + i)], yi = coords[2 * (first + i) + 1];
     const xj = coords[2 * (first + j)], yj = coords[2 * (first + j) + 1];
-    if ((yi > y) !== (yj > y) && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) inside = !inside;
+    // The point is left of where the edge crosses its row: on the edge's left going up, on its right going down.
+    if ((yi > y) !== (yj > y) && (yi > yj ? orient2d(xj, yj, xi, yi, x, y) > 0 : orient2d(xj, yj, xi, yi, x, y) < 0)) inside = !inside;
   }
   return inside;
 }
@@ -532,8 +533,8 @@ class ReflexPoints {
             continue;
           }
           const px = co[2 * p], py = co[2 * p + 1];
-          if (p !== a && p !== c && orientation(ax, ay, bx, by, px, py) >= 0 && orientation(bx, by, cx, cy, px, py) >= 0
-            && orientation(cx, cy, ax, ay, px, py) >= 0) return true;
+          if (p !== a && p !== c && orient2d(ax, ay, bx, by, px, py) >= 0 && orient2d(bx, by, cx, cy, px, py) >= 0
+            && orient2d(cx, cy, ax, ay, px, py) >= 0) return true;
         }
       }
     }

@@ -1,6 +1,8 @@
 import { describe, expect, it } from 'vitest';
+import { orient2d } from '../../src/geometry/orient2d';
 import { isConvexPolygon, isInsidePolygon, isSimplePolygon, signedArea2, simplifyPolygon, triangulate } from '../../src/geometry/polygon';
 import { Hull } from '../../src/index';
+import { createRandom } from '../reference/randomScenes';
 
 const square = [0, 0, 10, 0, 10, 10, 0, 10];
 
@@ -97,5 +99,160 @@ describe('convexity', () => {
     expect(hull.convex).toBe(false);
     hull.points = [[0, 0], [10, 10], [10, 0], [0, 10]];
     expect(hull.convex).toBe(false);
+  });
+});
+
+/**
+ * The exact reference: a finite double is an integer times a power of two, read from its bits;
+ * scaled to the smallest power among them, an orientation's doubles are integers, and the
+ * determinant is computed exactly in BigInt.
+ */
+const bitsView = new DataView(new ArrayBuffer(8));
+function exactParts(value: number): [bigint, number] {
+  const view = bitsView;
+  view.setFloat64(0, value);
+  const bits = view.getBigUint64(0);
+  const exponent = Number((bits >> 52n) & 0x7ffn), fraction = bits & ((1n << 52n) - 1n);
+  const integer = exponent === 0 ? fraction : fraction | (1n << 52n);
+  return [bits >> 63n ? -integer : integer, Math.max(exponent, 1) - 1075];
+}
+
+/** Doubles as integers scaled to one power of two: their exact values, in proportion. */
+function exactIntegers(values: readonly number[]): bigint[] {
+  const parts = values.map(exactParts);
+  const least = Math.min(...parts.map(([, power]) => power));
+  return parts.map(([integer, power]) => integer << BigInt(power - least));
+}
+
+/** The sign of (b − a) × (c − a) for exact points `[x, y]`. */
+function exactSign(a: readonly bigint[], b: readonly bigint[], c: readonly bigint[]): number {
+  const determinant = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  return determinant > 0n ? 1 : determinant < 0n ? -1 : 0;
+}
+
+/** The sign of (b − a) × (c − a), exactly. */
+function exactOrientation(ax: number, ay: number, bx: number, by: number, cx: number, cy: number): number {
+  const [eax, eay, ebx, eby, ecx, ecy] = exactIntegers([ax, ay, bx, by, cx, cy]);
+  return exactSign([eax, eay], [ebx, eby], [ecx, ecy]);
+}
+
+/** Whether the closed segments a–b and c–d of exact points share a point. */
+function exactSegmentsMeet(a: readonly bigint[], b: readonly bigint[], c: readonly bigint[], d: readonly bigint[]): boolean {
+  const o1 = exactSign(a, b, c), o2 = exactSign(a, b, d), o3 = exactSign(c, d, a), o4 = exactSign(c, d, b);
+  const within = (p: readonly bigint[], q: readonly bigint[], r: readonly bigint[]) =>
+    [0, 1].every((k) => (p[k] < q[k] ? p[k] : q[k]) <= r[k] && r[k] <= (p[k] < q[k] ? q[k] : p[k]));
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return (o1 === 0 && within(a, b, c)) || (o2 === 0 && within(a, b, d)) || (o3 === 0 && within(c, d, a)) || (o4 === 0 && within(c, d, b));
+}
+
+/** Simple polygon, exactly, by every pair of edges: neighbours meet only at their shared point, others nowhere. */
+function exactlySimple(points: ReadonlyArray<readonly number[]>): boolean {
+  const flat = exactIntegers(points.flat()), n = points.length;
+  const exact = Array.from({ length: n }, (_, i) => [flat[2 * i], flat[2 * i + 1]]);
+  for (let i = 0; i < n; i++) {
+    const a = exact[i], b = exact[(i + 1) % n];
+    for (let j = i + 1; j < n; j++) {
+      const c = exact[j], d = exact[(j + 1) % n];
+      if (j === i + 1 || (i === 0 && j === n - 1)) {
+        // Neighbours share one point; they meet elsewhere only by folding back along each other.
+        const [shared, p, q] = j === i + 1 ? [b, a, d] : [a, b, c];
+        if (exactSign(shared, p, q) === 0 && (p[0] - shared[0]) * (q[0] - shared[0]) + (p[1] - shared[1]) * (q[1] - shared[1]) > 0n) return false;
+      } else if (exactSegmentsMeet(a, b, c, d)) return false;
+    }
+  }
+  return true;
+}
+
+/**
+ * A U (outer 30 × 30, arms 10 wide) whose arm tips lie on one line, scaled, turned and moved into
+ * the world at random, in doubles as a host computes them.
+ */
+function worldU(random: () => number): number[][] {
+  const u = [[0, 0], [30, 0], [30, 30], [20, 30], [20, 10], [10, 10], [10, 30], [0, 30]];
+  const angle = random() * 2 * Math.PI, scale = 0.5 + 4 * random();
+  const px = 4000 * random() - 2000, py = 4000 * random() - 2000, cos = Math.cos(angle), sin = Math.sin(angle);
+  return u.map(([x, y]) => [px + scale * (x * cos - y * sin), py + scale * (x * sin + y * cos)]);
+}
+
+describe('exact orientation', () => {
+  it('gives orient2d the exact sign on nearly collinear triples, where the plain determinant fails', () => {
+    const naive = (ax: number, ay: number, bx: number, by: number, cx: number, cy: number) =>
+      Math.sign((bx - ax) * (cy - ay) - (by - ay) * (cx - ax));
+    const wrong: number[][] = [];
+    let naiveWrong = 0, checked = 0;
+    // Shewchuk's grid: points a few ulps around (0.5, 0.5) against the line through (12, 12) and (24, 24).
+    for (let i = 0; i < 64; i++) {
+      for (let j = 0; j < 64; j++) {
+        const x = 0.5 + i * 2 ** -53, y = 0.5 + j * 2 ** -53;
+        const exact = exactOrientation(x, y, 12, 12, 24, 24);
+        if (Math.sign(orient2d(x, y, 12, 12, 24, 24)) !== exact) wrong.push([x, y, 12, 12, 24, 24]);
+        naiveWrong += naive(x, y, 12, 12, 24, 24) !== exact ? 1 : 0;
+        checked++;
+      }
+    }
+    // Random lines far from the origin, the third point on the line rounded and nudged by ulps.
+    const random = createRandom(11);
+    for (let k = 0; k < 20000; k++) {
+      const ax = 1e4 * (random() - 0.5), ay = 1e4 * (random() - 0.5), bx = ax + 100 * (random() - 0.5), by = ay + 100 * (random() - 0.5);
+      const t = 3 * random() - 1, nudge = Math.floor(5 * random()) - 2;
+      const cx = ax + t * (bx - ax), cy = ay + t * (by - ay) + nudge * Number.EPSILON * Math.abs(ay);
+      const exact = exactOrientation(ax, ay, bx, by, cx, cy);
+      for (const [p, q, r] of [[[ax, ay], [bx, by], [cx, cy]], [[bx, by], [cx, cy], [ax, ay]], [[cx, cy], [bx, by], [ax, ay]]]) {
+        if (Math.sign(orient2d(p[0], p[1], q[0], q[1], r[0], r[1])) !== exactOrientation(p[0], p[1], q[0], q[1], r[0], r[1])) wrong.push([...p, ...q, ...r]);
+      }
+      naiveWrong += naive(ax, ay, bx, by, cx, cy) !== exact ? 1 : 0;
+      checked++;
+    }
+    expect(wrong).toEqual([]);
+    // The cases are hard: the plain determinant gets a good share of them wrong.
+    expect(naiveWrong).toBeGreaterThan(checked / 20);
+  });
+
+  it('is exactly 0 on exactly collinear points and antisymmetric', () => {
+    expect(orient2d(0, 0, 1, 1, 2, 2)).toBe(0);
+    expect(orient2d(1e140, 1e140, -1e140, -1e140, 3, 3)).toBe(0);
+    expect(orient2d(0.1, 0.1, 0.3, 0.3, 1e-140, 1e-140)).toBe(0);
+    expect(Math.sign(orient2d(0, 0, 1, 0, 0, 1))).toBe(1);
+    expect(Math.sign(orient2d(0, 0, 0, 1, 1, 0))).toBe(-1);
+  });
+});
+
+describe('exact decisions on nearly collinear edges', () => {
+  it('accepts a U whose arm tips lie on one line at any rotation in world coordinates, as exact arithmetic does', () => {
+    const random = createRandom(2024);
+    for (let k = 0; k < 20000; k++) {
+      const points = worldU(random), coords = points.flat();
+      const simple = exactlySimple(points);
+      if (isSimplePolygon(coords) !== simple || new Hull(points as [number, number][]).valid !== simple) {
+        expect.fail(`isSimplePolygon and Hull.valid must be ${simple} for ${JSON.stringify(points)}`);
+      }
+      // The triangulation: n − 2 triangles, each turning counter-clockwise, exactly.
+      const ccw = signedArea2(coords) > 0 ? coords : points.slice().reverse().flat();
+      const triangles = triangulate(ccw);
+      expect(triangles).toHaveLength(3 * (points.length - 2));
+      const exact = exactIntegers(ccw), point = (i: number) => [exact[2 * i], exact[2 * i + 1]];
+      for (let t = 0; t < triangles.length; t += 3) {
+        if (exactSign(point(triangles[t]), point(triangles[t + 1]), point(triangles[t + 2])) !== 1) expect.fail(`triangle ${t / 3} of ${JSON.stringify(ccw)} does not turn left`);
+      }
+    }
+  });
+
+  it('tests points on and next to a turned outline as exact arithmetic does', () => {
+    const random = createRandom(5);
+    for (let k = 0; k < 2000; k++) {
+      const points = worldU(random), coords = points.flat(), n = points.length;
+      // A point on the line of an edge (rounded), nudged by an ulp or two across it.
+      const e = Math.floor(random() * n), [ax, ay] = points[e], [bx, by] = points[(e + 1) % n], t = random();
+      const x = ax + t * (bx - ax), y = ay + t * (by - ay) + (Math.floor(5 * random()) - 2) * Number.EPSILON * Math.abs(ay);
+      // Even-odd by exact arithmetic: an edge crossing the point's row counts when the point lies left of it.
+      let inside = false;
+      for (let i = 0, j = n - 1; i < n; j = i++) {
+        const [xi, yi] = points[i], [xj, yj] = points[j];
+        if ((yi > y) === (yj > y)) continue;
+        const [lowX, lowY, highX, highY] = yi < yj ? [xi, yi, xj, yj] : [xj, yj, xi, yi];
+        if (exactOrientation(lowX, lowY, highX, highY, x, y) > 0) inside = !inside;
+      }
+      expect(isInsidePolygon(coords, [x, y]), `(${x}, ${y}) in ${JSON.stringify(points)}`).toBe(inside);
+    }
   });
 });
