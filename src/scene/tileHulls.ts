@@ -96,8 +96,9 @@ let messageName = 'TileHulls';
  */
 export class TileHulls<T = unknown> {
   /**
-   * Most tiles a grid may hold (`width × height`): 2²⁸ = 268,435,456 (16,384²). One byte is kept
-   * per tile; a larger grid is refused before anything is allocated.
+   * Most tiles a grid may hold (`width × height`), and most tiles along one side: 2²⁸ =
+   * 268,435,456 (16,384²). One byte is kept per tile; a larger grid is refused before anything is
+   * allocated or read.
    */
   static readonly maxTiles = MAX_TILES;
   /** Tiles per row. */
@@ -308,7 +309,7 @@ function readGrid(name: string, grid: unknown, options: TileHullsOptions<unknown
       throw new TypeError(`${name} options.width and options.height must be given for a grid function, got ${describeValue(options.width)} and ${describeValue(options.height)}`);
     }
     const width = size('width', options.width), height = size('height', options.height);
-    assertTileCount(name, 'options.width × options.height', width, height);
+    assertTileCount(name, 'options.width', 'options.height', width, height);
     const cells = new Uint8Array(width * height);
     for (let y = 0; y < height; y++) {
       for (let x = 0; x < width; x++) cells[y * width + x] = isSolid(grid(x, y), x, y, () => `grid(${x}, ${y})`) ? 1 : 0;
@@ -325,7 +326,7 @@ function readGrid(name: string, grid: unknown, options: TileHullsOptions<unknown
     if (!Number.isInteger(height) || width * height !== grid.length) {
       throw new RangeError(`${name} grid must hold width × height = ${options.height === undefined ? `a multiple of ${width}` : width * height} tiles, got ${grid.length}`);
     }
-    assertTileCount(name, 'options.width × height', width, height);
+    assertTileCount(name, 'options.width', 'height', width, height);
     const cells = new Uint8Array(width * height);
     for (let i = 0; i < cells.length; i++) {
       const x = i % width, y = (i - x) / width;
@@ -347,7 +348,7 @@ function readGrid(name: string, grid: unknown, options: TileHullsOptions<unknown
     if (y === 0) width = row.length;
     else if (row.length !== width) throw new RangeError(`${name} grid[${y}] must have ${width} tiles like grid[0], got ${row.length}`);
   }
-  assertTileCount(name, 'grid[0].length × grid.length', width, height);
+  assertTileCount(name, 'grid[0].length', 'grid.length', width, height);
   const cells = new Uint8Array(width * height);
   for (let y = 0; y < height; y++) {
     const row = (grid as ArrayLike<ArrayLike<unknown>>)[y];
@@ -356,10 +357,16 @@ function readGrid(name: string, grid: unknown, options: TileHullsOptions<unknown
   return { width, height, cells };
 }
 
-/** Refuses a grid of more than {@link MAX_TILES} tiles, before its tiles are allocated or read. */
-function assertTileCount(name: string, fields: string, width: number, height: number): void {
+/**
+ * Refuses a grid of more than {@link MAX_TILES} tiles, or with a side longer than that (an empty
+ * grid of 0 × 2⁴⁰ tiles would still be walked row by row), before its tiles are allocated or read.
+ */
+function assertTileCount(name: string, widthField: string, heightField: string, width: number, height: number): void {
+  for (const [field, value] of [[widthField, width], [heightField, height]] as const) {
+    if (value > MAX_TILES) throw new RangeError(`${name} ${field} must be at most ${MAX_TILES} (TileHulls.maxTiles), got ${value}`);
+  }
   if (width * height > MAX_TILES) {
-    throw new RangeError(`${name} ${fields} must be at most ${MAX_TILES} tiles (TileHulls.maxTiles), got ${width} × ${height} = ${width * height}`);
+    throw new RangeError(`${name} ${widthField} × ${heightField} must be at most ${MAX_TILES} tiles (TileHulls.maxTiles), got ${width} × ${height} = ${width * height}`);
   }
 }
 
