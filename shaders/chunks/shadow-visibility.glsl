@@ -29,8 +29,8 @@
 // at one pixel, 0.003 at p99).
 //
 // A pixel inside a hull is dark for a Solid light and lit for an Illuminated one. For an Occluded
-// light it takes a second pass, lit as from inside that hull (the holder): of the holder's records,
-// only their outline edges facing the pixel hide anything (see seenFromHolder).
+// light it takes a second pass, lit as from inside every hull that holds it (its holders): of every
+// record, only its outline edges facing the pixel hide anything (see seenFromHolders).
 //
 // Built with LEAN_SHADOW, the lean program: for pixels whose records that hide anything are all in
 // front and none of which holds the pixel for an Occluded light (the lean tiles of
@@ -125,10 +125,6 @@ int tagOf(int record) {
   return int(texelFetch(u_recordTags, ivec2(record % RECORDS_PER_ROW, record / RECORDS_PER_ROW), 0).x);
 }
 
-int hullOf(int record) {
-  return tagOf(record) >> TAG_EDGE_BITS;
-}
-
 // A box around the segment a–b (offsets from the pixel) is what the segment hides: at least 2^-10
 // world units wide (as ShadowGeometry's boxes of open hulls) and 2^-19 of the coordinates'
 // magnitude, so that rounding cannot close it (a record must have an inside).
@@ -143,40 +139,48 @@ void loadSegmentBox(vec2 a, vec2 b) {
   nextYs = ys.yzwx;
 }
 
-// For an Occluded light's pixel inside a hull: the first record of that hull (the holder), while
-// the pixel is lit as from inside it; -1 otherwise.
-int holderFirst = -1;
+// For an Occluded light: whether the pixel is inside a hull, and is lit as from inside every hull
+// that holds it (the second pass).
+bool held = false;
 
-// What a loaded record of the holder hides from a pixel inside it: what its outline edges facing
-// the pixel hide. A segment from the pixel leaves the holder once; crossing such an edge it enters
-// the holder again, and what lies beyond is hidden. Its other edges are the way out or the hull's
-// inner diagonals, and hide nothing. So the record stays when every edge it faces is on the outline
-// (a record hides what the edges it faces hide), becomes a box around the one that is when it faces
-// two (the holder is concave, as a convex one faces the pixel with no outline edge, and its
-// records are triangles, which face at most two), and hides nothing (false) when it faces none.
-// Records of other hulls stay.
-bool seenFromHolder(int record) {
-  int tag = tagOf(record);
-  if ((tag >> TAG_EDGE_BITS) != holderFirst) return true;
-  ivec4 edgeBits = ivec4(1, 2, 4, 8);
-  bvec4 outline = notEqual(ivec4(tag) & edgeBits, ivec4(0));
+// Whether the last entry recordsOfEntry read holds a whole convex hull's fan of records (set too
+// before the closed form and the quadrature read the records seen past).
+bool entryIsFan;
+
+// What a loaded record hides from a pixel that hulls hold: what its outline edges facing the pixel
+// hide. A segment from the pixel leaves each hull holding it once; crossing such an edge it enters
+// one again, and what lies beyond is hidden. A segment from the pixel meets a hull that does not
+// hold it first through such an edge too, and what the hull hides past an inner diagonal it hid at
+// that edge already. So this rule holds for every closed hull and no record needs to know whether
+// its hull holds the pixel: a record hides nothing (false) when it faces no outline edge; it stays
+// whole when every edge it faces is on the outline, or when it is a convex hull's (a convex hull
+// that faces the pixel with an outline edge does not hold it; kept whole, a fan keeps its closed
+// form); a concave hull's triangle facing an outline edge and an inner diagonal (a triangle faces
+// at most two) becomes a box around that outline edge. An open hull's boxes, which have no outline
+// edges, stay whole: an open hull holds no pixel.
+bool seenFromHolders(int record) {
+  int edges = tagOf(record) & ((1 << TAG_EDGE_BITS) - 1);
+  // A concave hull's triangle repeats its last point (ShadowGeometry), an open hull's box does not.
+  bool triangle = xs.w == xs.z && ys.w == ys.z;
+  if (edges == 0 && !triangle) return true;
+  bvec4 outline = notEqual(ivec4(edges) & ivec4(1, 2, 4, 8), ivec4(0));
   bvec4 facing = lessThan(xs * nextYs - ys * nextXs, vec4(0.0));
   bvec4 hiding = bvec4(vec4(facing) * vec4(outline));
   if (!any(hiding)) return false;
-  if (hiding == facing) return true;
+  if (hiding == facing || !triangle || entryIsFan) return true;
   int k = hiding.x ? 0 : (hiding.y ? 1 : (hiding.z ? 2 : 3));
   loadSegmentBox(vec2(xs[k], ys[k]), vec2(nextXs[k], nextYs[k]));
   return true;
 }
 
 // Loads record `record` as it hides the disk from the pixel (the points as offsets from the
-// pixel); false when it hides nothing (see seenFromHolder).
+// pixel); false when it hides nothing (see seenFromHolders).
 bool loadRecord(int record) {
   loadRecordPoints(record);
 #ifdef LEAN_SHADOW
   return true;
 #else
-  return holderFirst < 0 || seenFromHolder(record);
+  return !held || seenFromHolders(record);
 #endif
 }
 
@@ -197,8 +201,6 @@ int binCount;
 // The pixel's distance from the centre its light's bins were filed around (u_binning.xy).
 float distanceToBinOrigin;
 
-// Whether the last entry recordsOfEntry read holds a whole convex hull's fan of records.
-bool entryIsFan;
 // Set once the union hides the whole disk (Illuminated lights only): then only hulls that may hold
 // the pixel are left to find.
 bool seekingHolders;
@@ -522,14 +524,14 @@ float coveredBySweep() {
 }
 
 // The fraction of the disk visible from the pixel, in one pass over the pixel's bin (see
-// shadowVisibility); `heldBy` is the first record of the hull found holding the pixel, or -1.
-float visibleFraction(int shadowType, out int heldBy) {
-  heldBy = -1;
+// shadowVisibility); `holds` tells whether a hull was found holding the pixel (in the first pass).
+float visibleFraction(int shadowType, out bool holds) {
+  holds = false;
   clearUnion();
   seekingHolders = false;
   // Once the union is whole, a hull holding the pixel is left to find only in an Illuminated or
   // Occluded light's first pass.
-  bool seeksHolder = shadowType != SHADOW_SOLID && holderFirst < 0;
+  bool seeksHolder = shadowType != SHADOW_SOLID && !held;
   for (int i = 0; i < binCount; i++) {
     ivec2 records = recordsOfEntry(i);
     for (int record = records.x; record <= records.y; record++) {
@@ -540,9 +542,9 @@ float visibleFraction(int shadowType, out int heldBy) {
       float low, high;
       int kind = classifyRecord(low, high);
       if (kind == HOLDS_PIXEL) {
-        // Lit as from inside the holder, the pixel passes through the other hulls' records holding it.
-        if (holderFirst >= 0) continue;
-        heldBy = hullOf(record);
+        // Lit as from inside its holders, the pixel passes through their records holding it.
+        if (held) continue;
+        holds = true;
         return shadowType == SHADOW_SOLID ? 0.0 : 1.0;
       }
       if (kind == IN_FRONT) insertInterval(low, high);
@@ -560,7 +562,9 @@ float visibleFraction(int shadowType, out int heldBy) {
   for (int once = 0; once < (unionOverflowed && pastCount == 0 ? 1 : 0); once++) hidden = coveredBySweep();
 #ifndef LEAN_SHADOW
   bool closedForm = pastCount > 0 && pastFirst >= 0 && (insideDisk || middleCount == 0);
+  entryIsFan = pastIsFan;
   for (int once = 0; once < (closedForm ? 1 : 0); once++) hidden += hiddenBehind(pastFirst, pastLast, pastIsFan, !insideDisk, lowCover, highCover);
+  entryIsFan = false;
   for (int once = 0; once < (pastCount > 0 && !closedForm ? 1 : 0); once++) hidden += hiddenPast();
 #ifdef SHADOW_STATISTICS
   sweptPixel = pastCount > 0 && !closedForm;
@@ -597,16 +601,16 @@ float shadowVisibility() {
 float shadowVisibility() {
   beginShadow();
   int shadowType = int(u_shadowType + 0.5);
-  holderFirst = -1;
-  int heldBy;
+  held = false;
+  bool holds;
 #ifdef LEAN_SHADOW
-  return visibleFraction(shadowType, heldBy);
+  return visibleFraction(shadowType, holds);
 #else
   float visible = 1.0;
   for (int pass = 0; pass < 2; pass++) {
-    visible = visibleFraction(shadowType, heldBy);
-    if (heldBy < 0 || shadowType != SHADOW_OCCLUDED) break;
-    holderFirst = heldBy;
+    visible = visibleFraction(shadowType, holds);
+    if (!holds || shadowType != SHADOW_OCCLUDED) break;
+    held = true;
   }
   return visible;
 #endif

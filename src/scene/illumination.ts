@@ -321,9 +321,10 @@ export class IlluminationQuery {
       const index = grid.found[i];
       if (!this.shadows(light, hulls, index) || !(directional ? this.nearCone(index) : this.nearSegment(index))) continue;
       const hull = hulls[index], flag = flags[index];
-      // Lit as from inside the holder (Occluded), the point passes through the other hulls holding it.
-      if (index === holder) visibility.addFacingEdges(hull.worldPoints, hull.pointCount);
-      else if (holder < 0 || !this.holds(hull, index, values)) visibility.addOutline(hull.worldPoints, hull.pointCount, (flag & CLOSED) !== 0, (flag & CONVEX) !== 0);
+      // Lit as from inside every hull holding it (Occluded): a segment from the point hides where it
+      // enters one of them again, through an outline edge facing the point (see ShadowType.Occluded).
+      if (holder >= 0 && this.holds(hull, index, values)) visibility.addFacingEdges(hull.worldPoints, hull.pointCount);
+      else visibility.addOutline(hull.worldPoints, hull.pointCount, (flag & CLOSED) !== 0, (flag & CONVEX) !== 0);
     }
     visibility.computeFraction();
     values[VISIBILITY] = visibility.output[0];
@@ -343,7 +344,7 @@ export class IlluminationQuery {
     return false;
   }
 
-  /** The first closed hull that holds the query point and shadows the light, or −1. */
+  /** A closed hull that holds the query point and shadows the light (whichever the grid finds first), or −1. */
   private holderOf(light: Light, hulls: readonly Hull[]): number {
     const grid = this.grid, box = this.box, values = this.values;
     box[0] = box[2] = values[X];

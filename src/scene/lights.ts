@@ -16,8 +16,9 @@ export const ShadowType = {
    * floor. A segment from a pixel inside a hull leaves that hull once; the hull hides what lies
    * beyond a place where the segment enters it again, so a convex hull never shades itself and a
    * concave one shades its own parts behind its nearer walls (the thesis' occluded hulls, §4.2).
-   * Where hulls overlap, a pixel inside several is lit as from inside the first one found, and
-   * passes through the parts of the others that hold it.
+   * Where hulls overlap, a pixel inside several is lit as from inside all of them at once, whatever
+   * their order: the segment is hidden where it meets a hull that does not hold the pixel, or enters
+   * one that does again.
    */
   Occluded: 'occluded',
 } as const;

@@ -6,6 +6,7 @@ import { compareReferenceScene, compareWithLightmap, hardCentres, MAX_DIFFERENCE
 import { createRandom, randomScene } from '../reference/randomScenes';
 import { SceneGeometry } from '../reference/sceneGeometry';
 import { box, REFERENCE_SCENES, type Point, type ReferenceScene } from '../reference/scenes';
+import { hexagon, uShape } from '../reference/occludedReference';
 import { OUTLINE_BAND } from '../reference/softShadowReference';
 import { createContext, destroyContext } from './context';
 import { renderLightmap } from './lightmap';
@@ -208,6 +209,28 @@ describe('illuminationAt matches the rendered lightmap: features', () => {
       new Hull([[70, 62], [90, 62]], { closed: false }),
     ]);
     check('Illuminated and Solid, polylines, hard light, overlapping hulls');
+  });
+
+  it('Occluded lights inside overlapping convex and concave hulls, listed in either order', () => {
+    const circle = (cx: number, cy: number, r: number, count: number): Point[] => Array.from({ length: count }, (_, i) => [cx + r * Math.cos((2 * Math.PI * i) / count), cy + r * Math.sin((2 * Math.PI * i) / count)]);
+    const hulls = (): Hull[] => [
+      new Hull(hexagon(50, 40, 20, 0.2)),
+      new Hull(hexagon(72, 44, 22, 0.5)),
+      new Hull(uShape(0, 0, 50, 40, 12, 24), { position: [90, 20], rotation: 0.4 }),
+      // A convex hull of more records than one bin entry holds, over the U's arm.
+      new Hull(circle(122, 40, 16, 90)),
+      new Hull(uShape(30, 70, 60, 40, 12, 26)),
+      new Hull(uShape(0, 0, 50, 34, 10, 20), { position: [78, 112], rotation: Math.PI, scale: [1.1, 0.9] }),
+      new Hull([[20, 90], [140, 84]], { closed: false }),
+    ];
+    const lights = (): Light[] => [
+      new PointLight({ position: [12, 60], range: 170, radius: 6, shadowType: ShadowType.Occluded }),
+      new PointLight({ position: [150, 110], range: 150, radius: 3, shadowType: ShadowType.Occluded, color: [0.4, 0.7, 1] }),
+    ];
+    reset(lights(), hulls());
+    check('Occluded lights, overlapping hulls');
+    reset(lights(), hulls().reverse());
+    check('Occluded lights, overlapping hulls listed in reverse');
   });
 
   it('hulls and polylines crossing one another inside a wide disk', () => {

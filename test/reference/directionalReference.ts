@@ -61,7 +61,7 @@ export function computeDirectionalReference(scene: DirectionalReferenceScene, sa
       if (holder >= 0 && shadowType !== 'occluded') {
         fraction = shadowType === 'illuminated' ? 1 : 0;
       } else if (holder >= 0) {
-        const floats = writeEdgesSeenFromInside(outlines, holder, px, py, edgesFromInside);
+        const floats = writeEdgesSeenFromInside(outlines, px, py, edgesFromInside);
         edgesFromInside.set(polylineEdges, floats);
         fraction = disk.fractionSeen(px, py, edgesFromInside, floats + polylineEdges.length);
       } else {

@@ -5,9 +5,10 @@ import { computeReference, diskSamples, DISK_SAMPLES, LIT, PENUMBRA, shareOfSamp
 /**
  * The ground truth for Occluded lights (`ShadowType.Occluded`), by disk sampling, with none of the
  * renderer's math. Pixel centres outside hulls are as in {@link computeReference}. A pixel centre
- * inside a hull H sees a disk point when their segment crosses no edge of another hull and no edge
- * of H that faces the pixel (the pixel strictly on the edge's outer side): the segment leaves H
- * once, and a facing edge is where it would enter H again. The scenes' hulls must not overlap.
+ * inside hulls (its holders) sees a disk point when their segment crosses no edge of a hull that
+ * does not hold it and no edge of a holder that faces the pixel (the pixel strictly on the edge's
+ * outer side): the segment leaves each holder once, and a facing edge is where it would enter one
+ * again.
  *
  * Accuracy: the sampling's, about 2e-3 of full light for 4,096 samples (see DISK_SAMPLES).
  */
@@ -21,9 +22,8 @@ export function computeOccludedReference(scene: ReferenceScene, samples = DISK_S
   for (let y = 0; y < height; y++) {
     for (let x = 0; x < width; x++) {
       const px = x + 0.5, py = y + 0.5, pixel = y * width + x;
-      const holder = geometry.hullHolding(px, py);
-      if (holder < 0) continue;
-      const edgeFloats = writeEdgesSeenFromInside(outlines, holder, px, py, edges);
+      if (!geometry.isInsideHull(px, py)) continue;
+      const edgeFloats = writeEdgesSeenFromInside(outlines, px, py, edges);
       let all = true, none = true;
       for (let c = 0; c < 3; c++) reference.light[pixel * 3 + c] = 0;
       scene.lights.forEach((light, l) => {
@@ -42,23 +42,37 @@ export function computeOccludedReference(scene: ReferenceScene, samples = DISK_S
   return reference;
 }
 
-/** Writes every edge of the other hulls and the edges of `outlines[holder]` facing (px, py) into `edges`; returns the floats written. */
-export function writeEdgesSeenFromInside(outlines: readonly Float64Array[], holder: number, px: number, py: number, edges: Float64Array): number {
+/**
+ * Writes every edge of the hulls that do not hold (px, py) and the edges of those that do facing
+ * it into `edges`; returns the floats written.
+ */
+export function writeEdgesSeenFromInside(outlines: readonly Float64Array[], px: number, py: number, edges: Float64Array): number {
   let floats = 0;
-  outlines.forEach((outline, h) => {
+  outlines.forEach((outline) => {
     const count = outline.length / 2;
-    const winding = Math.sign(signedArea(outline));
+    const winding = Math.sign(signedArea(outline)), holds = contains(outline, px, py);
     for (let i = 0; i < count; i++) {
       const j = (i + 1) % count;
       const ax = outline[2 * i], ay = outline[2 * i + 1], bx = outline[2 * j], by = outline[2 * j + 1];
       // The cross product's sign times the winding's is negative on the outer side.
       const outer = ((bx - ax) * (py - ay) - (by - ay) * (px - ax)) * winding < 0;
-      if (h === holder && !outer) continue;
+      if (holds && !outer) continue;
       edges.set([ax, ay, bx, by], floats);
       floats += 4;
     }
   });
   return floats;
+}
+
+/** Whether (px, py) lies inside `outline` (even-odd). */
+function contains(outline: Float64Array, px: number, py: number): boolean {
+  let inside = false;
+  const count = outline.length / 2;
+  for (let i = 0, j = count - 1; i < count; j = i++) {
+    const ax = outline[2 * i], ay = outline[2 * i + 1], bx = outline[2 * j], by = outline[2 * j + 1];
+    if ((ay > py) !== (by > py) && px < ax + ((py - ay) * (bx - ax)) / (by - ay)) inside = !inside;
+  }
+  return inside;
 }
 
 function signedArea(outline: Float64Array): number {
@@ -94,3 +108,21 @@ export const OCCLUDED_SCENES: ReferenceScene[] = [
   scene('two lights on both sides of a row of crates', [{ position: [20, 30], range: 150, radius: 4, color: [1, 0.6, 0.3] }, { position: [140, 100], range: 150, radius: 7, color: [0.3, 0.6, 1] }],
     [box(50, 50, 14, 14), box(72, 56, 14, 14), box(94, 62, 14, 14), uShape(40, 82, 40, 26, 10, 14)]),
 ];
+
+/** A regular hexagon around (cx, cy) of circumradius r, turned by `turn` radians. */
+export function hexagon(cx: number, cy: number, r: number, turn = 0): Point[] {
+  return Array.from({ length: 6 }, (_, i) => [cx + r * Math.cos(turn + (i * Math.PI) / 3), cy + r * Math.sin(turn + (i * Math.PI) / 3)] as Point);
+}
+
+/**
+ * Occluded scenes whose hulls overlap: a pixel inside several is lit as from inside all of them,
+ * whatever their order (each scene also lists its hulls in reverse).
+ */
+export const OVERLAPPING_OCCLUDED_SCENES: ReferenceScene[] = [
+  scene('two overlapping convex hexagons', [{ position: [24, 58], range: 170, radius: 6 }],
+    [hexagon(70, 60, 24, 0.2), hexagon(96, 64, 26, 0.5)]),
+  scene('a convex hexagon over the far arm of a U-shaped building', [{ position: [22, 44], range: 170, radius: 5 }],
+    [uShape(56, 30, 70, 56, 14, 32), hexagon(118, 50, 18, 0.3)]),
+  scene('two overlapping U-shaped buildings, one turned over', [{ position: [20, 100], range: 190, radius: 7 }],
+    [uShape(40, 24, 70, 56, 14, 32), uShape(70, 46, 66, 50, 12, 30).map(([x, y]) => [x, 142 - y] as Point)]),
+].flatMap((forward) => [forward, { ...forward, name: `${forward.name} (listed in reverse)`, hulls: [...forward.hulls].reverse() }]);
