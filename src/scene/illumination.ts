@@ -3,7 +3,7 @@ import { HullGrid } from '../geometry/HullGrid';
 import { isInsidePolygon } from '../geometry/polygon';
 import type { Hull } from './Hull';
 import { DirectionalLight, falloffAt, ShadowType, Spotlight, TexturedLight, type Light } from './lights';
-import { ALL_LAYERS } from './validate';
+import { ALL_LAYERS, assertBoolean, assertLayerMask, describeValue } from './validate';
 
 /** Every content layer, as an int32 (0xffffffff | 0). */
 const EVERY_LAYER = -1;
@@ -14,7 +14,8 @@ const EVERY_LAYER = -1;
  * `−origin × size` from `position` before rotation (the texture's first texel as uploaded, which a
  * top-left world shows at the top left), (1, 1) the opposite corner. The GPU's texture cannot be
  * read without stalling it, so sample the CPU copy of the image you uploaded, with the same
- * filtering for the closest match.
+ * filtering for the closest match. A number outside 0..1 (±Infinity included) is clamped to it, as
+ * an 8-bit texture holds; a result that is not a number, or NaN, throws.
  */
 export type CookieSampler = (light: TexturedLight, u: number, v: number) => number;
 
@@ -81,6 +82,53 @@ export interface Illumination {
    * range, outside a spotlight's cone, or with their centre inside a hull that shadows them.
    */
   lights: LightIllumination[];
+}
+
+/**
+ * Checks the options and the result to reuse of `PenumbraRenderer.illuminationAt` and `isLit` (`name`,
+ * for messages): a TypeError or RangeError naming the field and showing the value, before the query
+ * reads or writes anything.
+ * @internal
+ */
+export function checkIlluminationQuery(name: string, options: IlluminationOptions | undefined, out?: Illumination): void {
+  if (options !== undefined) {
+    if (typeof options !== 'object' || options === null) throw new TypeError(`${name}: options must be an object, got ${describeValue(options)}`);
+    if (options.perLight !== undefined) assertBoolean(`${name}: options.perLight`, options.perLight);
+    if (options.includeAmbient !== undefined) assertBoolean(`${name}: options.includeAmbient`, options.includeAmbient);
+    const cookie: unknown = options.cookie;
+    if (cookie !== undefined && cookie !== null && typeof cookie !== 'function') {
+      throw new TypeError(`${name}: options.cookie must be a function (light, u, v) => number, or null, got ${describeValue(cookie)}`);
+    }
+    if (options.layers !== undefined) assertLayerMask(`${name}: options.layers`, options.layers);
+  }
+  if (out !== undefined) checkResult(name, out);
+}
+
+/** Throws unless `out` has the shape of an {@link Illumination} that a query can overwrite. */
+function checkResult(name: string, out: Illumination): void {
+  if (typeof out !== 'object' || out === null) throw new TypeError(`${name}: out must be an earlier result (an Illumination), got ${describeValue(out)}`);
+  if (!isColor(out.color)) throw new TypeError(`${name}: out.color must be an array of 3 numbers, got ${describeValue(out.color)}`);
+  const list: unknown = out.lights;
+  if (!Array.isArray(list)) throw new TypeError(`${name}: out.lights must be an array, got ${describeValue(list)}`);
+  for (let i = 0; i < list.length; i++) {
+    const entry: unknown = list[i];
+    if (typeof entry !== 'object' || entry === null || !isColor((entry as Partial<LightIllumination>).color)) {
+      throw new TypeError(`${name}: out.lights[${i}] must be an earlier result's entry (with a color array of 3 numbers), got ${describeValue(entry)}`);
+    }
+  }
+}
+
+function isColor(value: unknown): boolean {
+  return Array.isArray(value) && value.length === 3;
+}
+
+/** The cookie's value `value` at (u, v), clamped to 0..1; throws for a result that is not a number, or NaN. */
+function cookieValue(value: unknown, u: number, v: number): number {
+  if (typeof value !== 'number' || Number.isNaN(value)) {
+    const problem = typeof value === 'number' ? RangeError : TypeError;
+    throw new problem(`IlluminationOptions.cookie must return a number from 0 to 1, got ${describeValue(value)} at (u, v) = (${u}, ${v})`);
+  }
+  return value < 0 ? 0 : value > 1 ? 1 : value;
 }
 
 /** Rec. 709 luminance weights (linear RGB). */
@@ -275,7 +323,7 @@ export class IlluminationQuery {
       const rx = x - q[0], ry = y - q[1];
       const u = (rx * q[5] - ry * q[4]) / determinant, v = (q[2] * ry - q[3] * rx) / determinant;
       if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1)) return false;
-      const value = cookie ? cookie(light, u, v) : 1;
+      const value = cookie ? cookieValue(cookie(light, u, v), u, v) : 1;
       if (!(value > 0)) return false;
       values[STRENGTH] = value;
       return true;

@@ -306,4 +306,43 @@ describe('the renderer\'s illuminationAt and isLit', () => {
     renderer.dispose();
     destroyContext(gl);
   });
+
+  it('check every option, `out` and the cookie, naming the field and the value', () => {
+    const gl = createContext(64, 64);
+    const renderer = new PenumbraRenderer(gl);
+    const texture = gl.createTexture()!;
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    renderer.addLight(new TexturedLight({ texture, position: [32, 32], range: 20 }));
+    const query = (options: unknown, out?: unknown) => renderer.illuminationAt(32, 32, options as IlluminationOptions, out as never);
+    const bad: [() => unknown, ErrorConstructor, string][] = [
+      [() => query({ cookie: 5 }), TypeError, 'PenumbraRenderer.illuminationAt: options.cookie must be a function (light, u, v) => number, or null, got 5'],
+      [() => query(7), TypeError, 'PenumbraRenderer.illuminationAt: options must be an object, got 7'],
+      [() => query({ perLight: 'yes' }), TypeError, 'PenumbraRenderer.illuminationAt: options.perLight must be true or false, got "yes"'],
+      [() => query({ includeAmbient: 1 }), TypeError, 'PenumbraRenderer.illuminationAt: options.includeAmbient must be true or false, got 1'],
+      [() => query({ layers: -1 }), RangeError, 'PenumbraRenderer.illuminationAt: options.layers must be an integer from 0 to 0xffffffff (a bit mask), got -1'],
+      [() => query({}, 3), TypeError, 'PenumbraRenderer.illuminationAt: out must be an earlier result (an Illumination), got 3'],
+      [() => query({}, {}), TypeError, 'PenumbraRenderer.illuminationAt: out.color must be an array of 3 numbers, got undefined'],
+      [() => query({}, { color: [0, 0, 0] }), TypeError, 'PenumbraRenderer.illuminationAt: out.lights must be an array, got undefined'],
+      [() => query({}, { color: [0, 0, 0], lights: [5] }), TypeError, 'PenumbraRenderer.illuminationAt: out.lights[0] must be an earlier result\'s entry (with a color array of 3 numbers), got 5'],
+      [() => renderer.isLit(32, 32, 0.1, { cookie: 'red' } as unknown as IlluminationOptions), TypeError, 'PenumbraRenderer.isLit: options.cookie must be a function (light, u, v) => number, or null, got "red"'],
+      [() => renderer.isLit(32, 32, 0.1, null as unknown as IlluminationOptions), TypeError, 'PenumbraRenderer.isLit: options must be an object, got null'],
+      [() => query({ cookie: () => Number.NaN }), RangeError, 'IlluminationOptions.cookie must return a number from 0 to 1, got NaN at (u, v) = (0.5, 0.5)'],
+      [() => renderer.isLit(32, 32, 0.1, { cookie: () => '1' as unknown as number }), TypeError, 'IlluminationOptions.cookie must return a number from 0 to 1, got "1" at (u, v) = (0.5, 0.5)'],
+    ];
+    for (const [call, kind, message] of bad) expect(call).toThrow(new kind(message));
+    // A cookie's number outside 0..1 is clamped, as an 8-bit texture holds it.
+    expect(query({ cookie: () => Infinity, includeAmbient: false }).color).toEqual([1, 1, 1]);
+    expect(query({ cookie: () => 7, includeAmbient: false }).color).toEqual([1, 1, 1]);
+    expect(query({ cookie: () => -Infinity, includeAmbient: false }).lights).toEqual([]);
+    expect(renderer.isLit(32, 32, 0.99, { cookie: () => Infinity })).toBe(true);
+    expect(renderer.isLit(32, 32, 1, { cookie: () => Infinity })).toBe(false);
+    // A good result to reuse still works after the errors.
+    const out = query({});
+    expect(query({ cookie: () => 0.5, includeAmbient: false }, out)).toBe(out);
+    expect(out.color).toEqual([0.5, 0.5, 0.5]);
+    renderer.dispose();
+    gl.deleteTexture(texture);
+    destroyContext(gl);
+  });
 });
