@@ -182,8 +182,9 @@ function textureUnits(normals: boolean, edgeAware: boolean): number {
  *
  * Context loss: while `gl.isContextLost()` is true every call is a no-op, also in the window between
  * the loss and the `webglcontextlost` event. A renderer made on a lost context waits likewise; a
- * `width` or `height` not given is the restored drawing buffer's. When the context is restored the renderer rebuilds its
- * GL objects, keeps its lights and hulls, and calls {@link PenumbraRenderer.onContextRestored}.
+ * `width` or `height` not given is the restored drawing buffer's. When the context is restored the
+ * renderer rebuilds its GL objects, keeps its lights and hulls, and calls
+ * {@link PenumbraRenderer.onContextRestored}.
  */
 export class PenumbraRenderer {
   /** Draw wireframes of light quads and shadow geometry over the result. */
@@ -735,9 +736,9 @@ export class PenumbraRenderer {
    * such as PixiJS and Phaser that draw into their own targets, so that `beginDraw()` cannot
    * redirect their drawing. The copy is a `blitFramebuffer`, from the attachment of the
    * framebuffer's draw buffer 0 (see {@link PenumbraRenderer.draw}); a multisampled framebuffer (a
-   * browser canvas's by default) must have an RGBA8 colour buffer and can be copied only whole: its
-   * viewport must be the renderer's size at the origin. The context state is left as it was, also
-   * when it throws.
+   * browser canvas's by default) must have an RGBA8 colour buffer and can be copied only to the same
+   * rectangle: its viewport must be the renderer's size at the origin. The context state is left as
+   * it was, also when it throws.
    *
    * @param layers - content layers: only the lights whose `litLayers` share a bit with it (see
    *   {@link PenumbraRenderer.draw}). Default every layer.
