@@ -4,17 +4,23 @@
  * the key (the baseline, or a core that does not report it); nothing here reaches into the
  * renderer. The figure is read after the last measured frame.
  */
+function percent(value: number): string {
+  return `${(value * 100).toFixed(1)}%`;
+}
+
 export const EXTRA_STATS = [
   { key: 'shadowVisitsPerPixel', label: 'hulls visited / shaded px', format: (value: number) => value.toFixed(2) },
   { key: 'shadowSkipShare', label: 'px decided w/o loop', format: (value: number) => `${(value * 100).toFixed(1)}%` },
   { key: 'shadowQuadratureShare', label: 'px swept (quadrature)', format: (value: number) => `${(value * 100).toFixed(2)}%` },
-  // The shadow core v3's tiles: the share of a shadowed light's tiles drawn lit (plain program),
-  // exact (shadow program), and not drawn (dark, or beyond its reach).
-  { key: 'tilesLitShare', label: 'tiles lit', format: (value: number) => `${(value * 100).toFixed(1)}%` },
-  { key: 'tilesExactShare', label: 'tiles exact', format: (value: number) => `${(value * 100).toFixed(1)}%` },
-  { key: 'tilesLeanShare', label: 'tiles lean', format: (value: number) => `${(value * 100).toFixed(1)}%` },
-  { key: 'tilesHeldShare', label: 'tiles held', format: (value: number) => `${(value * 100).toFixed(1)}%` },
-  { key: 'tilesDarkShare', label: 'tiles dark', format: (value: number) => `${(value * 100).toFixed(1)}%` },
+  // The shadow core v3's programs: of the light pixels (each light's pixels where its falloff is
+  // above 0, hulls or not), the share drawn by the plain light program (lit), the held, lean and
+  // general shadow programs, and not drawn (dark); and the records an exact pixel visits, mean.
+  { key: 'pixelsLitShare', label: 'px lit', format: percent },
+  { key: 'pixelsHeldShare', label: 'px held', format: percent },
+  { key: 'pixelsLeanShare', label: 'px lean', format: percent },
+  { key: 'pixelsGeneralShare', label: 'px general', format: percent },
+  { key: 'pixelsNotDrawnShare', label: 'px not drawn', format: percent },
+  { key: 'exactVisitsPerPixel', label: 'records / exact px', format: (value: number) => value.toFixed(2) },
 ] as const;
 
 export type ExtraStatKey = (typeof EXTRA_STATS)[number]['key'];

@@ -135,10 +135,16 @@ const page: BenchPage = {
     if (!current) return {};
     const { now } = current;
     const statistics = measureShadowStatistics(gl, {}, now.scene.lights, now.scene.hulls);
-    const stats = now.renderer.stats as { tilesLit?: number; tilesDark?: number; tilesExact?: number; tilesLean?: number; tilesHeld?: number; tilesOutside?: number };
-    const tiles = (stats.tilesLit ?? 0) + (stats.tilesDark ?? 0) + (stats.tilesExact ?? 0) + (stats.tilesOutside ?? 0);
+    // Every light pixel: the same lights with no hull, each drawn whole by its plain program.
+    const lightPixels = measureShadowStatistics(gl, {}, now.scene.lights, []).pixels;
+    const { pixels, held, lean, general } = statistics;
     return readExtraStats({
-      ...(tiles > 0 ? { tilesLitShare: stats.tilesLit! / tiles, tilesExactShare: stats.tilesExact! / tiles, tilesLeanShare: (stats.tilesLean ?? 0) / tiles, tilesHeldShare: (stats.tilesHeld ?? 0) / tiles, tilesDarkShare: (stats.tilesDark! + stats.tilesOutside!) / tiles } : {}),
+      pixelsLitShare: (pixels - held - lean - general) / lightPixels,
+      pixelsHeldShare: held / lightPixels,
+      pixelsLeanShare: lean / lightPixels,
+      pixelsGeneralShare: general / lightPixels,
+      pixelsNotDrawnShare: (lightPixels - pixels) / lightPixels,
+      exactVisitsPerPixel: lean + general > 0 ? statistics.visits / (lean + general) : undefined,
       shadowVisitsPerPixel: statistics.visits / statistics.pixels,
       shadowSkipShare: statistics.decidedWithoutLoop / statistics.pixels,
       shadowQuadratureShare: statistics.swept / statistics.pixels,

@@ -1,5 +1,15 @@
 import { CURRENT, type BenchHull, type BenchLight, type BenchRendererOptions } from '../library';
 
+/** The weight of a pixel in the statistics build's program channels (light-common's PROGRAM). */
+const PROGRAM_WEIGHT = 1024;
+
+/** Frames the statistics renderer draws at most until every light is classified. */
+const MAX_CLASSIFYING_FRAMES = 32;
+
+function unclassified(renderer: { stats: object }): number {
+  return (renderer.stats as { lightsUnclassified?: number }).lightsUnclassified ?? 0;
+}
+
 /** Per light pixel (every pixel a light adds to), what the shadow loop did in one frame. */
 export interface ShadowStatistics {
   /** Light pixels shaded (a light's fragments where its falloff is above 0, shadowed or not). */
@@ -10,6 +20,10 @@ export interface ShadowStatistics {
   decidedWithoutLoop: number;
   /** Light pixels the quadrature takes (records seen past that the closed form does not cover). */
   swept: number;
+  /** Light pixels drawn by the held, the lean and the general shadow program (the others: a plain light program). */
+  held: number;
+  lean: number;
+  general: number;
 }
 
 /**
@@ -28,7 +42,10 @@ export function measureShadowStatistics(gl: WebGL2RenderingContext, options: Ben
   try {
     for (const light of lights) renderer.addLight(light);
     for (const hull of hulls) renderer.addHull(hull);
+    // As the measured renderer has them after its first frames: every light classified (a new
+    // renderer classifies as many records a frame as its budget allows, the rest drawn exact).
     renderer.renderLightmap();
+    for (let frame = 1; frame < MAX_CLASSIFYING_FRAMES && unclassified(renderer) > 0; frame++) renderer.renderLightmap();
     return sumLightmap(gl, (renderer as unknown as { lightmapTexture: WebGLTexture }).lightmapTexture);
   } finally {
     renderer.dispose();
@@ -72,12 +89,17 @@ function sumLightmap(gl: WebGL2RenderingContext, texture: WebGLTexture): ShadowS
   gl.bindFramebuffer(gl.FRAMEBUFFER, null);
   gl.deleteFramebuffer(framebuffer);
   // The lightmap is cleared to alpha 1: every texel starts with one that no light wrote.
-  const sums: ShadowStatistics = { pixels: 0, visits: 0, decidedWithoutLoop: 0, swept: -width * height };
+  const sums: ShadowStatistics = { pixels: 0, visits: 0, decidedWithoutLoop: 0, swept: -width * height, held: 0, lean: 0, general: 0 };
   for (let i = 0; i < texels.length; i += 4) {
-    sums.pixels += texels[i];
+    // Each program channel holds PROGRAM_WEIGHT per pixel of its program above a count below it
+    // (light-common's statistics build).
+    sums.pixels += texels[i] % PROGRAM_WEIGHT;
+    sums.held += Math.floor(texels[i] / PROGRAM_WEIGHT);
     sums.visits += texels[i + 1];
-    sums.decidedWithoutLoop += texels[i + 2];
-    sums.swept += texels[i + 3];
+    sums.decidedWithoutLoop += texels[i + 2] % PROGRAM_WEIGHT;
+    sums.lean += Math.floor(texels[i + 2] / PROGRAM_WEIGHT);
+    sums.swept += texels[i + 3] % PROGRAM_WEIGHT;
+    sums.general += Math.floor(texels[i + 3] / PROGRAM_WEIGHT);
   }
   return sums;
 }
