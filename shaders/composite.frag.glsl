@@ -28,9 +28,21 @@ out vec4 o_color;
 
 const int BAYER[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
 
+// Where the curves stop changing in float32, as their inputs are capped: Reinhard's c / (1 + c) is 1
+// from 2^24 on, and the ACES fit reaches 1 at c ≈ 7.24 (clamped above). Capped, a huge c (a huge
+// exposure, up to ∞) cannot overflow c² or make ∞ / ∞: the curves give 1 there, not NaN.
+const float REINHARD_FLAT = 16777216.0;
+const float ACES_FLAT = 16.0;
+
 vec3 toneMap(vec3 c) {
-  if (u_toneMapping == TONE_REINHARD) return c / (1.0 + c);
-  if (u_toneMapping == TONE_ACES) return clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
+  if (u_toneMapping == TONE_REINHARD) {
+    c = min(c, vec3(REINHARD_FLAT));
+    return c / (1.0 + c);
+  }
+  if (u_toneMapping == TONE_ACES) {
+    c = min(c, vec3(ACES_FLAT));
+    return clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
+  }
   return c;
 }
 

@@ -1,4 +1,4 @@
-import { describeValue, shortened } from '../scene/validate';
+import { describeValue, FLOAT32_MAX, isFloat32Finite, shortened } from '../scene/validate';
 import { SceneFormatError } from './SceneFormatError';
 
 /**
@@ -63,10 +63,14 @@ function field<T>(fields: Fields, key: string, fallback: T | undefined, read: (v
   return read(value, path);
 }
 
-/** A finite number within `[min, max]`. */
+/**
+ * A finite number within `[min, max]`. Finite as a float32, as the scene classes take numbers (see
+ * src/scene/validate.ts): at most {@link FLOAT32_MAX} in size.
+ */
 export function numberField(fields: Fields, key: string, fallback?: number, min = -Infinity, max = Infinity): number {
   return field(fields, key, fallback, (value, path) => {
     if (typeof value !== 'number' || !Number.isFinite(value)) throw new SceneFormatError(path, `expected a finite number, got ${describeValue(value)}`);
+    if (!isFloat32Finite(value)) throw new SceneFormatError(path, `expected a number at most ${FLOAT32_MAX} in size (a float32), got ${value}`);
     if (value < min) throw new SceneFormatError(path, `expected a number ≥ ${min}, got ${value}`);
     if (value > max) throw new SceneFormatError(path, `expected a number ≤ ${max}, got ${value}`);
     return value;
@@ -114,7 +118,7 @@ export function nameField(fields: Fields, key: string): string {
   });
 }
 
-/** An `[x, y]` pair of finite numbers, each at least `min`. */
+/** An `[x, y]` pair of finite numbers (float32, as {@link numberField}), each at least `min`. */
 export function readVec2(value: unknown, path: string, min = -Infinity): [number, number] {
   const items = Array.isArray(value) && value.length === 2 ? readArray(value, path) : [];
   if (items.length !== 2 || !items.every(isFiniteNumber)) {
@@ -129,7 +133,7 @@ export function vec2Field(fields: Fields, key: string, fallback?: [number, numbe
   return field(fields, key, fallback, (value, path) => readVec2(value, path, min));
 }
 
-/** An `[r, g, b]` field with channels ≥ 0. */
+/** An `[r, g, b]` field with channels ≥ 0, finite as float32 (as {@link numberField}). */
 export function colorField(fields: Fields, key: string, fallback?: [number, number, number]): [number, number, number] {
   return field(fields, key, fallback, (value, path) => {
     const items = Array.isArray(value) && value.length === 3 ? readArray(value, path) : [];
@@ -141,5 +145,5 @@ export function colorField(fields: Fields, key: string, fallback?: [number, numb
 }
 
 function isFiniteNumber(value: unknown): value is number {
-  return typeof value === 'number' && Number.isFinite(value);
+  return typeof value === 'number' && isFloat32Finite(value);
 }

@@ -208,10 +208,7 @@ export class LightPass {
   /** Copies the light's colour, position, range and shadow values into the uniform arrays. */
   private writeLightUniforms(draw: LightDraw): void {
     const light = draw.light;
-    const color = light.color, intensity = light.intensity;
-    this.lightColor[0] = color[0] * intensity;
-    this.lightColor[1] = color[1] * intensity;
-    this.lightColor[2] = color[2] * intensity;
+    light.writeEmittedColor(this.lightColor);
     this.lightPositionAndRange[0] = light.position[0];
     this.lightPositionAndRange[1] = light.position[1];
     this.lightPositionAndRange[2] = light.range;

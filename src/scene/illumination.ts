@@ -299,9 +299,9 @@ export class IlluminationQuery {
   }
 
   /**
-   * What the light gives the query point before shadows, as a multiplier on colour × intensity: the
-   * linear falloff (times the cone of a spotlight, as shaders/light-spot.frag.glsl), or the cookie
-   * over a textured light's quad, or 1 for a directional light (which has no range). Written to
+   * What the light gives the query point before shadows, as a multiplier on colour × intensity: its
+   * distance falloff curve (`falloffAt`; times the cone of a spotlight, as shaders/light-spot.frag.glsl),
+   * or the cookie over a textured light's quad, or 1 for a directional light (which has no range). Written to
    * `values[STRENGTH]`; false when it is 0 (as for a light the renderer skips).
    */
   private strengthOf(light: Light, cookie: CookieSampler | null): boolean {

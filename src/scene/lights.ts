@@ -1,7 +1,7 @@
 import { Hull } from './Hull';
 import {
   ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, assertOptions, assertUnit, describeValue,
-  frozenColor, frozenPair, frozenVec2, type ColorLike, type Vec2Like,
+  FLOAT32_MAX, frozenColor, frozenPair, frozenVec2, type ColorLike, type Vec2Like,
 } from './validate';
 
 /** How a light treats the inside of the hulls it shines on. */
@@ -38,6 +38,9 @@ export const Falloff = {
    * `s² / (s² + t²) × max(0, 1 − t⁴)²`, s = max(radius, 1) / range: the light of a uniformly
    * emitting disk of the light's radius seen face-on (inverse square beyond it), windowed to reach
    * zero at the range. Physically based and bright only near a small light: raise the intensity.
+   * s is taken within [2^−60, 2^16], so that s² stays a normal float32 on the GPU: above 2^16 the
+   * curve is its window to float32 precision, and below 2^−60 (a range over 2^60 times the radius,
+   * where float32 cannot tell the distances near the light apart anyway) it is that of 2^−60.
    */
   InverseSquare: 'inverseSquare',
 } as const;
@@ -318,6 +321,15 @@ export abstract class Light {
     for (let c = 0; c < 3; c++) out[c] = 1 - this._shadowStrength * (1 - this._shadowColor[c]);
   }
 
+  /**
+   * Writes colour × intensity into `out`, each channel at most {@link FLOAT32_MAX}: what a light
+   * pass's colour uniform takes (the product of two numbers of float32 size may not be one).
+   * @internal
+   */
+  writeEmittedColor(out: Float32Array): void {
+    for (let c = 0; c < 3; c++) out[c] = Math.min(this._color[c] * this._intensity, FLOAT32_MAX);
+  }
+
   /** Adds `hulls` to {@link Light.ignoredHulls} after checking that every one is a `Hull`; on an error none is added. */
   private ignoreHulls(hulls: Iterable<Hull>): void {
     const name = `${this.className}.ignoredHulls`;
@@ -333,11 +345,12 @@ export abstract class Light {
 
   /**
    * The inverse-square falloff's core s in ranges (see {@link Falloff.InverseSquare}):
-   * max(radius, 1) / range.
+   * max(radius, 1) / range, within [2^−60, 2^16].
    * @internal
    */
   inverseSquareCore(): number {
-    return Math.max(this._radius, 1) / this._range;
+    const core = Math.max(this._radius, 1) / this._range;
+    return core > INVERSE_SQUARE_CORE_MAX ? INVERSE_SQUARE_CORE_MAX : core < INVERSE_SQUARE_CORE_MIN ? INVERSE_SQUARE_CORE_MIN : core;
   }
 
   /**
@@ -393,6 +406,8 @@ export abstract class Light {
 }
 
 const CENTRE = [0.5, 0.5] as const;
+/** Bounds of the inverse-square core s: s² within float32's normal numbers, as the shader squares it (see {@link Falloff.InverseSquare}). */
+const INVERSE_SQUARE_CORE_MIN = 2 ** -60, INVERSE_SQUARE_CORE_MAX = 2 ** 16;
 /** A light's height while none is set, per unit of range: high enough that flat normals are well lit across most of the range. */
 const DEFAULT_HEIGHT_PER_RANGE = 0.25;
 const SHADOW_TYPES: readonly ShadowType[] = Object.values(ShadowType);
@@ -417,7 +432,7 @@ export function falloffAt(falloff: Falloff, t: number, core: number): number {
 }
 
 
-/** An isotropic light: full at its centre, falling linearly to zero at `range`. */
+/** An isotropic light: full at its centre, falling to zero at `range` along its `falloff` curve (see {@link Falloff}). */
 export class PointLight extends Light {
   get kind(): 'point' {
     return 'point';

@@ -7,12 +7,26 @@ export type ColorLike = readonly [number, number, number] | ArrayLike<number>;
  * Checks of values given to the scene classes. A value of the wrong type is a `TypeError`, one of
  * the right type out of range (NaN, ∞, a negative range, an unknown name) a `RangeError`; every
  * message names the property (`PointLight.position[1]`) and shows the value, cut short.
+ *
+ * Numbers reach the GPU as float32: a "finite" number here is one that stays finite as a float32,
+ * at most {@link FLOAT32_MAX} in size (a double up to half a float32 step above it rounds down to
+ * it). A larger one would be ∞ in a uniform or a texture, and NaN after the first ∞ − ∞ or ∞ × 0.
  */
 
-/** Throws unless `value` is a finite number. */
+/** The largest finite float32, (2 − 2^−23) × 2^127 ≈ 3.4028235e38. */
+export const FLOAT32_MAX = 3.4028234663852886e38;
+
+/** Whether `value` is a number that stays finite as a float32 (NaN, ±∞ and doubles beyond {@link FLOAT32_MAX} do not). */
+export function isFloat32Finite(value: number): boolean {
+  // Number.isFinite first: it takes numbers only, where Math.fround would turn '' into 0.
+  return Number.isFinite(value) && Number.isFinite(Math.fround(value));
+}
+
+/** Throws unless `value` is a number finite as a float32 (see above). */
 export function assertFinite(name: string, value: number): number {
   if (typeof value !== 'number') throw new TypeError(`${name} must be a finite number, got ${describeValue(value)}`);
   if (!Number.isFinite(value)) throw new RangeError(`${name} must be a finite number, got ${describeValue(value)}`);
+  if (!isFloat32Finite(value)) throw new RangeError(`${name} must be at most ${FLOAT32_MAX} in size (a float32, as the GPU takes it), got ${value}`);
   return value;
 }
 
@@ -73,8 +87,8 @@ export function frozenVec2(name: string, value: Vec2Like): readonly [number, num
 /** Validates `x` and `y` as the components of the 2D vector `name` and returns them as a new frozen pair. */
 export function frozenPair(name: string, x: number, y: number): readonly [number, number] {
   // The labels are built only for a message: this runs for every point and every move.
-  if (!Number.isFinite(x)) assertFinite(`${name}[0]`, x);
-  if (!Number.isFinite(y)) assertFinite(`${name}[1]`, y);
+  if (!isFloat32Finite(x)) assertFinite(`${name}[0]`, x);
+  if (!isFloat32Finite(y)) assertFinite(`${name}[1]`, y);
   return Object.freeze([x, y] as const);
 }
 
@@ -94,7 +108,7 @@ export function vec2ListCoords(name: string, list: ArrayLike<Vec2Like>): Float64
 }
 
 function isFinitePair(value: Vec2Like): boolean {
-  return typeof value === 'object' && value !== null && value.length >= 2 && Number.isFinite(value[0]) && Number.isFinite(value[1]);
+  return typeof value === 'object' && value !== null && value.length >= 2 && isFloat32Finite(value[0]) && isFloat32Finite(value[1]);
 }
 
 /** Validates an RGB colour (finite, non-negative channels) and returns it as a new frozen triple. */

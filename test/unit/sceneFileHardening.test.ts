@@ -127,11 +127,39 @@ describe('values the GPU cannot take', () => {
     }
     expect(readScene({ ...fullScene(), look: { ...fullScene().look, lightmapBlur: 0.125 } }).look.lightmapBlur).toBe(0.125);
   });
+
+  it('refuses a number beyond float32 in every numeric field, naming its path (a pair or triple by its own)', () => {
+    /** Every number of `value` with the path readScene names for it. */
+    const numbers = (value: unknown, path: string, out: [string[], string][], keys: string[] = []): [string[], string][] => {
+      if (typeof value === 'number') out.push([keys, path]);
+      else if (Array.isArray(value)) {
+        // Pairs and triples are read whole; a list of hull indices element by element.
+        const ofNumbers = keys[keys.length - 1] !== 'ignoredHulls' && value.every((item) => typeof item === 'number');
+        value.forEach((item, i) => numbers(item, ofNumbers ? path : `${path}[${i}]`, out, [...keys, String(i)]));
+      } else if (typeof value === 'object' && value !== null) {
+        for (const [key, item] of Object.entries(value)) numbers(item, path === '' ? key : `${path}.${key}`, out, [...keys, key]);
+      }
+      return out;
+    };
+    const fields = numbers(fullScene(), '', []);
+    expect(fields.length).toBeGreaterThan(60);
+    for (const [keys, path] of fields) {
+      for (const huge of [1e39, -1e39, Number.MAX_VALUE]) {
+        const scene = fullScene() as unknown as Record<string, unknown>;
+        let parent = scene;
+        for (const key of keys.slice(0, -1)) parent = parent[key] as Record<string, unknown>;
+        parent[keys[keys.length - 1]] = huge;
+        expect(errorOf(scene).path, `${keys.join('.')} = ${huge}`).toBe(path);
+      }
+    }
+    expect(errorOf({ ...fullScene(), look: { ...fullScene().look, exposure: 1e39 } }).message)
+      .toBe('look.exposure: expected a number at most 3.4028234663852886e+38 in size (a float32), got 1e+39');
+  });
 });
 
 describe('every scene that loads can be saved', () => {
-  it('keeps a textured light that follows its range, even when twice the range overflows', () => {
-    const scene = readScene({ format: 'penumbra-scene', version: 1, lights: [{ kind: 'textured', position: [0, 0], cookie: 'flame', range: 1e308 }] });
+  it('keeps a textured light that follows its range, even when twice the range overflows float32', () => {
+    const scene = readScene({ format: 'penumbra-scene', version: 1, lights: [{ kind: 'textured', position: [0, 0], cookie: 'flame', range: 3e38 }] });
     const text = saveAsBuilt(scene);
     expect(readScene(text)).toEqual(scene);
   });

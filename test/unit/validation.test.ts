@@ -59,6 +59,25 @@ describe('light validation', () => {
     expect([light.shadowLayers, hull.layers]).toEqual([0x80000000, 0]);
   });
 
+  it('rejects numbers that are not finite as float32, what the GPU takes, in every kind of field', () => {
+    // The largest float32 is (2 − 2^−23) × 2^127; a double rounds down to it up to half a step above.
+    const largest = (2 - 2 ** -23) * 2 ** 127, halfStep = 2 ** 103;
+    const light = new PointLight();
+    for (const value of [largest, largest + halfStep / 2, -largest]) {
+      light.rotation = value;
+      light.setPosition(value, -value);
+      new Hull([[0, 0], [value, 0], [0, 1]], { scale: value, position: [value, 0] });
+    }
+    for (const value of [largest + halfStep, 1e39, -1e39, Number.MAX_VALUE]) {
+      expectRangeError(() => { light.rotation = value; }, 'PointLight.rotation', String(value));
+      expectRangeError(() => light.setPosition(0, value), 'PointLight.position[1]', String(value));
+      expectRangeError(() => { light.shadowColor = [0, 0, Math.abs(value)]; }, 'PointLight.shadowColor[2]', String(Math.abs(value)));
+      expectRangeError(() => new Hull([[0, 0], [value, 0], [0, 1]]), 'Hull.points[1][0]', String(value));
+      expectRangeError(() => new Hull([[0, 0], [1, 0], [0, 1]], { scale: [1, value] }), 'Hull.scale', String(value));
+    }
+    expect(() => { light.range = 1e39; }).toThrow(new RangeError('PointLight.range must be at most 3.4028234663852886e+38 in size (a float32, as the GPU takes it), got 1e+39'));
+  });
+
   it('keeps the previous value after a rejected assignment', () => {
     const light = new PointLight({ range: 50 });
     expect(() => { light.range = -1; }).toThrow(RangeError);
