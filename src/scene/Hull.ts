@@ -9,7 +9,7 @@ export interface HullOptions {
   origin?: Vec2Like;
   /** Rotation in radians around `origin` (positive turns +x towards +y). Default `0`. */
   rotation?: number;
-  /** Scale around `origin`, one factor or `[sx, sy]`; a negative factor mirrors. Default `1`. */
+  /** Scale around `origin` along the local axes (before the rotation), one factor or `[sx, sy]`; a negative factor mirrors. Default `1`. */
   scale?: number | Vec2Like;
   /** A disabled hull casts no shadow. Default `true`. */
   enabled?: boolean;
@@ -29,7 +29,9 @@ export interface HullOptions {
 /**
  * A polygon that blocks light, or with `closed: false` an open polyline that does. Points are in
  * the hull's local space, in either winding; `position`, `origin`, `rotation` and `scale` place
- * them in the world.
+ * them in the world: scaled first, along the local axes, then rotated, both around `origin`, then
+ * moved so that `origin` lands on `position` — world = position + R(rotation) · S(scale) · (point −
+ * origin). So `[2, 1]` stretches the hull along its own x axis, whatever its rotation.
  *
  * A polygon with fewer than 3 distinct points, crossing edges or zero area is kept but flagged
  * `valid === false` and ignored by the renderer; giving it correct points makes it valid again.

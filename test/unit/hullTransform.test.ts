@@ -35,6 +35,13 @@ describe('Hull transforms', () => {
     expect(hull.worldBounds).toEqual(Float64Array.of(96, 92, 100, 100));
   });
 
+  it('scales along the local axes before it rotates, as documented', () => {
+    const hull = new Hull([[0, 0], [1, 0], [0, 1]], { scale: [2, 1], rotation: Math.PI / 2 });
+    // (1, 0) → ×[2, 1] (2, 0) → turned +90° (0, 2); rotated first it would end at (0, 1).
+    const world = worldPoints(hull).map(([x, y]) => [Math.round(x * 1e9) / 1e9 + 0, Math.round(y * 1e9) / 1e9 + 0]);
+    expect(sameCycle(world as [number, number][], [[0, 0], [0, 2], [-1, 0]])).toBe(true);
+  });
+
   it('mirrors with a negative scale and keeps counter-clockwise order', () => {
     const hull = new Hull(triangle, { scale: [-1, 1] });
     const points = worldPoints(hull);
