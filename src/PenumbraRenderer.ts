@@ -9,14 +9,14 @@ import { LightShapes } from './passes/LightShapes';
 import { BlurPass } from './passes/BlurPass';
 import { CompositePass, CompositeUnits } from './passes/CompositePass';
 import { HullMaskPass } from './passes/HullMaskPass';
-import { Dithering, MAX_BLUR_RADIUS, ToneMapping } from './passes/compositeLayout';
+import { Dithering, MAX_BLUR_RADIUS, MIN_BLUR_RADIUS, ToneMapping } from './passes/compositeLayout';
 import { DebugPass } from './passes/DebugPass';
 import { LightPass, type Surface } from './passes/LightPass';
 import { LIGHT_TEXTURE_UNITS, SHADOW_TEXTURE_UNITS } from './passes/lightLayout';
 import { ShadowTextures } from './shadow/ShadowTextures';
 import { LightmapAttachments, SceneAttachments } from './passes/surfaceLayout';
 import { Hull } from './scene/Hull';
-import { IlluminationQuery, type Illumination, type IlluminationOptions } from './scene/illumination';
+import { checkIlluminationQuery, IlluminationQuery, type Illumination, type IlluminationOptions } from './scene/illumination';
 import { describeTexture, DirectionalLight, Light, TexturedLight, type LightOptions } from './scene/lights';
 import { ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, describeValue, frozenColor, type ColorLike } from './scene/validate';
 
@@ -329,7 +329,8 @@ export class PenumbraRenderer {
    * Gaussian of standard deviation radius / 2 cut at the radius, for a softer look. A look, not a
    * physics: it also spreads light past hull edges and into umbrae. The first frame with a blur
    * compiles its program and makes one more lightmap-sized texture; the blur costs two full-lightmap
-   * passes a frame.
+   * passes a frame. A radius below 1/8 would change no pixel (its Gaussian's neighbour
+   * weights are below the smallest float) and is off: it reads back as 0.
    */
   get lightmapBlur(): number {
     return this._lightmapBlur;
@@ -337,7 +338,7 @@ export class PenumbraRenderer {
   set lightmapBlur(value: number) {
     assertNonNegative('PenumbraRenderer.lightmapBlur', value);
     if (value > MAX_BLUR_RADIUS) throw new RangeError(`PenumbraRenderer.lightmapBlur must be at most ${MAX_BLUR_RADIUS}, got ${value}`);
-    this._lightmapBlur = value;
+    this._lightmapBlur = value < MIN_BLUR_RADIUS ? 0 : value;
   }
 
   /**
@@ -478,7 +479,7 @@ export class PenumbraRenderer {
    * dark? can the guard see them?). It reflects the lights and hulls as they are now, every change
    * included, whether or not a frame was drawn since, and works while the context is lost.
    *
-   * Per light: colour × intensity × the linear distance falloff (× the cone factor of a
+   * Per light: colour × intensity × its distance `falloff` curve (× the cone factor of a
    * {@link Spotlight}; × the cookie of a {@link TexturedLight}, which lives on the GPU: see
    * {@link IlluminationOptions.cookie}) × what its shadows let through: the exact fraction of its
    * disk visible from the point past every hull that shadows it (SPEC §6; disks may overlap hulls,
@@ -510,12 +511,13 @@ export class PenumbraRenderer {
    * @param options What to include; see {@link IlluminationOptions}.
    * @param out A result to overwrite and return instead of a new one.
    * @returns The light at the point: `out` when given.
-   * @throws RangeError when x or y is not a finite number.
+   * @throws RangeError when x or y is not a finite number; TypeError or RangeError, naming the field,
+   *   for an option or an `out` of the wrong shape, and for a cookie result that is not a number.
    */
   illuminationAt(x: number, y: number, options?: IlluminationOptions, out?: Illumination): Illumination {
     assertFinite('PenumbraRenderer.illuminationAt x', x);
     assertFinite('PenumbraRenderer.illuminationAt y', y);
-    if (options?.layers !== undefined) assertLayerMask('PenumbraRenderer.illuminationAt: options.layers', options.layers);
+    checkIlluminationQuery('PenumbraRenderer.illuminationAt', options, out);
     return (this.illumination ??= new IlluminationQuery()).at(this._lights, this._hulls, this._ambient, x, y, options, out);
   }
 
@@ -530,13 +532,14 @@ export class PenumbraRenderer {
    * @param y World y of the point.
    * @param threshold Luminance to exceed. Default `0.1`.
    * @param options The cookie of textured lights and the content layers (see {@link IlluminationOptions}).
-   * @throws RangeError when x, y or threshold is not a finite number.
+   * @throws RangeError when x, y or threshold is not a finite number; TypeError or RangeError, naming
+   *   the field, for an option of the wrong type and for a cookie result that is not a number.
    */
   isLit(x: number, y: number, threshold = 0.1, options?: Pick<IlluminationOptions, 'cookie' | 'layers'>): boolean {
     assertFinite('PenumbraRenderer.isLit x', x);
     assertFinite('PenumbraRenderer.isLit y', y);
     assertFinite('PenumbraRenderer.isLit threshold', threshold);
-    if (options?.layers !== undefined) assertLayerMask('PenumbraRenderer.isLit: options.layers', options.layers);
+    checkIlluminationQuery('PenumbraRenderer.isLit', options);
     const layers = (options?.layers ?? ALL_LAYERS) | 0;
     return (this.illumination ??= new IlluminationQuery()).isLit(this._lights, this._hulls, x, y, threshold, options?.cookie ?? null, layers);
   }
