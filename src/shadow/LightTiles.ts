@@ -89,6 +89,8 @@ export class LightTiles {
   private general = new Int32Array(TILE_GRID);
   /** The held tiles, kept and shown. */
   private keptHeld = new Int32Array(TILE_GRID);
+  /** For an Illuminated light, the tiles wholly inside a still record: lit, whatever else hides the disk (kept only). */
+  private keptInside = new Int32Array(TILE_GRID);
   private held = new Int32Array(TILE_GRID);
   /** Per row, its tiles of each class. */
   private counts = new Int32Array(TILE_CLASS_COUNT);
@@ -96,6 +98,8 @@ export class LightTiles {
   private readonly shadowed = new Int32Array(TILE_GRID);
   private readonly darkened = new Int32Array(TILE_GRID);
   private readonly occupied = new Int32Array(TILE_GRID);
+  /** Per tile row of the light being classified, for an Illuminated light: the tiles wholly inside a record. */
+  private readonly inside = new Int32Array(TILE_GRID);
   /** Scratch of the near-first order of a light's still hulls: the order, each hull's bucket, where each bucket starts. */
   private order = new Int32Array(0);
   private bucketOfHull = new Uint8Array(0);
@@ -146,6 +150,8 @@ export class LightTiles {
   private readonly tangentY = new Float64Array(2);
   private shadowPlaneCount = 0;
   private readonly umbraPlanes = new Float64Array(3 * (3 * RECORD_POINTS));
+  /** The half-planes of the loaded record's inside, its edges moved in by the slack. */
+  private readonly insidePlanes = new Float64Array(3 * RECORD_POINTS);
   private umbraPlaneCount = 0;
   /** The plane being added, `[a, b, c]`. */
   private readonly plane = new Float64Array(3);
@@ -215,6 +221,7 @@ export class LightTiles {
     this.shadowed.fill(0);
     this.darkened.fill(0);
     this.occupied.fill(0);
+    this.inside.fill(0);
   }
 
   /**
@@ -227,12 +234,16 @@ export class LightTiles {
     const order = this.nearestFirst(geometry, indices, count);
     for (let i = 0; i < count; i++) {
       const hull = order[i];
+      const first = geometry.firstRecords[hull], end = first + geometry.recordCounts[hull];
       if (this.boundsWithin(geometry.worldBounds, hull, this.darkened, 0)) {
         if (!this.solid) this.markBox(geometry.worldBounds, hull);
+        if (this.illuminated()) for (let record = first; record < end; record++) this.markInside(geometry.records, record);
         continue;
       }
-      for (let record = geometry.firstRecords[hull], end = record + geometry.recordCounts[hull]; record < end; record++) {
-        if (!this.loadRecord(geometry.records, record)) continue;
+      for (let record = first; record < end; record++) {
+        const apart = this.loadRecord(geometry.records, record);
+        if (this.illuminated()) this.markInsideLoaded();
+        if (!apart) continue;
         this.markShadowRegion();
         this.markUmbra();
         if (!this.solid) this.markRecordBox();
@@ -276,11 +287,13 @@ export class LightTiles {
     const at = row * TILE_GRID;
     for (let j = 0; j < TILE_GRID; j++) {
       this.writeOutside(at, j);
-      const outside = this.outside[at + j], dark = this.darkened[j] & ~outside & (this.solid ? FULL_ROW : ~this.occupied[j]);
-      const held = this.illuminated() ? this.darkened[j] & this.occupied[j] & ~outside : 0;
+      const outside = this.outside[at + j], inside = this.inside[j];
+      const dark = this.darkened[j] & ~outside & (this.solid ? FULL_ROW : ~this.occupied[j]);
+      const held = this.illuminated() ? this.darkened[j] & this.occupied[j] & ~outside & ~inside : 0;
       this.keptDark[at + j] = dark;
       this.keptHeld[at + j] = held;
-      this.keptExact[at + j] = this.shadowed[j] & ~dark & ~held & ~outside;
+      this.keptInside[at + j] = inside;
+      this.keptExact[at + j] = this.shadowed[j] & ~dark & ~held & ~outside & ~inside;
       this.keptGeneral[at + j] = this.keptExact[at + j] & this.generalMask(j);
     }
     this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, at, true);
@@ -311,7 +324,7 @@ export class LightTiles {
     const at = row * TILE_GRID;
     for (let j = 0; j < TILE_GRID; j++) {
       this.writeOutside(at, j);
-      this.keptDark[at + j] = this.keptHeld[at + j] = 0;
+      this.keptDark[at + j] = this.keptHeld[at + j] = this.keptInside[at + j] = 0;
       this.keptExact[at + j] = this.keptGeneral[at + j] = FULL_ROW & ~this.outside[at + j];
     }
     this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, at, true);
@@ -326,7 +339,7 @@ export class LightTiles {
     const at = row * TILE_GRID, dark = this.nextDark, exact = this.nextExact;
     for (let j = 0; j < TILE_GRID; j++) {
       dark[j] = this.solid ? this.keptDark[at + j] : 0;
-      exact[j] = FULL_ROW & ~this.outside[at + j] & ~dark[j];
+      exact[j] = FULL_ROW & ~this.outside[at + j] & ~dark[j] & ~this.keptInside[at + j];
     }
     this.show(row, dark, exact, exact, this.noTiles, 0, false);
   }
@@ -356,7 +369,7 @@ export class LightTiles {
     const illuminated = this.illuminated();
     for (let j = 0; j < TILE_GRID; j++) {
       const keptDark = this.keptDark[at + j], keptExact = this.keptExact[at + j], keptHeld = this.keptHeld[at + j];
-      const lit = FULL_ROW & ~(this.outside[at + j] | keptDark | keptExact | keptHeld);
+      const keptInside = this.keptInside[at + j], lit = FULL_ROW & ~(this.outside[at + j] | keptDark | keptExact | keptHeld | keptInside);
       const lost = this.solid ? 0 : keptDark & this.occupied[j];
       dark[j] = keptDark & ~lost;
       held[j] = keptHeld | (illuminated ? lost : 0);
@@ -517,6 +530,7 @@ export class LightTiles {
     this.keptGeneral = grown(this.keptGeneral, words);
     this.general = grown(this.general, words);
     this.keptHeld = grown(this.keptHeld, words);
+    this.keptInside = grown(this.keptInside, words);
     this.held = grown(this.held, words);
     const rectangles = new Uint16Array(rows * ROW_INDICES), used = new Int32Array(rows), dirty = new Uint8Array(rows);
     rectangles.set(this.rectangles);
@@ -549,6 +563,20 @@ export class LightTiles {
    * has no umbra taken).
    */
   private loadRecord(records: Float32Array, record: number): boolean {
+    this.loadPoints(records, record);
+    this.shadowPlaneCount = 0;
+    this.umbraPlaneCount = 0;
+    if (this.diskMeetsRecord()) {
+      this.shadowed.fill(FULL_ROW);
+      this.diskMet = true;
+      return false;
+    }
+    this.findPlanes();
+    return true;
+  }
+
+  /** Loads the record's distinct corners into `xs`, `ys` and `pointCount`. */
+  private loadPoints(records: Float32Array, record: number): void {
     const xs = this.xs, ys = this.ys;
     let n = 0;
     for (let k = 0; k < RECORD_POINTS; k++) {
@@ -560,15 +588,43 @@ export class LightTiles {
       n++;
     }
     this.pointCount = n;
-    this.shadowPlaneCount = 0;
-    this.umbraPlaneCount = 0;
-    if (this.diskMeetsRecord()) {
-      this.shadowed.fill(FULL_ROW);
-      this.diskMet = true;
-      return false;
+  }
+
+  /** Marks in `inside` the tiles wholly inside the record (see {@link LightTiles.markInsideLoaded}). */
+  private markInside(records: Float32Array, record: number): void {
+    this.loadPoints(records, record);
+    this.markInsideLoaded();
+  }
+
+  /**
+   * Marks in `inside` the tiles wholly inside the loaded record, its edges moved in by the slack:
+   * an Illuminated light lights a pixel inside a hull fully, whatever hides the disk from it (the
+   * shader's walk finds the record holding it). A record too small to hold a tile is passed over.
+   */
+  private markInsideLoaded(): void {
+    const xs = this.xs, ys = this.ys, n = this.pointCount, slack = this.slack;
+    if (n < 3) return;
+    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+    for (let k = 0; k < n; k++) {
+      minX = Math.min(minX, xs[k]);
+      minY = Math.min(minY, ys[k]);
+      maxX = Math.max(maxX, xs[k]);
+      maxY = Math.max(maxY, ys[k]);
     }
-    this.findPlanes();
-    return true;
+    if (maxX - minX < this.tileWidth + 2 * slack || maxY - minY < this.tileHeight + 2 * slack) return;
+    const planes = this.insidePlanes;
+    let count = 0;
+    for (let k = 0; k < n; k++) {
+      const ax = xs[k], ay = ys[k], ex = xs[(k + 1) % n] - ax, ey = ys[(k + 1) % n] - ay, length = Math.sqrt(ex * ex + ey * ey);
+      // The outward normal of a counter-clockwise edge; inside lies a slack within.
+      const nx = ey / length, ny = -ex / length;
+      planes[3 * count] = nx;
+      planes[3 * count + 1] = ny;
+      planes[3 * count + 2] = nx * ax + ny * ay - slack;
+      count++;
+    }
+    this.clipBox(planes, count);
+    this.markCovered(this.inside);
   }
 
   /** Whether the disk, widened by the slack, meets the loaded record: its centre inside, or within a radius of an edge. */

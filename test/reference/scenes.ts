@@ -125,6 +125,10 @@ export const REFERENCE_SCENES: readonly ReferenceScene[] = [
   // one half in it.
   { name: 'crates behind a wall, Illuminated (r=6)', width: WIDTH, height: HEIGHT, shadowType: 'illuminated',
     lights: [{ position: [30, 60], range: 150, radius: 6 }], hulls: [box(60, 30, 8, 60), box(100, 50, 12, 12), box(120, 70, 10, 10), box(110, 88, 10, 10)] },
+  // Blocks several tiles wide behind a wall and at its edge: an Illuminated light's tiles wholly
+  // inside a hull are lit, in the umbra and in the penumbra alike.
+  { name: 'blocks behind a wall, Illuminated (r=6)', width: WIDTH, height: HEIGHT, shadowType: 'illuminated',
+    lights: [{ position: [30, 60], range: 150, radius: 6 }], hulls: [box(60, 30, 8, 60), box(90, 40, 40, 40), box(80, 92, 30, 20)] },
   { name: '2×2 touching crates, two lights (r=8, r=6)', width: WIDTH, height: HEIGHT,
     lights: [
       { position: [40, 35], range: 130, radius: 8 },

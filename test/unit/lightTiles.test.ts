@@ -204,6 +204,23 @@ describe('LightTiles', () => {
     expect(solid[tile]).toBe(TILE_CLASSES.dark);
     expect(lit[tile]).toBe(TILE_CLASSES.held);
   });
+
+  it('lights the tiles wholly inside a hull for an Illuminated light, in a wall\'s shadow or in its penumbra', () => {
+    // A torch before a wall, a large block behind the wall and one beside its edge.
+    const hulls = [box(120, 70, 8, 60), box(150, 80, 40, 40), box(140, 140, 40, 30)];
+    const c: Case = { hulls, centre: [100, 100], radius: 4, reach: 100, solid: false };
+    const { wrong, counts } = check(c);
+    expect(wrong).toEqual([]);
+    const { classes, bounds } = classify(c);
+    const tw = (bounds[2] - bounds[0]) / TILE_GRID;
+    const tileAt = (x: number, y: number) => classes[Math.floor((y - bounds[1]) / tw) * TILE_GRID + Math.floor((x - bounds[0]) / tw)];
+    // Well inside each block: lit; a Solid light's are dark and exact there.
+    expect(tileAt(170, 100)).toBe(TILE_CLASSES.lit);
+    expect(tileAt(160, 155)).toBe(TILE_CLASSES.lit);
+    const solid = classify({ ...c, solid: true }).classes;
+    expect(solid[Math.floor((100 - bounds[1]) / tw) * TILE_GRID + Math.floor((170 - bounds[0]) / tw)]).toBe(TILE_CLASSES.dark);
+    expect(counts[TILE_CLASSES.lit]).toBeGreaterThan(0);
+  });
 });
 
 describe('LightTiles rectangles', () => {
