@@ -2,7 +2,7 @@ import { mat4, type ReadonlyMat4 } from 'gl-matrix';
 import { FramePlan } from './shadow/FramePlan';
 import { ShadowGeometry } from './shadow/ShadowGeometry';
 import { TILE_CLASSES } from './shadow/shadowLayout';
-import { isWebGL2, supportsFloatTargets } from './gl/capabilities';
+import { isWebGL2, notWebGL2Error, supportsFloatTargets, WEBGL2_CONTEXT_FIX } from './gl/capabilities';
 import { HostDrawBuffers, HostState } from './gl/HostState';
 import { RenderTarget, type TargetFormat } from './gl/RenderTarget';
 import { LightShapes } from './passes/LightShapes';
@@ -250,7 +250,7 @@ export class PenumbraRenderer {
   private illumination: IlluminationQuery | null = null;
 
   constructor(gl: WebGL2RenderingContext, options: PenumbraRendererOptions = {}) {
-    if (!isWebGL2(gl)) throw new TypeError('penumbra: PenumbraRenderer needs a WebGL2 rendering context');
+    if (!isWebGL2(gl)) throw notWebGL2Error('PenumbraRenderer', gl, WEBGL2_CONTEXT_FIX);
     this.gl = gl;
     this.debug = options.debug ?? false;
     this.measureCpuTime = options.measureCpuTime ?? false;
