@@ -485,8 +485,8 @@ export class PenumbraRenderer {
    * disk visible from the point past every hull that shadows it (SPEC §6; disks may overlap hulls,
    * radius 0 gives hard shadows), mixed with its `shadowColor` and `shadowStrength`. It follows
    * `castsShadows`, `ignoredHulls`, `shadowLayers` against `Hull.layers`, `ShadowType` for points
-   * inside a hull (Solid: dark, Illuminated: lit), open hulls, disabled lights and hulls, and leaves
-   * out a light whose centre is inside a hull that shadows it. The sum adds `ambientColor` unless
+   * inside a hull (Solid: dark, Illuminated: lit), open hulls, and disabled lights and hulls; a
+   * light whose centre is inside a hull shines with the part of its disk outside the hulls. The sum adds `ambientColor` unless
    * `includeAmbient` is false. World coordinates, whatever the view: a point off screen gets what
    * it would get on screen. It matches the rendered lightmap at that point to within the lightmap's
    * precision (0.005 or better at the 950,000 pixels the headless-gl test compares); with

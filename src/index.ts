@@ -17,6 +17,7 @@ export { writeScene } from './format/writeScene';
 export { SceneFormatError } from './format/SceneFormatError';
 export { createSceneObjects, describeScene, type SceneObjects, type CookieResolver, type SceneDescriptionInput } from './format/sceneObjects';
 export {
-  SCENE_FORMAT, SCENE_FORMAT_VERSION, SCENE_MAX_HULL_POINTS, type SceneDocument, type SceneCamera, type SceneHull, type SceneLight,
-  type SceneLightBase, type ScenePointLight, type SceneSpotlight, type SceneTexturedLight, type SceneDirectionalLight, type SceneLook,
+  SCENE_FORMAT, SCENE_FORMAT_VERSION, SCENE_MAX_HULL_POINTS, SCENE_MAX_APP_DEPTH, SCENE_MAX_APP_SIZE, SCENE_SCHEMA_URL, type SceneDocument,
+  type SceneCamera, type SceneHull, type SceneLight, type SceneLightBase, type ScenePointLight, type SceneSpotlight, type SceneTexturedLight,
+  type SceneDirectionalLight, type SceneLook, type SceneAppData, type JsonValue,
 } from './format/SceneDocument';

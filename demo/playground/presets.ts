@@ -6,8 +6,8 @@ type Point = [number, number];
 
 function scene(ambient: [number, number, number], center: Point, zoom: number, hulls: SceneHull[], lights: SceneLight[]): SceneDocument {
   return {
-    format: 'penumbra-scene', version: 2, ambient, camera: { center, zoom }, hulls, lights,
-    look: { exposure: 1, toneMapping: 'none', dithering: 'none', lightmapBlur: 0 },
+    format: 'penumbra-scene', version: 3, ambient, camera: { center, zoom }, hulls, lights,
+    look: { exposure: 1, toneMapping: 'none', dithering: 'none', lightmapBlur: 0 }, app: {},
   };
 }
 

@@ -8,10 +8,30 @@
 /** The value of a scene file's `format` field. */
 export const SCENE_FORMAT = 'penumbra-scene';
 /**
- * The format version this package writes. {@link readScene} also reads version 1 files (the same
- * without `hulls[i].closed`) and rejects any other version.
+ * The format version this package writes. {@link readScene} also reads versions 1 and 2 (the same
+ * without some fields, see `docs/scene-format.md`) and rejects any other version.
  */
-export const SCENE_FORMAT_VERSION = 2;
+export const SCENE_FORMAT_VERSION = 3;
+
+/**
+ * The `$schema` that {@link writeScene} writes at the top of a file: the JSON Schema of the scene
+ * format shipped in the package (`penumbra-gl/scene.schema.json`), so editors validate and
+ * complete scene files. {@link readScene} accepts any string there and ignores it.
+ */
+export const SCENE_SCHEMA_URL = 'https://unpkg.com/penumbra-gl/schema/scene.schema.json';
+
+/**
+ * How deep an application's data ({@link SceneDocument.app}) may nest arrays and objects: an
+ * application's value that is an object of numbers is 1 deep. {@link readScene} rejects deeper
+ * data, which also bounds its recursion.
+ */
+export const SCENE_MAX_APP_DEPTH = 32;
+
+/**
+ * The most characters all application data ({@link SceneDocument.app}) may take written as compact
+ * JSON; {@link readScene} rejects more as soon as it has counted past it (about 1 MB).
+ */
+export const SCENE_MAX_APP_SIZE = 1_000_000;
 
 /**
  * The most points a hull of a scene file may have; {@link readScene} rejects a file with more
@@ -21,11 +41,21 @@ export const SCENE_FORMAT_VERSION = 2;
  */
 export const SCENE_MAX_HULL_POINTS = 20_000;
 
-/** A whole scene file, version 2 (what {@link readScene} returns for a version 1 file too). */
+/** A JSON value, as `JSON.parse` returns it: application data ({@link SceneDocument.app}) is made of these. */
+export type JsonValue = null | boolean | number | string | JsonValue[] | { [key: string]: JsonValue };
+
+/**
+ * Application data of a scene file: each application's own JSON value, keyed by its name (its
+ * package name, or a package name and a path such as `"penumbra-gl/playground"`). The library
+ * neither reads nor changes it: it is kept verbatim. Keep a version inside your value to evolve it.
+ */
+export type SceneAppData = { [application: string]: JsonValue };
+
+/** A whole scene file, version 3 (what {@link readScene} returns for a version 1 or 2 file too). */
 export interface SceneDocument {
   /** Always `"penumbra-scene"`. */
   format: typeof SCENE_FORMAT;
-  /** Always `2`. */
+  /** Always `3`. */
   version: typeof SCENE_FORMAT_VERSION;
   /** Colour of unlit areas `[r, g, b]`, channels ≥ 0. Optional, default `[0.2, 0.2, 0.2]`. */
   ambient: [number, number, number];
@@ -41,6 +71,13 @@ export interface SceneDocument {
    * not in version 1 files.
    */
   look: SceneLook;
+  /**
+   * Data that applications keep with the scene (what an editor shows, a game's own fields), by
+   * application name; read and written without loss. Any JSON, at most {@link SCENE_MAX_APP_DEPTH}
+   * arrays and objects deep and {@link SCENE_MAX_APP_SIZE} characters in all; names are non-empty.
+   * Optional, default `{}`; not in version 1 or 2 files.
+   */
+  app: SceneAppData;
 }
 
 /** The look of a file that has none: the renderer's defaults. @internal */

@@ -2,6 +2,7 @@ import {
   booleanField, childPath, choiceField, colorField, layersField, nameField, numberField, positiveField, readArray, readObject,
   readVec2, vec2Field, type Fields,
 } from './fields';
+import { readAppData } from './appData';
 import { MAX_BLUR_RADIUS, MIN_BLUR_RADIUS } from '../passes/compositeLayout';
 import { describeValue, shortened } from '../scene/validate';
 import {
@@ -10,7 +11,8 @@ import {
 } from './SceneDocument';
 import { SceneFormatError } from './SceneFormatError';
 
-const DOCUMENT_FIELDS = ['format', 'version', 'ambient', 'camera', 'hulls', 'lights', 'look'] as const;
+/** `$schema` names the file's JSON Schema for editors: allowed in every version, and ignored. */
+const DOCUMENT_FIELDS_V2 = ['$schema', 'format', 'version', 'ambient', 'camera', 'hulls', 'lights', 'look'] as const;
 const CAMERA_FIELDS = ['center', 'zoom'] as const;
 const LOOK_FIELDS = ['exposure', 'toneMapping', 'dithering', 'lightmapBlur'] as const;
 
@@ -30,18 +32,20 @@ interface VersionFields {
   readonly shadowTypes: readonly SceneLightBase['shadowType'][];
   readonly lightKinds: readonly SceneLight['kind'][];
 }
+const VERSION_2: VersionFields = {
+  document: DOCUMENT_FIELDS_V2,
+  hull: [...HULL_FIELDS_V1, 'closed', 'layers'],
+  light: [...LIGHT_FIELDS_V1, 'shadowLayers', 'shadowColor', 'shadowStrength', 'litLayers', 'falloff', 'height'],
+  shadowTypes: [...SHADOW_TYPES_V1, 'occluded'],
+  lightKinds: [...LIGHT_KINDS_V1, 'directional'],
+};
 const VERSION_FIELDS: Readonly<Record<number, VersionFields>> = {
   1: {
-    document: DOCUMENT_FIELDS.filter((field) => field !== 'look'), hull: HULL_FIELDS_V1, light: LIGHT_FIELDS_V1, shadowTypes: SHADOW_TYPES_V1,
+    document: DOCUMENT_FIELDS_V2.filter((field) => field !== 'look'), hull: HULL_FIELDS_V1, light: LIGHT_FIELDS_V1, shadowTypes: SHADOW_TYPES_V1,
     lightKinds: LIGHT_KINDS_V1,
   },
-  [SCENE_FORMAT_VERSION]: {
-    document: DOCUMENT_FIELDS,
-    hull: [...HULL_FIELDS_V1, 'closed', 'layers'],
-    light: [...LIGHT_FIELDS_V1, 'shadowLayers', 'shadowColor', 'shadowStrength', 'litLayers', 'falloff', 'height'],
-    shadowTypes: [...SHADOW_TYPES_V1, 'occluded'],
-    lightKinds: [...LIGHT_KINDS_V1, 'directional'],
-  },
+  2: VERSION_2,
+  [SCENE_FORMAT_VERSION]: { ...VERSION_2, document: [...DOCUMENT_FIELDS_V2, 'app'] },
 };
 /** The light fields a directional light lacks: it has no position and lights everything alike. */
 const POSITION_FIELDS: readonly string[] = ['position', 'range', 'radius', 'origin', 'falloff', 'height'];
@@ -58,7 +62,7 @@ type SharedLightFields = Omit<SceneDirectionalLight, 'kind' | 'angularSize' | 'e
  * @returns a complete {@link SceneDocument} with defaults filled in; it shares nothing with the input.
  * @throws {SceneFormatError} and nothing else, for any input, naming the path of the first bad
  *   field, e.g. `hulls[3].points[1]: expected two finite numbers, got [1,null]`; also for text
- *   that is not JSON, another `format`, a `version` other than 1 or {@link SCENE_FORMAT_VERSION}, a hole
+ *   that is not JSON, another `format`, a `version` other than 1 to {@link SCENE_FORMAT_VERSION}, a hole
  *   in an array, or a hull of more than {@link SCENE_MAX_HULL_POINTS} points. Bad values are shown
  *   cut to about 80 characters and 3 levels deep.
  */
@@ -80,10 +84,13 @@ function readDocument(input: unknown): SceneDocument {
   }
   const version = numberField(unchecked, 'version');
   if (!Object.hasOwn(VERSION_FIELDS, version)) {
-    throw new SceneFormatError('version', `unsupported version ${version} (this reader knows versions 1 and ${SCENE_FORMAT_VERSION})`);
+    throw new SceneFormatError('version', `unsupported version ${version} (this reader knows versions 1 to ${SCENE_FORMAT_VERSION})`);
   }
   const fields = VERSION_FIELDS[version];
   const root = readObject(input, '', fields.document);
+  if (root.value.$schema !== undefined && typeof root.value.$schema !== 'string') {
+    throw new SceneFormatError('$schema', `expected a string (the URL of the file's JSON Schema), got ${describeValue(root.value.$schema)}`);
+  }
   const hulls = readList(root.value.hulls, 'hulls', (value, path) => readHull(value, path, fields.hull));
   const lights = readList(root.value.lights, 'lights', (value, path) => readLight(value, path, fields, hulls.length));
   return {
@@ -94,6 +101,7 @@ function readDocument(input: unknown): SceneDocument {
     hulls,
     lights,
     look: root.value.look === undefined ? { ...DEFAULT_LOOK } : readLook(root.value.look, 'look'),
+    app: root.value.app === undefined ? {} : readAppData(root.value.app, 'app'),
   };
 }
 

@@ -1,7 +1,7 @@
 import { Hull } from '../scene/Hull';
 import { DirectionalLight, Light, PointLight, Spotlight, TexturedLight } from '../scene/lights';
 import { describeValue } from '../scene/validate';
-import { DEFAULT_LOOK, SCENE_FORMAT, SCENE_FORMAT_VERSION, type SceneCamera, type SceneDocument, type SceneLight, type SceneLook } from './SceneDocument';
+import { DEFAULT_LOOK, SCENE_FORMAT, SCENE_FORMAT_VERSION, type SceneAppData, type SceneCamera, type SceneDocument, type SceneLight, type SceneLook } from './SceneDocument';
 import { SceneFormatError } from './SceneFormatError';
 
 /** Lights and hulls built from a {@link SceneDocument}, ready for `renderer.addLight` / `addHull`. */
@@ -54,6 +54,8 @@ export interface SceneDescriptionInput extends SceneObjects {
   cookieName: (texture: WebGLTexture) => string;
   /** The look to store, e.g. the renderer itself (its `exposure`, `toneMapping`, `dithering`, `lightmapBlur`). Default: the renderer's defaults. */
   look?: Readonly<SceneLook>;
+  /** Application data to store, by application name (see {@link SceneDocument.app}); copied when written. Default: none. */
+  app?: Readonly<SceneAppData>;
 }
 
 /**
@@ -79,6 +81,7 @@ export function describeScene(input: SceneDescriptionInput): SceneDocument {
     })),
     lights: input.lights.map((light) => describeLight(light, hullIndex, input.cookieName)),
     look: describeLook(input.look ?? DEFAULT_LOOK),
+    app: { ...input.app },
   };
 }
 

@@ -140,7 +140,7 @@ export abstract class Light {
   private _litLayers = ALL_LAYERS;
   private _shadowColor: readonly [number, number, number] = Object.freeze([0, 0, 0] as const);
   private _shadowStrength = 1;
-  /** Hulls this light passes through: they neither shadow it nor make it skip when its centre is inside them. */
+  /** Hulls this light passes through: they do not shadow it, nor hide the part of its disk inside them. */
   readonly ignoredHulls = new Set<Hull>();
 
   constructor(options: LightOptions = {}) {

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import {
-  createSceneObjects, describeScene, DirectionalLight, Hull, readScene, SceneFormatError, Spotlight, TexturedLight, writeScene, type ScenePointLight,
+  createSceneObjects, describeScene, DirectionalLight, Hull, readScene, SCENE_MAX_APP_DEPTH, SCENE_MAX_APP_SIZE, SceneFormatError, Spotlight, TexturedLight,
+  writeScene, type ScenePointLight,
 } from '../../src/index';
 import { errorOf, fullScene } from './sceneDocuments';
 
@@ -49,11 +50,11 @@ describe('scene format', () => {
   it('reads version 1 files, which have no open hulls', () => {
     const v1 = { format: 'penumbra-scene', version: 1, hulls: [{ points: [[0, 0], [1, 0], [0, 1]] }] };
     const scene = readScene(v1);
-    expect(scene.version).toBe(2);
+    expect(scene.version).toBe(3);
     expect(scene.hulls[0].closed).toBe(true);
     expect(errorOf({ ...v1, hulls: [{ points: [[0, 0], [1, 0]], closed: false }] }).message)
       .toBe('hulls[0].closed: unknown field (allowed: points, position, origin, rotation, scale, enabled)');
-    expect(errorOf({ ...v1, look: { exposure: 2 } }).message).toBe('look: unknown field (allowed: format, version, ambient, camera, hulls, lights)');
+    expect(errorOf({ ...v1, look: { exposure: 2 } }).message).toBe('look: unknown field (allowed: $schema, format, version, ambient, camera, hulls, lights)');
     expect(errorOf({ ...v1, lights: [{ kind: 'point', position: [0, 0], shadowType: 'occluded' }] }).message)
       .toBe('lights[0].shadowType: expected one of "solid", "illuminated", got "occluded"');
     expect(readScene({ ...v1, version: 2, lights: [{ kind: 'point', position: [0, 0], shadowType: 'occluded' }] }).lights[0].shadowType).toBe('occluded');
@@ -72,7 +73,7 @@ describe('scene format', () => {
   });
 
   it('rejects an unknown version and another format', () => {
-    expect(errorOf(withField(["version"], 3)).message).toBe("version: unsupported version 3 (this reader knows versions 1 and 2)");
+    expect(errorOf(withField(['version'], 4)).message).toBe('version: unsupported version 4 (this reader knows versions 1 to 3)');
     expect(errorOf(withField(['version'], undefined)).message).toBe('version: required field is missing');
     expect(errorOf(withField(['format'], 'tiled-map')).message).toBe('format: expected "penumbra-scene", got "tiled-map"');
   });
@@ -85,7 +86,7 @@ describe('scene format', () => {
 
   // Every check of the reader, with the path it must name.
   const cases: [string, (string | number)[], unknown, string][] = [
-    ['unknown top-level field', ['light'], [], 'light: unknown field (allowed: format, version, ambient, camera, hulls, lights, look)'],
+    ['unknown top-level field', ['light'], [], 'light: unknown field (allowed: $schema, format, version, ambient, camera, hulls, lights, look, app)'],
     ['ambient not a triple', ['ambient'], [1, 1], 'ambient: expected three finite numbers ≥ 0, got [1,1]'],
     ['ambient negative', ['ambient'], [1, -1, 1], 'ambient: expected three finite numbers ≥ 0, got [1,-1,1]'],
     ['camera not an object', ['camera'], 3, 'camera: expected an object, got 3'],
@@ -174,10 +175,111 @@ describe('scene format', () => {
       .toBe('lights[0].ignoredHulls[0]: expected no hull index (the file has no hulls), got 1');
   });
 
+  it('writes $schema first, and reads a file with any $schema string the same as without', () => {
+    const text = writeScene(fullScene());
+    expect(Object.keys(JSON.parse(text))[0]).toBe('$schema');
+    expect(JSON.parse(text).$schema).toBe('https://unpkg.com/penumbra-gl/schema/scene.schema.json');
+    expect(readScene(withField(['$schema'], './my.schema.json'))).toEqual(fullScene());
+    expect(readScene({ $schema: 'x', format: 'penumbra-scene', version: 1 }).hulls).toEqual([]);
+    expect(errorOf(withField(['$schema'], 3)).message).toBe("$schema: expected a string (the URL of the file's JSON Schema), got 3");
+  });
+
   it('writeScene refuses a bad document instead of writing a file that would not load', () => {
     const scene = fullScene();
     scene.camera.zoom = -1;
     expect(() => writeScene(scene)).toThrow('camera.zoom: expected a number > 0, got -1');
+  });
+});
+
+describe('application data', () => {
+  /** Nested JSON of every kind, with keys that mean something to JavaScript. */
+  const gameData = {
+    version: 4, name: 'crypt', spawn: [[10, -2.5e-7], [1e300, 0]], flags: { lit: true, boss: false, note: null },
+    text: 'é "quoted" \\ \n \u0000 \ud800', empty: {}, none: [], ['__proto__']: { polluted: true }, constructor: 'x', toJSON: 1,
+    deep: [{ a: [{ b: [[[{}]]] }] }],
+  };
+  const withApp = (app: unknown) => withField(['app'], app);
+
+  it('keeps every application\'s data through writeScene and readScene, verbatim', () => {
+    const app = JSON.parse(JSON.stringify({ 'my-game': gameData, 'penumbra-gl/playground': { version: 1, art: 'showcase' }, other: [1, 'two'] }));
+    // JSON.parse made an own "__proto__" key, as it does for a file.
+    expect(Object.hasOwn(app['my-game'], '__proto__')).toBe(true);
+    const text = writeScene(readScene(withApp(app)));
+    const read = readScene(text);
+    expect(JSON.stringify(read.app)).toBe(JSON.stringify(app));
+    expect(read.app).toEqual(app);
+    expect(Object.getPrototypeOf(read.app['my-game'])).toBe(Object.prototype);
+    expect(({} as Record<string, unknown>).polluted).toBeUndefined();
+    expect(writeScene(read)).toBe(text);
+  });
+
+  it('shares nothing with the input, and is {} when absent', () => {
+    const app = { game: { list: [1, { x: 2 }] } };
+    const read = readScene(withApp(app));
+    app.game.list.push(3);
+    expect(read.app).toEqual({ game: { list: [1, { x: 2 }] } });
+    expect(readScene(withField(['app'], undefined)).app).toEqual({});
+  });
+
+  it('is carried by describeScene', () => {
+    const scene = fullScene();
+    const objects = createSceneObjects(scene, () => null as unknown as WebGLTexture);
+    const app = { game: gameData };
+    const described = describeScene({ ...objects, ambient: scene.ambient, camera: scene.camera, cookieName: () => 'flame', app });
+    expect(readScene(writeScene(described)).app).toEqual(JSON.parse(JSON.stringify(app)));
+  });
+
+  it('is not in version 1 or 2 files', () => {
+    const scene = { format: 'penumbra-scene', version: 2, app: { game: 1 } };
+    expect(errorOf(scene).message).toBe('app: unknown field (allowed: $schema, format, version, ambient, camera, hulls, lights, look)');
+    expect(errorOf({ ...scene, version: 1 }).path).toBe('app');
+  });
+
+  const cycle: Record<string, unknown> = { a: 1 };
+  cycle.self = { again: cycle };
+  class Spawn { x = 1; }
+  const getter = Object.defineProperty({}, 'score', { get: () => 1, enumerable: true });
+  const bad: [string, unknown, string][] = [
+    ['not an object', [1], 'app: expected an object, got [1]'],
+    ['an empty application name', { '': 1 }, 'app.: expected a non-empty application name, got ""'],
+    ['undefined', { game: { hp: undefined } }, 'app.game.hp: expected JSON data (an object, an array, a string, a finite number, true, false or null), got undefined'],
+    ['a function', { game: { onLoad: () => 1 } }, 'app.game.onLoad: expected JSON data (an object, an array, a string, a finite number, true, false or null), got a function'],
+    ['a symbol', { game: [Symbol('s')] }, 'app.game[0]: expected JSON data (an object, an array, a string, a finite number, true, false or null), got Symbol(s)'],
+    ['a bigint', { game: 10n }, 'app.game: expected JSON data (an object, an array, a string, a finite number, true, false or null), got 10n'],
+    ['NaN', { game: { x: NaN } }, 'app.game.x: expected a finite number (JSON has no NaN or Infinity), got NaN'],
+    ['Infinity', { game: [0, -Infinity] }, 'app.game[1]: expected a finite number (JSON has no NaN or Infinity), got -Infinity'],
+    ['a Date', { game: { saved: new Date(0) } }, 'app.game.saved: expected JSON data (an object, an array, a string, a finite number, true, false or null), got an object of class Date'],
+    ['a Map', { game: new Map() }, 'app.game: expected JSON data (an object, an array, a string, a finite number, true, false or null), got an object of class Map'],
+    ['a class instance', { game: new Spawn() }, 'app.game: expected JSON data (an object, an array, a string, a finite number, true, false or null), got an object of class Spawn'],
+    ['a hole', { game: [1, , 2] }, 'app.game[1]: expected a value, got a hole (an array element that is missing)'],
+    ['a getter', { game: getter }, 'app.game.score: expected a value, got a getter'],
+    ['a cycle', { game: cycle }, 'app.game.self.again: expected JSON data, got a cycle (a value that contains itself)'],
+  ];
+  it.each(bad)('rejects a value JSON cannot hold, naming its path: %s', (_name, app, message) => {
+    expect(errorOf(withApp(app)).message).toBe(message);
+  });
+
+  it(`bounds the nesting to SCENE_MAX_APP_DEPTH (${SCENE_MAX_APP_DEPTH}) arrays and objects`, () => {
+    const nested = (depth: number): unknown => (depth === 0 ? 0 : depth % 2 ? [nested(depth - 1)] : { k: nested(depth - 1) });
+    expect(readScene(withApp({ game: nested(SCENE_MAX_APP_DEPTH) })).app.game).toEqual(nested(SCENE_MAX_APP_DEPTH));
+    const error = errorOf(withApp({ game: nested(SCENE_MAX_APP_DEPTH + 1) }));
+    expect(error.message).toMatch(/^app\.game(\[0\]|\.k)+: expected at most 32 nested arrays and objects in an application's data, got more$/);
+    // A deep file is refused without a stack overflow.
+    expect(errorOf(`{"format":"penumbra-scene","version":3,"app":{"game":${'['.repeat(100_000)}${']'.repeat(100_000)}}}`).message)
+      .toMatch(/^app\.game(\[0\])+: expected at most 32 nested/);
+  });
+
+  it(`bounds the size to SCENE_MAX_APP_SIZE (${SCENE_MAX_APP_SIZE}) characters of JSON, counted exactly`, () => {
+    // {"g":"…"} is 8 characters around the string's contents.
+    const fits = { g: 'x'.repeat(SCENE_MAX_APP_SIZE - 8) };
+    expect(JSON.stringify(fits).length).toBe(SCENE_MAX_APP_SIZE);
+    expect(readScene(withApp(fits)).app).toEqual(fits);
+    expect(errorOf(withApp({ g: 'x'.repeat(SCENE_MAX_APP_SIZE - 7) })).message)
+      .toBe('app.g: expected application data of at most 1000000 characters as JSON, got more');
+    // Escapes count as written: a newline is two characters.
+    expect(errorOf(withApp({ g: '\n'.repeat(SCENE_MAX_APP_SIZE / 2) })).path).toBe('app.g');
+    // A long array is refused before its elements are read.
+    expect(errorOf(withApp({ g: new Array(SCENE_MAX_APP_SIZE) })).message).toBe('app.g: expected application data of at most 1000000 characters as JSON, got more');
   });
 });
 

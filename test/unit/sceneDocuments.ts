@@ -34,10 +34,11 @@ export function referenceDocuments(): unknown[] {
 export function fullScene(): SceneDocument {
   return {
     format: 'penumbra-scene',
-    version: 2,
+    version: 3,
     ambient: [0.1, 0.2, 0.3],
     camera: { center: [120, -40], zoom: 1.5 },
     look: { exposure: 1.25, toneMapping: 'aces', dithering: 'noise', lightmapBlur: 3.5 },
+    app: {},
     hulls: [
       { points: [[0, 0], [40, 0], [40, 30], [0, 30]], position: [200, 100], origin: [20, 15], rotation: 0.3, scale: [1, -2], enabled: true, closed: true, layers: 1 },
       { points: [[0, 0], [60, 0], [60, 20], [20, 20], [20, 60], [0, 60]], position: [400, 300], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: false, closed: true, layers: 6 },

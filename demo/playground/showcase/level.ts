@@ -184,8 +184,8 @@ export function buildLevel(): Level {
   lightRoles.push({ kind: 'lantern' });
 
   const document: SceneDocument = {
-    format: 'penumbra-scene', version: 2, ambient: [...NIGHT.ambient], camera: { center: [LEVEL_WIDTH / 2, LEVEL_HEIGHT / 2], zoom: 0.8 },
-    hulls, lights, look: { exposure: 1.3, toneMapping: 'aces', dithering: 'none', lightmapBlur: 0 },
+    format: 'penumbra-scene', version: 3, ambient: [...NIGHT.ambient], camera: { center: [LEVEL_WIDTH / 2, LEVEL_HEIGHT / 2], zoom: 0.8 },
+    hulls, lights, look: { exposure: 1.3, toneMapping: 'aces', dithering: 'none', lightmapBlur: 0 }, app: {},
   };
   const decor: Decor[] = [
     { kind: 'rug', x: 435, y: 610, rotation: Math.PI / 2 },
