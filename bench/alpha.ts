@@ -1,8 +1,9 @@
 /**
- * What `hullsFromAlpha` costs on a 256 × 256 sprite: a blob with soft (antialiased) edges, a hole,
- * a thin handle and a few islands. Run by `bench/alpha.mjs` through Vite's module runner, from the
- * sources. `--child --repeat=k` times k calls in this process and prints them (ms) as JSON:
- * the first is cold (the code not yet optimized, as for the first sprite a game loads).
+ * What `hullsFromAlpha` costs: on a 256 × 256 sprite (a blob with soft, antialiased edges, a hole,
+ * a thin handle and a few islands), and on comb-like sprites whose outlines are long and zigzag
+ * (a grass strip, a comb, a fence). Run by `bench/alpha.mjs` through Vite's module runner, from
+ * the sources. `--child=<case> --repeat=k` times k calls in this process and prints them (ms) as
+ * JSON: the first is cold (the code not yet optimized, as for the first sprite a game loads).
  */
 import { alphaOutlines } from '../src/geometry/alphaOutlines';
 import { hullsFromAlpha, type AlphaImage } from '../src/scene/hullsFromAlpha';
@@ -30,15 +31,47 @@ export function benchSprite(size = 256): AlphaImage {
   return { data, width: size, height: size };
 }
 
+/** An opaque-or-clear RGBA image, `solid(x, y)` deciding each pixel. */
+function maskImage(width: number, height: number, solid: (x: number, y: number) => boolean): AlphaImage {
+  const data = new Uint8ClampedArray(width * height * 4);
+  for (let y = 0; y < height; y++) for (let x = 0; x < width; x++) data[4 * (y * width + x) + 3] = solid(x, y) ? 255 : 0;
+  return { data, width, height };
+}
+
+/** A 2,048 × 64 grass strip: 1-pixel blades 1 pixel apart, 16 to 62 pixels tall, on a 2-pixel base. */
+export function grassSprite(): AlphaImage {
+  const height = 64;
+  return maskImage(2048, height, (x, y) => y >= height - 2 || (x % 2 === 0 && y >= 1 + ((x * 7919) % 47)));
+}
+
+/** A 2,048 × 512 comb: 1-pixel teeth 1 pixel apart, 504 pixels long, hanging from an 8-pixel spine. */
+export function combSprite(): AlphaImage {
+  return maskImage(2048, 512, (x, y) => y < 8 || x % 2 === 0);
+}
+
+/** A 2,048 × 512 fence: 4-pixel bars 4 pixels apart, joined by two 8-pixel rails (so with holes). */
+export function fenceSprite(): AlphaImage {
+  return maskImage(2048, 512, (x, y) => x % 8 < 4 || (y >= 96 && y < 104) || (y >= 400 && y < 408));
+}
+
+/** The cases: the sprite's outlines alone (splitting, tracing, simplifying), then whole hulls (validation, triangulation too). */
+export const CASES: Record<string, { sprite: () => AlphaImage; outlinesOnly?: boolean; describe: string }> = {
+  outlines: { sprite: benchSprite, outlinesOnly: true, describe: '256 × 256 sprite, outlines' },
+  hullsFromAlpha: { sprite: benchSprite, describe: '256 × 256 sprite' },
+  grass: { sprite: grassSprite, describe: '2,048 × 64 grass, 1-px blades' },
+  comb: { sprite: combSprite, describe: '2,048 × 512 comb, 1-px teeth' },
+  fence: { sprite: fenceSprite, describe: '2,048 × 512 fence, 4-px bars, 2 rails' },
+};
+
 const args = new Map(process.argv.slice(2).map((arg) => arg.replace(/^--/, '').split('=') as [string, string]));
 if (args.has('child')) {
-  const repeat = Number(args.get('repeat') ?? 1), what = args.get('child');
-  const sprite = benchSprite();
+  const repeat = Number(args.get('repeat') ?? 1), bench = CASES[args.get('child')!];
+  const sprite = bench.sprite();
   const times: number[] = [];
   let hulls = 0, points = 0;
   for (let k = 0; k < repeat; k++) {
     const start = performance.now();
-    if (what === 'outlines') {
+    if (bench.outlinesOnly) {
       const outlines = alphaOutlines(sprite.data, sprite.width, sprite.height, 128, { tolerance: 1, maxPoints: 64, minArea: 0 });
       times.push(performance.now() - start);
       hulls = outlines.length;

@@ -462,6 +462,49 @@ describe('hullsFromAlpha: tracing', () => {
   });
 });
 
+describe('hullsFromAlpha: comb-like sprites', () => {
+  /** 1-pixel teeth 1 pixel apart hanging from a spine 4 pixels deep, or standing on it (`up`, grass of equal blades). */
+  const comb = (width: number, height: number, up = false) =>
+    image(width, height, (x, y) => ((up ? y >= height - 4 : y < 4) || x % 2 === 0 ? 255 : 0));
+  /** 1-pixel blades of many heights, 1 pixel apart, on a 2-pixel base. */
+  const grass = (width: number, height: number) =>
+    image(width, height, (x, y) => (y >= height - 2 || (x % 2 === 0 && y >= 1 + ((x * 7919) % (height - 3))) ? 255 : 0));
+  /** Bars `bar` pixels wide 4 pixels apart joined by two rails: an island with holes, split along its rows. */
+  const fence = (width: number, height: number, bar = 4) =>
+    image(width, height, (x, y) => (x % (bar + 4) < bar || Math.abs(y - height / 5) < 3 || Math.abs(y - (4 * height) / 5) < 3 ? 255 : 0));
+
+  it('keeps teeth, blades and bars within the tolerance, exact at tolerance 0, with no gap along the cuts', () => {
+    for (const [name, img] of [['comb', comb(41, 20)], ['grass', comb(41, 20, true)], ['blades', grass(40, 24)], ['fence', fence(58, 40, 9)]] as const) {
+      for (const tolerance of [0, 1, 2.5]) {
+        const hulls = hullsFromAlpha(img, { tolerance, maxPoints: Infinity });
+        expectValid(hulls, Infinity);
+        if (tolerance === 0) expect(mismatches(maskOf(img), coverage(img, hulls)), name).toEqual([]);
+        else expectWithinTolerance(img, hulls, tolerance);
+        if (name === 'fence') expectNoGaps(img, hulls, tolerance + 1);
+      }
+    }
+  });
+
+  it('honours the point cap on teeth and blades (the convex outline where no simple one fits)', () => {
+    for (const img of [comb(97, 40), comb(97, 40, true), grass(96, 40)]) {
+      for (const maxPoints of [4, 16, 64]) expectValid(hullsFromAlpha(img, { maxPoints }), maxPoints);
+    }
+  });
+
+  it('traces a 2,048 × 256 comb and a 2,048 × 512 fence in near-linear time, not one scan of the outline per tooth', () => {
+    // Simplifying by scanning each chain made these quadratic in the outline (tens of seconds);
+    // O(n log n) takes a small fraction of the limit even on a loaded machine.
+    for (const [name, img] of [['comb', comb(2048, 256)], ['grass', comb(2048, 256, true)], ['fence', fence(2048, 512)]] as const) {
+      const start = performance.now();
+      const hulls = hullsFromAlpha(img);
+      const elapsed = performance.now() - start;
+      expect(hulls.length, name).toBeGreaterThan(0);
+      for (const hull of hulls) expect(hull.valid).toBe(true);
+      expect(elapsed, `${name}: ${elapsed.toFixed(0)} ms`).toBeLessThan(2000);
+    }
+  });
+});
+
 describe('hullsFromAlpha: placement', () => {
   const img = textImage([
     '..........',
