@@ -1,9 +1,18 @@
+import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import {
-  createSceneObjects, describeScene, DirectionalLight, Hull, readScene, SCENE_MAX_APP_DEPTH, SCENE_MAX_APP_SIZE, SceneFormatError, Spotlight, TexturedLight,
-  writeScene, type ScenePointLight,
+  createSceneObjects, describeScene, DirectionalLight, Hull, readScene, SCENE_MAX_APP_DEPTH, SCENE_MAX_APP_SIZE, SCENE_SCHEMA_URL, SceneFormatError, Spotlight,
+  TexturedLight, writeScene as writeSceneText, type SceneDocument, type ScenePointLight,
 } from '../../src/index';
-import { errorOf, fullScene } from './sceneDocuments';
+import { docsExample, errorOf, fullScene, referenceDocuments } from './sceneDocuments';
+import { SCENE_SCHEMA, schemaErrors } from './sceneSchema';
+
+/** writeScene, checking that every file it writes validates against the JSON Schema the package ships. */
+function writeScene(scene: SceneDocument): string {
+  const text = writeSceneText(scene);
+  expect(schemaErrors(text)).toEqual([]);
+  return text;
+}
 
 /** A full scene with one field replaced (or deleted, with `undefined`) at a path of keys. */
 function withField(path: (string | number)[], value: unknown): unknown {
@@ -154,10 +163,13 @@ describe('scene format', () => {
       `lights[3].${field}: unknown field (allowed: kind, color, intensity, rotation, shadowType, enabled, castsShadows, ignoredHulls, shadowLayers, shadowColor, shadowStrength, litLayers, angularSize, elevation)`,
     ]),
   ];
-  it.each(cases)('names the path of a bad field: %s', (_name, path, value, message) => {
+  /** Checks that need the file as a whole: a JSON Schema cannot tell how many hulls there are. */
+  const beyondTheSchema = ['ignoredHulls out of range', 'directional ignoredHulls out of range'];
+  it.each(cases)('names the path of a bad field: %s', (name, path, value, message) => {
     const error = errorOf(withField(path, value));
     expect(error.message).toBe(message);
     expect(error.path).toBe(message.slice(0, message.indexOf(': ')));
+    expect(schemaErrors(withField(path, value)).length > 0).toBe(!beyondTheSchema.includes(name));
   });
 
   it('rejects NaN and Infinity in a scene given as a value', () => {
@@ -188,6 +200,53 @@ describe('scene format', () => {
     const scene = fullScene();
     scene.camera.zoom = -1;
     expect(() => writeScene(scene)).toThrow('camera.zoom: expected a number > 0, got -1');
+  });
+});
+
+describe('scene schema', () => {
+  it('is the file $schema names, shipped in the package as penumbra-gl/scene.schema.json', () => {
+    expect(SCENE_SCHEMA.$id).toBe(SCENE_SCHEMA_URL);
+    const pkg = JSON.parse(readFileSync(new URL('../../package.json', import.meta.url), 'utf8'));
+    expect(pkg.exports['./scene.schema.json']).toBe('./schema/scene.schema.json');
+    expect(pkg.files).toContain('schema');
+  });
+
+  it('accepts the files readScene reads: the docs example, minimal files, every version', () => {
+    for (const scene of [docsExample(), ...referenceDocuments(), { format: 'penumbra-scene', version: 1 }, { $schema: 'x', format: 'penumbra-scene', version: 3, app: { game: [1] } }]) {
+      readScene(scene);
+      expect(schemaErrors(scene)).toEqual([]);
+    }
+  });
+
+  it('rejects what a version does not have, as readScene does', () => {
+    const v1 = { format: 'penumbra-scene', version: 1 };
+    const tooNew = [
+      { ...v1, look: { exposure: 2 } },
+      { ...v1, hulls: [{ points: [[0, 0], [1, 0], [0, 1]], closed: false }] },
+      { ...v1, lights: [{ kind: 'point', position: [0, 0], shadowType: 'occluded' }] },
+      { ...v1, lights: [{ kind: 'point', position: [0, 0], falloff: 'smooth' }] },
+      { ...v1, lights: [{ kind: 'directional' }] },
+      { ...v1, version: 2, app: {} },
+    ];
+    for (const scene of tooNew) {
+      errorOf(scene);
+      expect(schemaErrors(scene)).not.toEqual([]);
+    }
+    expect(schemaErrors({ ...v1, version: 2, lights: [{ kind: 'directional' }] })).toEqual([]);
+  });
+
+  it('rejects malformed documents', () => {
+    const malformed = [
+      {}, [], { format: 'tiled-map', version: 3 }, { format: 'penumbra-scene', version: 4 }, { format: 'penumbra-scene' },
+      withField(['$schema'], 3), withField(['app'], []), withField(['app'], { '': 1 }),
+      withField(['lights', 0, 'position'], undefined), withField(['lights', 2, 'cookie'], undefined), withField(['hulls', 0, 'points'], undefined),
+      withField(['lights', 0, 'range'], 1e39), withField(['lights', 3, 'elevation'], 0), withField(['camera', 'zoom'], 0),
+      withField(['lights', 0, 'ignoredHulls'], [1, 1]),
+    ];
+    for (const scene of malformed) {
+      expect(() => readScene(scene)).toThrow(SceneFormatError);
+      expect(schemaErrors(scene)).not.toEqual([]);
+    }
   });
 });
 
@@ -223,7 +282,7 @@ describe('application data', () => {
 
   it('is carried by describeScene', () => {
     const scene = fullScene();
-    const objects = createSceneObjects(scene, () => null as unknown as WebGLTexture);
+    const objects = createSceneObjects(scene, () => ({}) as WebGLTexture);
     const app = { game: gameData };
     const described = describeScene({ ...objects, ambient: scene.ambient, camera: scene.camera, cookieName: () => 'flame', app });
     expect(readScene(writeScene(described)).app).toEqual(JSON.parse(JSON.stringify(app)));

@@ -142,7 +142,7 @@ function load(input: unknown, scene: LoadedScene): SceneDocument {
 
 /** Saves what `scene` holds, as an application would. */
 function save(scene: LoadedScene, document: SceneDocument): string {
-  return writeScene(describeScene({ ...scene, ambient: document.ambient, camera: document.camera, look: document.look, cookieName: () => 'flame' }));
+  return writeScene(describeScene({ ...scene, ambient: document.ambient, camera: document.camera, look: document.look, app: document.app, cookieName: () => 'flame' }));
 }
 
 function expectRejectionWithPath(error: unknown, index: number): void {
