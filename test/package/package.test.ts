@@ -51,8 +51,8 @@ afterAll(() => {
 });
 
 describe('the packed tarball', () => {
-  it('holds dist/, README.md, LICENSE and package.json only, and every file the exports map names', () => {
-    const outside = packed.files.filter((file) => !file.startsWith('dist/') && !['README.md', 'LICENSE', 'package.json'].includes(file));
+  it('holds dist/, the scene schema, README.md, LICENSE and package.json only, and every file the exports map names', () => {
+    const outside = packed.files.filter((file) => !file.startsWith('dist/') && !['schema/scene.schema.json', 'README.md', 'LICENSE', 'package.json'].includes(file));
     expect(outside).toEqual([]);
     expect(packed.files).toContain('LICENSE');
     expect(packed.files).toContain('README.md');
@@ -60,6 +60,8 @@ describe('the packed tarball', () => {
     const targets = JSON.stringify(manifest.exports).match(/\.\/dist\/[^"]+/g) ?? [];
     expect(targets.length).toBeGreaterThanOrEqual(12);
     expect(targets.filter((target) => !packed.files.includes(target.slice(2)))).toEqual([]);
+    expect((manifest.exports as Record<string, string>)['./scene.schema.json']).toBe('./schema/scene.schema.json');
+    expect(packed.files).toContain('schema/scene.schema.json');
   });
 
   it('has source maps that embed every source (nothing they name lies outside the tarball)', () => {
