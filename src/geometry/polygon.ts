@@ -340,8 +340,10 @@ export function isInsidePolygon(coords: ArrayLike<number>, point: ArrayLike<numb
   for (let i = 0, j = count - 1; i < count; j = i++) {
     const xi = coords[2 * (first + i)], yi = coords[2 * (first + i) + 1];
     const xj = coords[2 * (first + j)], yj = coords[2 * (first + j) + 1];
+    if ((yi > y) === (yj > y)) continue;
     // The point is left of where the edge crosses its row: on the edge's left going up, on its right going down.
-    if ((yi > y) !== (yj > y) && (yi > yj ? orient2d(xj, yj, xi, yi, x, y) > 0 : orient2d(xj, yj, xi, yi, x, y) < 0)) inside = !inside;
+    const side = orient2d(xj, yj, xi, yi, x, y);
+    if (yi > yj ? side > 0 : side < 0) inside = !inside;
   }
   return inside;
 }
