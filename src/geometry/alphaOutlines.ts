@@ -127,11 +127,6 @@ class Tracer {
 
   constructor(private readonly labels: Int32Array, private readonly width: number, private readonly height: number) {}
 
-  /** The label at pixel (x, y), −1 outside the image. */
-  private label(x: number, y: number): number {
-    return x >= 0 && y >= 0 && x < this.width && y < this.height ? this.labels[y * this.width + x] : -1;
-  }
-
   /**
    * The outline of `region` through the midpoints of its cracks, in order, less the midpoints that
    * lie on the segment between their neighbours' (a crack's does when the cracks before and after
@@ -144,16 +139,20 @@ class Tracer {
    * Traces `region` from its first pixel in row order, `start` (= y · width + x): nothing of the
    * region lies above or left of it, so its top edge, walked in +x, is on the outline (its
    * midpoint, point 0, is always kept), and its top-left corner is on no other part of it (the
-   * walk ends on returning there in +x).
+   * walk ends on returning there in +x). The pixel across the next crack is one the walk has just
+   * looked at: R after a right turn, L going straight, the pixel across the last crack after a
+   * left turn; so two lookups a step at most.
    */
   trace(region: number, start: number): Ring {
-    const px = start % this.width, py = (start - px) / this.width, pinnedEnds: number[] = [];
+    const labels = this.labels, width = this.width, height = this.height;
+    const label = (x: number, y: number) => (x >= 0 && y >= 0 && x < width && y < height ? labels[y * width + x] : -1);
+    const px = start % width, py = (start - px) / width, pinnedEnds: number[] = [];
     let x = px, y = py, d = 0, n = 0, k = 0;
+    let pinned = label(px + LEFT_X[0], py + LEFT_Y[0]) >= 0;
     // Cracks k − 1 and k − 2 (the last two seen), and whether cracks 0 and 1 are pinned.
     let lastD = 0, lastPinned = false, beforeD = 0, beforePinned = false, pinned0 = false, pinned1 = false;
     do {
       // Crack k, from (x, y) in direction d: the region's pixel on its right, another pixel on its left.
-      const pinned = this.label(x + LEFT_X[d], y + LEFT_Y[d]) >= 0;
       // Crack k − 1 is settled once crack k is known; crack 0 is always kept.
       if (k >= 2) n = settle(n, beforeD, beforePinned, lastPinned, d, pinned, pinnedEnds);
       else if (k === 1) pinned1 = pinned;
@@ -169,8 +168,15 @@ class Tracer {
       lastPinned = pinned;
       x += DX[d];
       y += DY[d];
-      if (this.label(x + RIGHT_X[d], y + RIGHT_Y[d]) !== region) d = (d + 1) & 3;
-      else if (this.label(x + LEFT_X[d], y + LEFT_Y[d]) === region) d = (d + 3) & 3;
+      const right = label(x + RIGHT_X[d], y + RIGHT_Y[d]);
+      if (right !== region) {
+        d = (d + 1) & 3;
+        pinned = right >= 0;
+      } else {
+        const left = label(x + LEFT_X[d], y + LEFT_Y[d]);
+        if (left === region) d = (d + 3) & 3;
+        else pinned = left >= 0;
+      }
     } while (x !== px || y !== py || d !== 0);
     // The last crack lies between the one before it and crack 0 (direction 0); crack 0 between the last and crack 1.
     n = settle(n, beforeD, beforePinned, lastPinned, 0, pinned0, pinnedEnds);
