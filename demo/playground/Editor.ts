@@ -62,6 +62,8 @@ export class Editor extends EventTarget {
     surface.addEventListener('wheel', this.onWheel, { passive: false });
     // A right-drag erases tiles: no context menu in tile mode.
     surface.addEventListener('contextmenu', (event) => { if (this._painting) event.preventDefault(); });
+    // Escape in the capture phase: the panel stops some keys from propagating, and Escape must end a mode wherever the focus is.
+    window.addEventListener('keydown', this.onEscape, true);
     window.addEventListener('keydown', this.onKeyDown);
     window.addEventListener('keyup', (event) => this.keys.delete(event.code));
     window.addEventListener('blur', () => this.keys.clear());
@@ -255,19 +257,23 @@ export class Editor extends EventTarget {
     this.playground.camera.zoomAt(event.offsetX, event.offsetY, Math.exp(-event.deltaY * 0.0015));
   };
 
+  /** Escape ends hull drawing, tile painting or picking, from any focus; otherwise it clears the selection, but not while typing in a field. */
+  private readonly onEscape = (event: KeyboardEvent): void => {
+    if (event.key !== 'Escape') return;
+    if (this._drawing) this.drawing = false;
+    else if (this._painting) this.painting = false;
+    else if (this._pickingIgnoredOf) this.pickingIgnoredOf = null;
+    else if (!isTextField(event.target)) this.playground.selection = null;
+  };
+
   private readonly onKeyDown = (event: KeyboardEvent): void => {
     // Typing into the panel's fields must not pan or delete.
-    if (event.target instanceof HTMLInputElement || event.target instanceof HTMLTextAreaElement) return;
+    if (isTextField(event.target)) return;
     if (event.code in PAN_KEYS) {
       this.keys.add(event.code);
       event.preventDefault();
     } else if (event.key === 'Enter') {
       this.finishHull();
-    } else if (event.key === 'Escape') {
-      if (this._drawing) this.drawing = false;
-      else if (this._painting) this.painting = false;
-      else if (this._pickingIgnoredOf) this.pickingIgnoredOf = null;
-      else this.playground.selection = null;
     } else if (event.key === 'Delete' || event.key === 'Backspace') {
       this.playground.deleteSelection();
     }
@@ -297,4 +303,9 @@ export class Editor extends EventTarget {
     const [a, b] = [...this.pointers.values()];
     return { distance: Math.hypot(a.x - b.x, a.y - b.y), x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 };
   }
+}
+
+/** Whether keys typed at `target` are text (a field of the panel). */
+function isTextField(target: EventTarget | null): boolean {
+  return target instanceof HTMLInputElement || target instanceof HTMLTextAreaElement;
 }

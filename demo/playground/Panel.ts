@@ -133,6 +133,7 @@ export class Panel {
     edit.add(buttons, 'textured').name('add textured light');
     hint(edit.add(buttons, 'sun').name('add sun (directional light)'), 'Light from far away over the whole view; drag its compass (bottom left) to turn it');
     const drawHull = edit.add(buttons, 'hull').name('draw hull (click points)');
+    hint(drawHull, 'Click points on the view; close the hull by clicking its first point, double-clicking or pressing Enter. Esc cancels.');
     edit.add(buttons, 'remove').name('delete selected (Del)');
 
     const paintTiles = this.contentControls();

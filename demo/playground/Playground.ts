@@ -1,7 +1,8 @@
 import {
   createSceneObjects, describeScene, DirectionalLight, Hull, PenumbraRenderer, PointLight, readScene, Spotlight, TexturedLight,
-  type Light, type SceneDocument,
+  type Light, type SceneAppData, type SceneDocument,
 } from 'penumbra-gl';
+import { PLAYGROUND_APP, readPlaygroundState, writePlaygroundState } from './appState';
 import { Camera } from './Camera';
 import { Cookies } from './Cookies';
 import { SceneArt, type ImageSprite, type Sprite } from './SceneArt';
@@ -55,6 +56,8 @@ export class Playground extends EventTarget {
   private readonly view = new Float32Array(4);
   /** The hulls the showcase does not draw (added in the editor), refilled each frame rather than made. */
   private readonly editorHulls: Hull[] = [];
+  /** The loaded file's data of other applications: kept, and saved back. */
+  private otherApps: SceneAppData = {};
   private time = 0;
 
   constructor(readonly gl: WebGL2RenderingContext) {
@@ -88,11 +91,12 @@ export class Playground extends EventTarget {
   /**
    * Replaces the scene with a scene file's contents. Validates everything and builds every object
    * before touching the current scene, so on an error (thrown, naming the bad field) nothing changes.
-   * `showcase`: the scene is the showcase level (its document, or a save of it): its hulls and
-   * lights get the showcase's art, heights and flicker, by their order.
+   * The file's playground entry (appState.ts) says which art draws it: the showcase level's (its
+   * document, or a save of it, with the state {@link document} kept) or the generic one.
    */
-  load(source: string | SceneDocument, { showcase = false } = {}): void {
+  load(source: string | SceneDocument): void {
     const document = readScene(source);
+    const state = readPlaygroundState(document.app, { hulls: document.hulls.length, lights: document.lights.length }, this.showcase.roleCounts);
     const objects = createSceneObjects(document, this.cookies.resolve);
     const renderer = this.renderer;
     for (const light of [...renderer.lights]) renderer.removeLight(light);
@@ -105,7 +109,10 @@ export class Playground extends EventTarget {
     this.camera.center[0] = document.camera.center[0];
     this.camera.center[1] = document.camera.center[1];
     this.camera.zoom = document.camera.zoom;
-    if (showcase) this.showcase.attach(renderer);
+    const { [PLAYGROUND_APP]: _, ...otherApps } = document.app;
+    this.otherApps = otherApps;
+    const showcase = state.art === 'showcase';
+    if (state.art === 'showcase') this.showcase.attach(renderer, state.showcase);
     else this.showcase.detach();
     if (showcase !== this._showcaseActive) {
       this._showcaseActive = showcase;
@@ -115,12 +122,17 @@ export class Playground extends EventTarget {
     this.changed();
   }
 
-  /** The current scene as a scene document. */
+  /**
+   * The current scene as a scene document, with the playground's entry in its application data
+   * (the art, and the showcase's state) and the loaded file's entries of other applications.
+   */
   document(): SceneDocument {
     const { renderer, camera } = this;
+    const state = writePlaygroundState(this._showcaseActive ? { art: 'showcase', showcase: this.showcase.state() } : { art: 'generic' });
     return describeScene({
       lights: [...renderer.lights], hulls: [...renderer.hulls], ambient: renderer.ambientColor,
       camera: { center: [...camera.center], zoom: camera.zoom }, cookieName: this.cookies.nameOf, look: renderer,
+      app: { ...this.otherApps, [PLAYGROUND_APP]: state },
     });
   }
 

@@ -4,8 +4,6 @@
  */
 
 const STORAGE_KEY = 'penumbra-gl/playground/scene';
-/** Set while the kept scene is the showcase level (drawn with its own art). */
-const SHOWCASE_KEY = 'penumbra-gl/playground/showcase';
 
 /** Offers `text` as a download named `fileName`. */
 export function downloadText(text: string, fileName: string): void {
@@ -68,22 +66,19 @@ export function pickImageFile(onFile: (file: File) => void): void {
   input.click();
 }
 
-/** The scene kept by the last visit and whether it was the showcase level, or null. */
-export function storedScene(): { text: string; showcase: boolean } | null {
+/** The scene file kept by the last visit (its application data says which art draws it), or null. */
+export function storedScene(): string | null {
   try {
-    const text = localStorage.getItem(STORAGE_KEY);
-    return text === null ? null : { text, showcase: localStorage.getItem(SHOWCASE_KEY) === '1' };
+    return localStorage.getItem(STORAGE_KEY);
   } catch {
     return null; // Storage can be disabled (private modes, file://): the page still works.
   }
 }
 
-/** Keeps `text` for the next visit, with whether it is the showcase level. */
-export function storeScene(text: string, showcase: boolean): void {
+/** Keeps scene file `text` for the next visit. */
+export function storeScene(text: string): void {
   try {
     localStorage.setItem(STORAGE_KEY, text);
-    if (showcase) localStorage.setItem(SHOWCASE_KEY, '1');
-    else localStorage.removeItem(SHOWCASE_KEY);
   } catch (error) {
     console.warn('playground: the scene could not be kept across reloads:', error);
   }

@@ -5,7 +5,7 @@ import { ImageTracer } from './ImageTracer';
 import { Overlay } from './Overlay';
 import { Panel } from './Panel';
 import { Playground } from './Playground';
-import { PRESETS, SHOWCASE_PRESET } from './presets';
+import { PRESETS } from './presets';
 import { StatsOverlay } from './StatsOverlay';
 import { installTestHook } from './testHook';
 import { TilePainter } from './TilePainter';
@@ -45,9 +45,9 @@ function viewCentre(): [number, number] {
  * Loads a scene file's text; on a bad file shows the error (naming the bad field) and keeps the
  * scene. The preset menu then shows `label` (the file's name) instead of the preset it replaced.
  */
-function loadText(text: string, source: string, label = source, showcase = false): boolean {
+function loadText(text: string, source: string, label = source): boolean {
   try {
-    playground.load(text, { showcase });
+    playground.load(text);
     message.hidden = true;
     panel.showPreset(label);
     return true;
@@ -60,7 +60,7 @@ function loadText(text: string, source: string, label = source, showcase = false
 function selectPreset(name: string): void {
   const preset = PRESETS[name];
   if (!preset) throw new Error(`playground: no preset named ${name}`);
-  playground.load(preset(), { showcase: name === SHOWCASE_PRESET });
+  playground.load(preset());
   panel.showPreset(name);
 }
 
@@ -85,13 +85,13 @@ playground.addEventListener('scene', () => { unsaved = true; });
 function keepScene(): void {
   if (!unsaved) return;
   unsaved = false;
-  storeScene(writeScene(playground.document()), playground.showcaseActive);
+  storeScene(writeScene(playground.document()));
 }
 setInterval(keepScene, STORE_INTERVAL_MS);
 window.addEventListener('pagehide', keepScene);
 
 const stored = storedScene();
-if (!stored || !loadText(stored.text, 'the scene kept from the last visit', 'your last scene', stored.showcase)) selectPreset(Object.keys(PRESETS)[0]);
+if (stored === null || !loadText(stored, 'the scene kept from the last visit', 'your last scene')) selectPreset(Object.keys(PRESETS)[0]);
 
 /** Matches both canvases' drawing buffers to their CSS size × devicePixelRatio. */
 function fitCanvases(): number {

@@ -1,4 +1,5 @@
 import type { SceneDocument, SceneHull, SceneLight, SceneLightBase } from 'penumbra-gl';
+import { PLAYGROUND_APP, writePlaygroundState } from './appState';
 import { buildLevel } from './showcase/level';
 import { seededRandom } from './textures';
 
@@ -107,7 +108,8 @@ export const SHOWCASE_PRESET = 'Showcase';
 
 /** The presets by name, in menu order; the first is the default level. */
 export const PRESETS: Readonly<Record<string, () => SceneDocument>> = {
-  [SHOWCASE_PRESET]: () => buildLevel().document,
+  // Drawn with the showcase's art, its objects taking the level's roles in order.
+  [SHOWCASE_PRESET]: () => ({ ...buildLevel().document, app: { [PLAYGROUND_APP]: writePlaygroundState({ art: 'showcase', showcase: null }) } }),
   Dungeon: dungeon,
   'Penumbra lab': penumbraLab,
   Stage: stage,

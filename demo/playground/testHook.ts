@@ -27,6 +27,8 @@ export interface PlaygroundTestHook {
   sunCompass(index: number): [number, number];
   /** Draws a frame now and returns the canvas colour (0..255 RGB) at a CSS pixel point. */
   readPixel(x: number, y: number): [number, number, number];
+  /** Draws a frame now and returns the whole canvas, RGBA bytes bottom row first, base64-encoded. */
+  readFrame(): string;
   /** `gl.getError()` after a frame: 0 when WebGL reported nothing. */
   glError(): number;
   /** The renderer's stats of a frame drawn now (the last animation frame may predate a change). */
@@ -93,6 +95,15 @@ export function installTestHook(parts: TestHookParts): void {
       const scale = gl.drawingBufferWidth / playground.camera.width;
       gl.readPixels(Math.floor(x * scale), gl.drawingBufferHeight - 1 - Math.floor(y * scale), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
       return [pixel[0], pixel[1], pixel[2]];
+    },
+    readFrame() {
+      parts.frame();
+      const frame = new Uint8Array(gl.drawingBufferWidth * gl.drawingBufferHeight * 4);
+      gl.readPixels(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight, gl.RGBA, gl.UNSIGNED_BYTE, frame);
+      let binary = '';
+      // In chunks: String.fromCharCode takes a bounded number of arguments.
+      for (let i = 0; i < frame.length; i += 0x8000) binary += String.fromCharCode(...frame.subarray(i, i + 0x8000));
+      return btoa(binary);
     },
     glError() {
       parts.frame();

@@ -4,7 +4,7 @@ import { join } from 'node:path';
 import { PNG } from 'pngjs';
 import type { Browser, Page } from 'puppeteer';
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
-import type { SceneDirectionalLight, SceneDocument, SceneLight } from '../../src/index';
+import type { SceneDirectionalLight, SceneDocument, SceneLight, ScenePointLight } from '../../src/index';
 import { Dithering, ToneMapping } from '../../src/passes/compositeLayout';
 import { Falloff, falloffAt, ShadowType } from '../../src/scene/lights';
 import { collectPageErrors, launchChromium } from './chromium';
@@ -27,7 +27,7 @@ interface TestScene extends Omit<SceneDocument, 'lights'> {
 /** One light at `light` (no source radius, so the umbra is exact) and one 40 × 120 box at (220, 200). */
 function testScene(light: [number, number], range = 300): TestScene {
   return {
-    format: 'penumbra-scene', version: 2, ambient: [0.02, 0.02, 0.02], camera: { center: [300, 200], zoom: 1 },
+    format: 'penumbra-scene', version: 3, ambient: [0.02, 0.02, 0.02], camera: { center: [300, 200], zoom: 1 },
     hulls: [{ points: [[-20, -60], [20, -60], [20, 60], [-20, 60]], position: [220, 200], origin: [0, 0], rotation: 0, scale: [1, 1], enabled: true, closed: true, layers: 1 }],
     lights: [{
       kind: 'point', position: light, range, radius: 0, color: [1, 1, 1], intensity: 1, rotation: 0, origin: [0.5, 0.5],
@@ -35,6 +35,7 @@ function testScene(light: [number, number], range = 300): TestScene {
       shadowLayers: 0xffffffff, shadowColor: [0, 0, 0], shadowStrength: 1, litLayers: 0xffffffff, falloff: 'linear', height: null,
     }],
     look: { exposure: 1, toneMapping: 'none', dithering: 'none', lightmapBlur: 0 },
+    app: {},
   };
 }
 
@@ -49,6 +50,13 @@ function darkScene(): TestScene {
 }
 
 const brightness = ([r, g, b]: [number, number, number]) => r + g + b;
+
+/** How many bytes two base64-encoded frames of the same size differ in. */
+function differingBytes(a: string, b: string): number {
+  const [x, y] = [Buffer.from(a, 'base64'), Buffer.from(b, 'base64')];
+  expect(x.length).toBe(y.length);
+  return x.reduce((count, byte, i) => count + (byte === y[i] ? 0 : 1), 0);
+}
 
 /** Each channel of `scaled` is `factor` × that of `colour`, within 8-bit rounding. */
 function brightnessNear(scaled: [number, number, number], colour: [number, number, number], factor: number): void {
@@ -286,6 +294,37 @@ describe('playground page in Chromium', () => {
       // No tone mapping: the colour halves (within 8-bit rounding).
       brightnessNear(half, day, 0.5);
     }, SHOWCASE_TEST_MS);
+
+    it('saves the showcase with its art, look, daylight and flicker, and the saved file loads back to the same pixels', async () => {
+      await page.evaluate(() => window.playground.selectPreset('Showcase'));
+      // Take out the second torch: the lights after it move up the file, and keep their art.
+      const [torchX, torchY] = ((await savedLights())[TORCH + 1] as ScenePointLight).position;
+      await setCamera(torchX, torchY, 1);
+      await page.mouse.click(...await toScreen(torchX, torchY));
+      await page.keyboard.press('Delete');
+      expect(await savedLights()).toHaveLength(LIGHTS - 1);
+      await enter('daylight', '0.6');
+      await enter('exposure', '1.1');
+      await setCamera(600, 450, 0.8);
+      const before = await page.evaluate(() => window.playground.readFrame());
+      const saved = await saveThroughPanel();
+      const state = JSON.parse(saved).app['penumbra-gl/playground'];
+      expect(state).toMatchObject({ version: 1, art: 'showcase', showcase: { daylight: 0.6 } });
+      expect(state.showcase.lightRoles).toEqual([0, 1, 3, 4, 5, 6]);
+
+      await page.evaluate(() => window.playground.selectPreset('Stage'));
+      expect(await page.evaluate(() => window.playground.showcase().active)).toBe(false);
+      const file = join(mkdtempSync(join(tmpdir(), 'penumbra-playground-')), 'showcase.penumbra.json');
+      writeFileSync(file, saved);
+      const [chooser] = await Promise.all([page.waitForFileChooser(), clickButton('load scene')]);
+      await chooser.accept([file]);
+      await page.waitForFunction((text) => window.playground.sceneText() === text, { timeout: 10_000 }, saved);
+      expect(await page.evaluate(() => window.playground.showcase())).toEqual({ active: true, daylight: 0.6 });
+      expect(await lookShown()).toEqual(['1.1', 'Aces', 'None', '0']);
+      expect(await fieldText('daylight')).toBe('0.6');
+      const after = await page.evaluate(() => window.playground.readFrame());
+      expect(differingBytes(before, after)).toBe(0);
+    }, SHOWCASE_TEST_MS);
   });
 
   it('lights a pixel near the light and leaves the umbra behind the hull dark', async () => {
@@ -412,6 +451,49 @@ describe('playground page in Chromium', () => {
     expect((await toScreen(300, 200))[0]).toBeCloseTo(WIDTH / 2, 5);
     await page.click('.lil-gui .lil-title');
     expect((await toScreen(300, 200))[0]).toBeCloseTo(panel.left / 2, -1);
+  });
+
+  it('ends tile painting, hull drawing and picking with Escape while a panel button has the focus, and says how a drawn hull closes', async () => {
+    expect(await load(testScene([100, 200]))).toBe(true);
+    /**
+     * Clicks the panel button whose label starts with `label` with the mouse (opening its folder
+     * first), which leaves the focus on it: the panel stops keys there from bubbling.
+     */
+    const clickWithMouse = async (label: string) => {
+      const button = await page.evaluateHandle((text) => {
+        const found = [...document.querySelectorAll<HTMLButtonElement>('.lil-gui button')].find((b) => b.textContent?.startsWith(text))!;
+        for (let folder = found.closest('.lil-gui.lil-closed'); folder; folder = folder.parentElement!.closest('.lil-gui.lil-closed')) {
+          folder.querySelector<HTMLElement>(':scope > .lil-title')!.click();
+        }
+        return found;
+      }, label);
+      await page.waitForFunction((b) => b.getBoundingClientRect().height > 0 && !b.closest('.lil-transition'), {}, button);
+      await button.click();
+      expect(await button.evaluate((b) => document.activeElement === b)).toBe(true);
+    };
+    const buttonLabels = () => page.$$eval('.lil-gui button', (buttons) => buttons.map((b) => b.textContent));
+    await tileMode(false);
+    await clickWithMouse('paint tiles');
+    expect(await page.evaluate(() => window.playground.tileMode().painting)).toBe(true);
+    await page.keyboard.press('Escape');
+    expect(await page.evaluate(() => window.playground.tileMode().painting)).toBe(false);
+
+    await clickWithMouse('draw hull');
+    expect(await buttonLabels()).toContain('cancel hull (Enter closes)');
+    await page.keyboard.press('Escape');
+    expect(await buttonLabels()).toContain('draw hull (click points)');
+
+    await page.mouse.click(...await toScreen(100, 200));
+    await clickWithMouse('pick ignored hulls');
+    expect(await buttonLabels()).toContain('done picking (Esc)');
+    await page.keyboard.press('Escape');
+    expect(await buttonLabels()).toContain('pick ignored hulls (click hulls)');
+    // Picking has ended, the light is still selected: a click on the hull selects it, not ignores it.
+    await page.mouse.click(...await toScreen(220, 200));
+    expect((await sceneDocument()).lights[0].ignoredHulls).toEqual([]);
+
+    const help = await page.$eval('#help', (element) => element.textContent);
+    expect(help).toContain('a drawn hull closes on a click on its first point, a double-click or Enter');
   });
 
   it('paints a line of wall tiles into one hull covering exactly those tiles, over a faint grid, and it casts a shadow', async () => {

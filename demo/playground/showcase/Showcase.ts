@@ -1,5 +1,6 @@
 import type { mat4 } from 'gl-matrix';
 import { DirectionalLight, Hull, type Light, type PenumbraRenderer } from 'penumbra-gl';
+import type { ObjectCounts, ShowcaseState } from '../appState';
 import { hullLocalToWorld, hullWorldPoint } from '../hullShape';
 import { ATLAS_SIZE, CELLS, FLAME_FRAMES, flameCell, floorImage, grassImage, propsImage, wallFaceImage, wallImage, type Cell } from './art';
 import { buildLevel, DAY, FLOOR_TOP, LEVEL_HEIGHT, LEVEL_WIDTH, NIGHT, type Decor, type HullRole, type LightRole } from './level';
@@ -36,8 +37,9 @@ export class Showcase {
   private readonly batch: SurfaceBatch;
   private readonly textures: Record<'floor' | 'wall' | 'face' | 'grass' | 'props', SurfaceTextures>;
   private readonly level = buildLevel();
-  private readonly hullRoles = new Map<Hull, HullRole>();
-  private readonly lightRoles = new Map<Light, LightRole>();
+  /** The level's objects: each hull's and light's index in the level's roles. */
+  private readonly hullRoles = new Map<Hull, number>();
+  private readonly lightRoles = new Map<Light, number>();
   /** Each flickering light's steady intensity and radius, and what the flicker last set (an edit in between becomes the new steady value). */
   private readonly steady = new Map<Light, { intensity: number; radius: number; shownIntensity: number; shownRadius: number; phase: number }>();
   private renderer: PenumbraRenderer | null = null;
@@ -57,26 +59,67 @@ export class Showcase {
     };
   }
 
+  /** How many hull and light roles the level has. */
+  get roleCounts(): ObjectCounts {
+    return { hulls: this.level.hullRoles.length, lights: this.level.lightRoles.length };
+  }
+
   /**
-   * Takes the renderer's hulls and lights, just loaded from the level's document, as the level's (by
-   * their order), at night.
+   * Takes the renderer's hulls and lights, just loaded, as the level's: by `saved`, the state a
+   * saved scene kept ({@link state}), or else by their order (the level's own document, at night,
+   * its clock running on).
    */
-  attach(renderer: PenumbraRenderer): void {
+  attach(renderer: PenumbraRenderer, saved: ShowcaseState | null): void {
     this.renderer = renderer;
     this.hullRoles.clear();
     this.lightRoles.clear();
     this.steady.clear();
-    renderer.hulls.forEach((hull, i) => { if (i < this.level.hullRoles.length) this.hullRoles.set(hull, this.level.hullRoles[i]); });
-    renderer.lights.forEach((light, i) => {
-      const role = this.level.lightRoles[i];
-      if (!role) return;
-      this.lightRoles.set(light, role);
-      if (FLICKER[role.kind]) {
-        this.steady.set(light, { intensity: light.intensity, radius: light.radius, shownIntensity: light.intensity, shownRadius: light.radius, phase: i * 7.3 });
-      }
+    const byOrder = (i: number, count: number) => (i < count ? i : null);
+    renderer.hulls.forEach((hull, i) => {
+      const role = saved ? saved.hullRoles[i] : byOrder(i, this.level.hullRoles.length);
+      if (role !== null) this.hullRoles.set(hull, role);
     });
-    // The level's document is at night; a saved scene keeps its own colours until the slider moves.
-    this._daylight = 0;
+    renderer.lights.forEach((light, i) => {
+      const role = saved ? saved.lightRoles[i] : byOrder(i, this.level.lightRoles.length);
+      if (role === null) return;
+      this.lightRoles.set(light, role);
+      if (!FLICKER[this.level.lightRoles[role].kind]) return;
+      // The lights hold the values shown when the scene was saved; the flicker scales the steady ones.
+      const steady = saved?.flicker.find((entry) => entry.light === i) ?? light;
+      this.steady.set(light, { intensity: steady.intensity, radius: steady.radius, shownIntensity: light.intensity, shownRadius: light.radius, phase: role * 7.3 });
+    });
+    // The colours the slider set are the scene's own: restoring its position changes none.
+    this._daylight = saved?.daylight ?? 0;
+    if (saved) this.time = saved.clock;
+  }
+
+  /** What a saved scene needs besides its lights and hulls to come back drawn the same ({@link attach}). */
+  state(): ShowcaseState {
+    const renderer = this.renderer;
+    if (!renderer) throw new Error('showcase: not attached');
+    return {
+      daylight: this._daylight,
+      clock: this.time,
+      hullRoles: renderer.hulls.map((hull) => this.hullRoles.get(hull) ?? null),
+      lightRoles: renderer.lights.map((light) => this.lightRoles.get(light) ?? null),
+      flicker: renderer.lights.flatMap((light, i) => {
+        const s = this.steady.get(light);
+        // As step() has it: a value edited since the flicker set it is the new steady one.
+        return s ? [{ light: i, intensity: light.intensity === s.shownIntensity ? s.intensity : light.intensity, radius: light.radius === s.shownRadius ? s.radius : light.radius }] : [];
+      }),
+    };
+  }
+
+  /** The level's role of a hull of the scene, or undefined for a hull the editor added. */
+  private hullRole(hull: Hull): HullRole | undefined {
+    const index = this.hullRoles.get(hull);
+    return index === undefined ? undefined : this.level.hullRoles[index];
+  }
+
+  /** The level's role of a light of the scene, or undefined for a light the editor added. */
+  private lightRole(light: Light): LightRole | undefined {
+    const index = this.lightRoles.get(light);
+    return index === undefined ? undefined : this.level.lightRoles[index];
   }
 
   /** Forgets the level's objects (another scene was loaded). */
@@ -104,7 +147,7 @@ export class Showcase {
 
   /** The sky light (sun or moon), while it is in the scene. */
   private sky(): DirectionalLight | null {
-    for (const [light, role] of this.lightRoles) if (role.kind === 'sky' && light instanceof DirectionalLight && this.renderer?.lights.includes(light)) return light;
+    for (const light of this.lightRoles.keys()) if (this.lightRole(light)?.kind === 'sky' && light instanceof DirectionalLight && this.renderer?.lights.includes(light)) return light;
     return null;
   }
 
@@ -129,7 +172,7 @@ export class Showcase {
     this.time += dt;
     const t = this.time;
     for (const [light, s] of this.steady) {
-      const role = this.lightRoles.get(light)!;
+      const role = this.lightRole(light)!;
       const { depth, speed } = FLICKER[role.kind]!;
       // An edit made since the last step becomes the steady value.
       if (light.intensity !== s.shownIntensity) s.intensity = light.intensity;
@@ -143,7 +186,7 @@ export class Showcase {
   /** The flicker of light `light` now, 0..1 (0.5 when it does not flicker). */
   private flickerOf(light: Light): number {
     const s = this.steady.get(light);
-    return s ? flicker(this.time * FLICKER[this.lightRoles.get(light)!.kind]!.speed + s.phase) : 0.5;
+    return s ? flicker(this.time * FLICKER[this.lightRole(light)!.kind]!.speed + s.phase) : 0.5;
   }
 
   /**
@@ -166,26 +209,26 @@ export class Showcase {
 
     this.stains();
     for (const decor of this.level.decor) if (decor.kind === 'rug') this.decor(decor);
-    for (const light of lights) if (this.lightRoles.get(light)?.kind === 'runes') this.sprite(CELLS.runes, light.position[0], light.position[1], 0, 1, 0.6 + 0.4 * this.flickerOf(light));
+    for (const light of lights) if (this.lightRole(light)?.kind === 'runes') this.sprite(CELLS.runes, light.position[0], light.position[1], 0, 1, 0.6 + 0.4 * this.flickerOf(light));
     for (const hull of hulls) {
-      const role = this.hullRoles.get(hull);
+      const role = this.hullRole(hull);
       if (role === 'wall' && hull.enabled) this.wallShade(hull);
       else if (role && role !== 'bar' && hull.enabled) this.blob(hull, role);
     }
     batch.flush(this.textures.props);
 
-    for (const hull of hulls) if (this.hullRoles.get(hull) === 'wall' && hull.enabled) this.wallFaces(hull);
+    for (const hull of hulls) if (this.hullRole(hull) === 'wall' && hull.enabled) this.wallFaces(hull);
     batch.flush(this.textures.face);
-    for (const hull of hulls) if (this.hullRoles.get(hull) === 'wall' && hull.enabled) this.wall(hull);
+    for (const hull of hulls) if (this.hullRole(hull) === 'wall' && hull.enabled) this.wall(hull);
     batch.flush(this.textures.wall);
 
     for (const hull of hulls) {
-      const role = this.hullRoles.get(hull);
+      const role = this.hullRole(hull);
       if (role && role !== 'wall' && hull.enabled) this.prop(hull, role);
     }
     for (const decor of this.level.decor) if (decor.kind !== 'rug') this.decor(decor);
     for (const light of lights) {
-      const role = this.lightRoles.get(light);
+      const role = this.lightRole(light);
       if (!role) continue;
       const [x, y] = light.position;
       if (role.kind === 'brazier') this.sprite(CELLS.brazier, x, y, 0);
@@ -196,11 +239,11 @@ export class Showcase {
       }
     }
     for (const light of lights) {
-      const role = this.lightRoles.get(light);
+      const role = this.lightRole(light);
       if (role?.kind === 'brazier') this.embers(light);
     }
     for (const light of lights) {
-      const role = this.lightRoles.get(light);
+      const role = this.lightRole(light);
       if (role?.kind === 'torch' || role?.kind === 'brazier') this.flame(light, role.kind === 'brazier' ? 1.9 : 1);
     }
     batch.flush(this.textures.props);
