@@ -79,7 +79,7 @@ export interface Illumination {
   /**
    * The lights that reach the point (strength above 0), in the renderer's order, shadowed or not;
    * empty with `perLight: false`. Lights that add nothing there are left out: disabled, out of
-   * range, outside a spotlight's cone, or with their centre inside a hull that shadows them.
+   * range, or outside a spotlight's cone.
    */
   lights: LightIllumination[];
 }
@@ -146,8 +146,8 @@ const EVERYWHERE = [-Infinity, -Infinity, Infinity, Infinity] as const;
  * cone or cookie, and the exact visible fraction of its disk ({@link DiskVisibility}) past the hulls
  * that shadow it, found through a {@link HullGrid} of the hulls' bounds, so a query looks only at
  * the hulls between the point and each light's disk. The rules follow the renderer's frame: a
- * light is skipped when disabled, of intensity or range 0, or when its centre is inside a closed
- * hull that shadows it; a hull shadows a light when it is enabled, valid, shares a layer with the
+ * light is skipped when disabled or of intensity or range 0 (one whose centre is inside a hull is
+ * not: what of its disk lies outside the hulls still shines); a hull shadows a light when it is enabled, valid, shares a layer with the
  * light's `shadowLayers`, is not one of its `ignoredHulls`, and overlaps the light's bounds.
  *
  * A {@link DirectionalLight} has no centre, range or bounds: it gives every point its colour ×
@@ -212,7 +212,8 @@ export class IlluminationQuery {
     let listed = 0;
     for (let i = 0; i < lights.length; i++) {
       const light = lights[i];
-      if ((light.litLayers & layers) === 0 || !this.strengthOf(light, cookie) || !this.visibilityOf(light, hulls)) continue;
+      if ((light.litLayers & layers) === 0 || !this.strengthOf(light, cookie)) continue;
+      this.visibilityOf(light, hulls);
       const strength = values[STRENGTH], visibility = values[VISIBILITY];
       const color = light.color, shadowColor = light.shadowColor, shadowStrength = light.shadowStrength;
       const scale = light.intensity * strength, hidden = 1 - visibility;
@@ -273,7 +274,7 @@ export class IlluminationQuery {
       const color = light.color;
       const full = (LUMA_R * color[0] + LUMA_G * color[1] + LUMA_B * color[2]) * light.intensity * strength;
       highs[i] = full;
-      // A light that casts shadows may have its centre inside a hull: then it adds nothing.
+      // A light that casts shadows may be wholly hidden: at least nothing.
       lows[i] = light.castsShadows ? 0 : full;
       low += lows[i];
       high += full;
@@ -283,13 +284,11 @@ export class IlluminationQuery {
     for (let i = 0; i < lights.length; i++) {
       if (lows[i] === highs[i]) continue;
       const light = lights[i];
-      let exact = 0;
-      if (this.visibilityOf(light, hulls)) {
-        const visibility = values[VISIBILITY], color = light.color, shadowColor = light.shadowColor, shadowStrength = light.shadowStrength, hidden = 1 - visibility;
-        exact = (LUMA_R * color[0] * (visibility + hidden * (1 - shadowStrength * (1 - shadowColor[0])))
-          + LUMA_G * color[1] * (visibility + hidden * (1 - shadowStrength * (1 - shadowColor[1])))
-          + LUMA_B * color[2] * (visibility + hidden * (1 - shadowStrength * (1 - shadowColor[2])))) * light.intensity * strengths[i];
-      }
+      this.visibilityOf(light, hulls);
+      const visibility = values[VISIBILITY], color = light.color, shadowColor = light.shadowColor, shadowStrength = light.shadowStrength, hidden = 1 - visibility;
+      const exact = (LUMA_R * color[0] * (visibility + hidden * (1 - shadowStrength * (1 - shadowColor[0])))
+        + LUMA_G * color[1] * (visibility + hidden * (1 - shadowStrength * (1 - shadowColor[1])))
+        + LUMA_B * color[2] * (visibility + hidden * (1 - shadowStrength * (1 - shadowColor[2])))) * light.intensity * strengths[i];
       low += exact - lows[i];
       high += exact - highs[i];
       if (low > threshold) return true;
@@ -346,22 +345,21 @@ export class IlluminationQuery {
 
   /**
    * The fraction of the light's disk visible from the query point past the hulls that shadow it (1
-   * or 0 inside one, by the light's shadow type), written to `values[VISIBILITY]`; false when the
-   * light's centre is inside one of them (the renderer then leaves the light out). Three searches of
-   * the grid: the hulls at the light's centre (a directional light has none), those at the point,
-   * then those between the point and the disk, until they hide it all.
+   * or 0 inside one, by the light's shadow type), written to `values[VISIBILITY]`. Two searches of
+   * the grid: the hulls at the point, then those between the point and the disk, until they hide
+   * it all.
    */
-  private visibilityOf(light: Light, hulls: readonly Hull[]): boolean {
+  private visibilityOf(light: Light, hulls: readonly Hull[]): void {
     const values = this.values;
     values[VISIBILITY] = 1;
-    if (!light.castsShadows) return true;
+    if (!light.castsShadows) return;
     const directional = light instanceof DirectionalLight;
     if (directional) this.lightBounds.set(EVERYWHERE);
-    else if (this.centreInsideHull(light, hulls)) return false;
+    else this.writeLightBounds(light);
     const holder = this.holderOf(light, hulls);
     if (holder >= 0 && light.shadowType !== ShadowType.Occluded) {
       values[VISIBILITY] = light.shadowType === ShadowType.Illuminated ? 1 : 0;
-      return true;
+      return;
     }
     const visibility = this.visibility, grid = this.grid, flags = this.flags;
     const region = directional ? this.startFarDisk(light) : this.startDisk(light);
@@ -376,20 +374,6 @@ export class IlluminationQuery {
     }
     visibility.computeFraction();
     values[VISIBILITY] = visibility.output[0];
-    return true;
-  }
-
-  /** Whether the light's centre is inside a closed hull that shadows it; writes the light's bounds first. */
-  private centreInsideHull(light: Light, hulls: readonly Hull[]): boolean {
-    this.writeLightBounds(light);
-    const grid = this.grid, box = this.box;
-    box[0] = box[2] = light.position[0];
-    box[1] = box[3] = light.position[1];
-    for (let i = 0, found = grid.search(box); i < found; i++) {
-      const index = grid.found[i];
-      if (this.shadows(light, hulls, index) && this.holds(hulls[index], index, light.position)) return true;
-    }
-    return false;
   }
 
   /** A closed hull that holds the query point and shadows the light (whichever the grid finds first), or −1. */

@@ -3,9 +3,9 @@ import { boxesOverlap, emptyBox, extendBox } from '../geometry/boxes';
 import { HullGrid } from '../geometry/HullGrid';
 import type { Hull } from '../scene/Hull';
 import { DirectionalLight, type Light } from '../scene/lights';
-import { isInsideHull, shadows } from './casters';
+import { shadows } from './casters';
 import { DirectionalFiling } from './directionalFiling';
-import { FilingTable, type LightFiling, UNWRITTEN } from './filings';
+import { FilingTable, type LightFiling } from './filings';
 import { HullMotion, MOVING_FRAMES } from './HullMotion';
 import { LightTiles } from './LightTiles';
 import { type LightDraw, LightPlacement } from './lightPlacement';
@@ -17,20 +17,20 @@ export { LightDraw } from './lightPlacement';
 
 /**
  * Decides each frame which lights are drawn and, per light, which hulls shadow it: a light is
- * skipped when disabled, black, off screen, or when its centre is inside a hull that shadows it
- * (one it does not ignore, in one of its `shadowLayers`). The shadow bins of all drawn lights share
- * the arrays of one {@link ShadowBins}.
+ * skipped when disabled, black or off screen. A light whose centre is inside a hull is drawn like
+ * any other: the part of its disk inside hulls is hidden from every pixel outside them, as the
+ * exact program computes (a disk wholly inside one is dark outside it). The shadow bins of all
+ * drawn lights share the arrays of one {@link ShadowBins}.
  *
  * Each bin holds two lists (see shadowLayout): the hulls that stood still for the last
  * {@link MOVING_FRAMES} frames, and the moving ones, those that changed within them. A point
- * light's filing (its still hulls' list, their count, or that a still hull holds its centre) is
+ * light's filing (its still hulls' list and their count) is
  * kept from one frame to the next while it is drawn, and filed anew only when something it depends
  * on changed: the light's disk, reach or quad left the ones it was filed for (a moving light's are a
  * margin wider, see {@link LightFiling}), its shadow layers, ignored hulls or `castsShadows`
  * changed, a hull whose coarse bounds overlap the filed bounds started or stopped moving (a still
  * hull's before and after its first change), or the hulls' layout changed. Its list of moving hulls
- * is filed every frame, around the same origin, for the same disk and reach; a light whose centre
- * is inside a moving hull is skipped for that frame. A filing without a margin holds the same hulls
+ * is filed every frame, around the same origin, for the same disk and reach. A filing without a margin holds the same hulls
  * as a new one (split between the lists otherwise) but for their order within a distance bucket.
  * Directional lights are filed every frame, every hull in the first list: their strips follow the
  * view.
@@ -67,11 +67,6 @@ export class FramePlan {
   private readonly movingReach = new Float64Array(4);
   /** The filed disk of the light being filed or classified. */
   private readonly filedDisk: FiledDisk = new Float64Array(5);
-  /** The centre of the light being filed or checked, for `isInsideHull`. */
-  private readonly centre = new Float64Array(2);
-  /** The draws (by number) whose light moved within its kept filing this frame, `movedCount` of them: their centres are checked against the hulls. */
-  private moved = new Int32Array(64);
-  private movedCount = 0;
   /** The geometry layout the filings were made for. */
   private layoutVersion = -1;
   private frame = 0;
@@ -102,24 +97,21 @@ export class FramePlan {
     const toFile = this.findFilingsToRedo(placed);
     // Every light filed anew: their spans are laid out afresh, packed from the first entry.
     if (toFile === placed) this.filings.releaseSpans();
-    if (toFile > 0 || this.movedCount > 0 || this.unclassifiedKept) this.grid.build(geometry.coarseBounds, motion.stillCasters, hulls.length, this.reach);
+    if (toFile > 0 || this.unclassifiedKept) this.grid.build(geometry.coarseBounds, motion.stillCasters, hulls.length, this.reach);
     if (motion.movingCount > 0) this.movingGrid.build(geometry.coarseBounds, motion.movingCasters, hulls.length, this.movingReach);
-    this.checkMovedCentres(hulls, geometry);
-    // Keeps the placed lights whose centre is not inside a hull, in order.
     for (let i = 0; i < placed; i++) {
       const draw = this.draws[i], filing = draw.filing;
       if (filing.filedFrame === this.frame) {
         this.filedCount++;
         if (draw.light instanceof DirectionalLight) this.directional.file(draw, hulls, geometry, this.bins, this.grid, motion.movingCount > 0 ? this.movingGrid : null);
-        else filing.skipped = !this.collectHulls(draw, hulls, geometry);
-      } else if (filing.unclassified && !filing.skipped && filing.stillRecords <= this.budgetLeft) {
+        else this.collectHulls(draw, hulls, geometry);
+      } else if (filing.unclassified && filing.stillRecords <= this.budgetLeft) {
         this.classifyKept(draw, hulls, geometry);
       }
-      if (filing.skipped || !this.fileMovingHulls(draw, hulls, geometry)) continue;
+      this.fileMovingHulls(draw, hulls, geometry);
       this.writeOutput(draw);
-      this.draws[i] = this.draws[this.drawCount];
-      this.draws[this.drawCount++] = draw;
     }
+    this.drawCount = placed;
     this.filings.releaseUnused(this.frame);
   }
 
@@ -138,10 +130,9 @@ export class FramePlan {
 
   /**
    * Gives each placed light its filing, marks the filings whose light or whose hulls changed (see
-   * {@link FramePlan}) as not current and records them anew (to be filed), lists in `moved` the
-   * kept filings of lights that moved, and puts the bounds of both kinds of light's shadow casters
-   * together in `reach`, and those of every placed light that casts shadows in `movingReach`;
-   * returns how many are to be filed.
+   * {@link FramePlan}) as not current and records them anew (to be filed), and puts the bounds of
+   * the lights to be filed (and of those left unclassified) together in `reach`, and those of every
+   * placed light that casts shadows in `movingReach`; returns how many are to be filed.
    */
   private findFilingsToRedo(placed: number): number {
     for (let i = 0; i < placed; i++) {
@@ -166,17 +157,12 @@ export class FramePlan {
     emptyBox(reach);
     emptyBox(movingReach);
     let count = 0;
-    this.movedCount = 0;
     this.unclassifiedKept = false;
-    if (this.moved.length < placed) this.moved = new Int32Array(2 * placed);
     for (let i = 0; i < placed; i++) {
       const draw = this.draws[i], filing = draw.filing;
       if (!filing.current) {
         count++;
         filing.record(draw, this.frame);
-      } else if (!filing.skipped && filing.centreMoved()) {
-        this.moved[this.movedCount++] = i;
-        extendBox(reach, draw.bounds);
       }
       if (!draw.light.castsShadows) continue;
       const b = draw.light instanceof DirectionalLight ? this.directional.searchBox(draw) : filing.filedBounds;
@@ -188,40 +174,15 @@ export class FramePlan {
   }
 
   /**
-   * Checks the centres of the lights that moved within their kept filing (see `moved`): a light
-   * whose centre is now inside a still hull that shadows it is filed anew (which skips it). The
-   * moving hulls are checked with every light each frame (`fileMovingHulls`).
-   */
-  private checkMovedCentres(hulls: readonly Hull[], geometry: ShadowGeometry): void {
-    const grid = this.grid, box = this.reach, centre = this.centre;
-    for (let m = 0; m < this.movedCount; m++) {
-      const draw = this.draws[this.moved[m]], filing = draw.filing, light = draw.light;
-      centre[0] = box[0] = box[2] = light.position[0];
-      centre[1] = box[1] = box[3] = light.position[1];
-      const count = grid.search(box);
-      let inside = false;
-      for (let i = 0; i < count && !inside; i++) {
-        const index = grid.found[i];
-        if (!shadows(light, hulls, geometry, index)) continue;
-        geometry.prepare(index);
-        inside = isInsideHull(hulls, geometry, index, centre);
-      }
-      if (inside) filing.record(draw, this.frame);
-      else filing.checked();
-    }
-  }
-
-  /**
    * Files the still hulls in range into the light's first list (empty when it has none, as the
-   * moving list may not be); false when the light's centre is inside one.
+   * moving list may not be).
    */
-  private collectHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
+  private collectHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): void {
     const light = draw.light, filing = draw.filing;
     filing.hullCount = 0;
     filing.unclassified = false;
-    if (!light.castsShadows) return true;
+    if (!light.castsShadows) return;
     const count = this.findHullsInRange(draw, hulls, geometry, this.grid);
-    if (count < 0) return false;
     filing.hullCount = count;
     this.bins.beginLight(filing.writeDisk(this.filedDisk));
     this.bins.addHulls(geometry, this.grid.found, count);
@@ -232,13 +193,11 @@ export class FramePlan {
     filing.unclassified = records > this.budgetLeft;
     if (filing.unclassified) this.tiles.endUnclassified(filing.row);
     else this.classifyStillHulls(filing, geometry, count);
-    return true;
   }
 
   /** Classifies the tiles of a kept filing left unclassified, its still hulls (`stillRecords`) fitting what is left of the budget. */
   private classifyKept(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): void {
     const filing = draw.filing, count = this.findHullsInRange(draw, hulls, geometry, this.grid);
-    if (count < 0) return;
     filing.unclassified = false;
     this.beginTiles(filing);
     this.classifyStillHulls(filing, geometry, count);
@@ -260,18 +219,13 @@ export class FramePlan {
   /**
    * Files the moving hulls in range into a point light's moving list, around its filing's origin, for
    * its filed disk and reach (see {@link LightFiling}); writes the list only when it holds hulls or
-   * did. False when the light's centre is inside one (the light is skipped this frame). A directional
-   * light's moving list stays empty: its first list holds every hull.
+   * did. A directional light's moving list stays empty: its first list holds every hull.
    */
-  private fileMovingHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): boolean {
+  private fileMovingHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): void {
     const light = draw.light, filing = draw.filing;
     let count = 0;
     if (light.castsShadows && this.motion.movingCount > 0 && !(light instanceof DirectionalLight)) {
       count = this.findHullsInRange(draw, hulls, geometry, this.movingGrid);
-      if (count < 0) {
-        filing.movingCount = UNWRITTEN;
-        return false;
-      }
     }
     if (count > 0) {
       this.bins.beginLight(filing.writeDisk(this.filedDisk));
@@ -283,7 +237,6 @@ export class FramePlan {
       if (!(light instanceof DirectionalLight)) this.tiles.restoreKept(filing.row);
     }
     filing.movingCount = count;
-    return true;
   }
 
   /** Adds the `count` moving hulls the moving grid found to a classified light's tiles, when they fit the budget (see {@link FramePlan.classificationBudget}). */
@@ -303,16 +256,13 @@ export class FramePlan {
    * Leaves in `grid.found` the hulls of `grid` whose exact bounds overlap the light's filed bounds
    * and whose circle reaches within its filed reach of its centre (see `LightFiling`), transforming
    * each candidate the grid finds by its coarse bounds first (see `ShadowGeometry.prepare`), so every
-   * change reaches the light this frame; returns how many, or -1 when the light centre is inside one
-   * of them. Reads the geometry's flat arrays, not the hulls: this runs for every hull in every
+   * change reaches the light this frame; returns how many. Reads the geometry's flat arrays, not the hulls: this runs for every hull in every
    * light's range. (The bins file them in a loop of their own, `ShadowBins.addHulls`: inlined here,
    * their arithmetic would pass doubles to helpers V8 no longer inlines, boxing them for every hull.)
    */
   private findHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry, grid: HullGrid): number {
     const light = draw.light, filing = draw.filing;
     const lx = filing.originX, ly = filing.originY;
-    this.centre[0] = lx;
-    this.centre[1] = ly;
     const b = filing.filedBounds;
     const count = grid.search(b), found = grid.found;
     const bounds = geometry.worldBounds, circles = geometry.circles, reach = filing.filedReach;
@@ -326,7 +276,6 @@ export class FramePlan {
       // Beyond the reach: the segments from the pixels within it to the disk stay within it too.
       const dx = circles[3 * index] - lx, dy = circles[3 * index + 1] - ly, beyond = reach + circles[3 * index + 2];
       if (dx * dx + dy * dy >= beyond * beyond) continue;
-      if (isInsideHull(hulls, geometry, index, this.centre)) return -1;
       found[added++] = index;
     }
     return added;

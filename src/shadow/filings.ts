@@ -100,7 +100,7 @@ function byFirstEntry(a: BinSpan, b: BinSpan): number {
 
 /**
  * A light's filing as of the frame it was made (see `FramePlan`): what it depends on, and what
- * it gave: the still hulls' count, whether the light is skipped, its row of bins and the spans of
+ * it gave: the still hulls' count, its row of bins and the spans of
  * its two lists' entries.
  *
  * A point light is filed for a disk and a reach a margin wider than its own, around its centre
@@ -118,7 +118,6 @@ function byFirstEntry(a: BinSpan, b: BinSpan): number {
 export class LightFiling {
   /** Whether the filing still holds: false until made, and once something it depends on changed. */
   current = false;
-  skipped = false;
   /** Hulls in the still hulls' list, and in the moving list as last written ({@link UNWRITTEN}: not known). */
   hullCount = 0;
   /** The still hulls' records, and whether they were left unclassified (the budget spent, see `FramePlan.classificationBudget`). */
@@ -143,9 +142,6 @@ export class LightFiling {
   private endedByHulls = false;
   /** The frame the filing was last recorded (0: never): the plan files it in that frame. */
   filedFrame = 0;
-  /** The light's centre when last checked against the hulls. */
-  private checkedX = 0;
-  private checkedY = 0;
   private castsShadows = false;
   private shadowLayers = 0;
   private shadowType: ShadowType = 'solid';
@@ -166,8 +162,8 @@ export class LightFiling {
     this.endedByHulls = false;
     this.filedFrame = frame;
     this.current = true;
-    this.originX = this.checkedX = x;
-    this.originY = this.checkedY = y;
+    this.originX = x;
+    this.originY = y;
     this.filedRadius = light.radius + margin;
     this.filedReach = draw.reach + margin;
     this.bucketWidth = bucketWidthOf(this.filedReach);
@@ -186,15 +182,13 @@ export class LightFiling {
 
   /**
    * Whether the filing holds for the light placed as `draw`: its disk, reach and quad within the
-   * filed ones, a skipped light's centre where it was (a directional light's filing never holds:
-   * its strips follow the view).
+   * filed ones (a directional light's filing never holds: its strips follow the view).
    */
   matches(draw: LightDraw): boolean {
     const light = this.light;
     if (light instanceof DirectionalLight || light.castsShadows !== this.castsShadows || light.shadowLayers !== this.shadowLayers
       || light.shadowType !== this.shadowType || !this.sameIgnoredHulls()) return false;
     const dx = light.position[0] - this.originX, dy = light.position[1] - this.originY;
-    if (this.skipped) return dx === 0 && dy === 0;
     const moved = Math.sqrt(dx * dx + dy * dy), b = draw.bounds, own = this.filedBounds;
     return moved + light.radius <= this.filedRadius && moved + draw.reach <= this.filedReach
       && b[0] >= own[0] && b[1] >= own[1] && b[2] <= own[2] && b[3] <= own[3];
@@ -204,17 +198,6 @@ export class LightFiling {
   endByHulls(): void {
     this.current = false;
     this.endedByHulls = true;
-  }
-
-  /** Whether the light's centre moved since the filing was made or last {@link LightFiling.checked}. */
-  centreMoved(): boolean {
-    return this.light.position[0] !== this.checkedX || this.light.position[1] !== this.checkedY;
-  }
-
-  /** Notes that the light's centre, where it is now, was found inside no hull that shadows it. */
-  checked(): void {
-    this.checkedX = this.light.position[0];
-    this.checkedY = this.light.position[1];
   }
 
   /** Writes the disk, reach and bucket width the filing was made for into `out`, and returns it. */

@@ -155,6 +155,19 @@ export const REFERENCE_SCENES: readonly ReferenceScene[] = [
   { name: 'wide light grazing two hulls (r=20)', width: WIDTH, height: HEIGHT,
     lights: [{ position: [80, 60], range: 110, radius: 20 }], hulls: [box(44, 45, 18, 10), box(93, 73, 14, 14)] },
 
+  // Centres inside hulls: what of the disk lies outside them still emits, what lies inside is hidden.
+  // A torch that drifted two pixels into a wall: the half of its disk above the wall lights the room.
+  { name: 'torch with its centre inside a wall (r=8)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [80, 62], range: 120, radius: 8 }], hulls: [box(30, 60, 100, 10), box(60, 28, 10, 10)] },
+  // A wide lamp on a small table: the ring of its disk around the table.
+  { name: 'wide lamp centred on a small crate (r=12)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [80, 60], range: 110, radius: 12 }], hulls: [box(75, 56, 9, 8), box(110, 40, 10, 30)] },
+  // A lamp wholly inside a block: dark everywhere but inside the block (Solid: dark there too).
+  { name: 'lamp wholly inside a block (r=4)', width: WIDTH, height: HEIGHT,
+    lights: [{ position: [80, 60], range: 110, radius: 4 }], hulls: [box(70, 50, 20, 20)] },
+  { name: 'torch with its centre inside a wall, Illuminated (r=8)', width: WIDTH, height: HEIGHT, shadowType: 'illuminated',
+    lights: [{ position: [80, 62], range: 120, radius: 8 }], hulls: [box(30, 60, 100, 10), box(60, 28, 10, 10)] },
+
   // Open polylines: thin walls and fences with no inside, blocking light from both sides.
   { name: 'fence across the light (r=8)', width: WIDTH, height: HEIGHT,
     lights: [{ position: [40, 60], range: 140, radius: 8 }], hulls: [], polylines: [[[80, 35], [80, 85]]] },

@@ -41,10 +41,12 @@ describe('FramePlan culling', () => {
     expect(plan(lights, []).drawCount).toBe(0);
   });
 
-  it('skips a light whose centre is inside a hull, unless it ignores that hull', () => {
+  it('draws a light whose centre is inside a hull, shadowed by it unless it ignores it', () => {
     const housing = new Hull([[40, 40], [60, 40], [60, 60], [40, 60]]);
     const inside = new PointLight({ position: [50, 50], range: 30 });
-    expect(plan([inside], [housing]).drawCount).toBe(0);
+    const held = plan([inside], [housing]);
+    expect(drawnLights(held)).toEqual([inside]);
+    expect(held.draws[0].hullCount).toBe(1);
     inside.ignoredHulls.add(housing);
     const framePlan = plan([inside], [housing]);
     expect(drawnLights(framePlan)).toEqual([inside]);

@@ -231,11 +231,15 @@ describe('IlluminationQuery: the rules of the renderer\'s model', () => {
     expect(redAt([solid], [fence], ...inside)).toBeGreaterThan(0);
   });
 
-  it('leaves out a light whose centre is inside a hull that shadows it, and only such a light', () => {
+  it('hides the part of a light\'s disk inside a hull: all of it for a disk wholly inside, the rest still shining', () => {
     const hull = new Hull(box(10, 40, 20, 20), { layers: 0b01 });
     const trapped = new PointLight({ ...LIGHT });
-    expect(illuminationAt([trapped], [hull], 40, 50).lights).toEqual([]);
+    expect(illuminationAt([trapped], [hull], 40, 50).lights.map(({ visibility }) => visibility)).toEqual([0]);
     expect(redAt([trapped], [hull], 40, 50)).toBe(0);
+    // The disk (x 16..24) reaching 2 units past the hull's right side (x = 22): that part shines,
+    // a sliver of the disk between chords 0.5 and 1 of its radius.
+    const halfIn = illuminationAt([trapped], [new Hull(box(10, 40, 12, 20))], 40, 50).lights[0].visibility;
+    expect(halfIn).toBeCloseTo((Math.acos(0.5) - 0.5 * Math.sqrt(0.75)) / Math.PI, 3);
     // Not when the hull is in another layer, ignored, disabled or open, or the light casts no shadows.
     expect(redAt([new PointLight({ ...LIGHT, shadowLayers: 0b10 })], [hull], 40, 50)).toBeCloseTo(falloffAt([40, 50]), 9);
     expect(redAt([new PointLight({ ...LIGHT, ignoredHulls: [hull] })], [hull], 40, 50)).toBeCloseTo(falloffAt([40, 50]), 9);
