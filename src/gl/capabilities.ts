@@ -56,6 +56,16 @@ function describeContext(gl: unknown): string {
   return contextKind(gl) === 'webgl1' ? `a WebGL1 context${named}` : `an object${named}`;
 }
 
+/**
+ * Whether the context's canvas is multisampled and has no alpha channel (made with `antialias:
+ * true, alpha: false`). `drawInPlace` cannot copy such a canvas: `blitFramebuffer` from a
+ * multisampled buffer needs the RGBA format of its target, and fails (the lighting draws black).
+ */
+export function isOpaqueMultisampledCanvas(gl: WebGL2RenderingContext): boolean {
+  const attributes = gl.getContextAttributes();
+  return attributes !== null && attributes.antialias === true && attributes.alpha === false;
+}
+
 /** Whether half-float colour targets can be rendered to and blended. */
 export function supportsFloatTargets(gl: WebGL2RenderingContext): boolean {
   return gl.getExtension('EXT_color_buffer_float') != null;

@@ -1,9 +1,13 @@
 import Phaser from 'phaser';
-import { PenumbraRenderer, type Hull, type Light, type LightOptions, type PenumbraRendererOptions } from '../../index';
+import { Light, PenumbraRenderer, type Hull, type LightOptions, type PenumbraRendererOptions } from '../../index';
 import { ALL_LAYERS, assertLayerMask } from '../../scene/validate';
+import { isOpaqueMultisampledCanvas, isWebGL2, notWebGL2Error } from '../../gl/capabilities';
 import { InPlaceLighting, type InPlaceView } from '../inPlaceLighting';
+import { LightFollower, type LightFollowOptions } from '../LightFollower';
 import type { Affine2D } from '../viewProjection';
+import { PHASER_WEBGL2_FIX } from './gameConfig';
 import { PenumbraGroup, type PenumbraGroupOptions } from './PenumbraGroup';
+import { describe, readPlacement, type Placed, type Placement } from './shared';
 import { SpriteHulls, type FrameObject, type SpriteHullsOptions } from './SpriteHulls';
 import { PhaserSurfaces, type MaterialOptions } from './surfaces';
 import { TilemapLayerHulls, type TilemapLayerHullsOptions } from './TilemapLayerHulls';
@@ -19,7 +23,9 @@ export type PenumbraPluginOptions = Omit<PenumbraRendererOptions, 'viewProjectio
 
 /**
  * A Phaser 4 scene plugin: `this.penumbra.addLight(…)` inside a scene. Install it in the game
- * config with `plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra' }] }`.
+ * config with `plugins: { scene: [{ key: 'PenumbraPlugin', plugin: PenumbraPlugin, mapping: 'penumbra' }] }`,
+ * and pass that config through {@link penumbraGameConfig}, which gives Phaser the WebGL2 context
+ * the lighting needs (Phaser 4 makes a WebGL1 one by default, and the plugin then throws, saying so).
  * Renderer options ({@link PenumbraPluginOptions}: `ambientColor`, `lightmapScale`, `measureCpuTime`, …)
  * go in that entry's `data`, for every scene: `{ key: 'PenumbraPlugin', plugin: PenumbraPlugin,
  * mapping: 'penumbra', data: { lightmapScale: 0.5 } }`; one scene can change them with
@@ -36,7 +42,7 @@ export type PenumbraPluginOptions = Omit<PenumbraRendererOptions, 'viewProjectio
  *
  * Game content casts shadows through {@link PenumbraPlugin.addTilemapLayer} (a tilemap layer's
  * solid tiles, kept in step as tiles change) and {@link PenumbraPlugin.addSprite} (a sprite's
- * opaque pixels, following the sprite).
+ * opaque pixels, following the sprite); lights follow game objects through {@link PenumbraPlugin.follow}.
  */
 export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   /** The renderer, and what lights in place with it; null before boot and once destroyed. */
@@ -51,6 +57,10 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   private surfaces: PhaserSurfaces | null = null;
   /** The tilemap layers and sprites added, with their hulls. */
   private readonly occluders = new Map<Phaser.GameObjects.GameObject, TilemapLayerHulls | SpriteHulls>();
+  private readonly _followers: LightFollower<Placed>[] = [];
+  /** Scratch for a follower's object placement and its object → world transform. */
+  private readonly followedPlacement: Placement = { x: 0, y: 0, rotation: 0, scaleX: 1, scaleY: 1 };
+  private readonly followedTransform = new Float64Array(6);
 
   /** The core renderer: ambient colour, debug wireframe, stats, lights and hulls. */
   get penumbra(): PenumbraRenderer {
@@ -138,9 +148,71 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   addLight<T extends Light>(light: T): T {
     return this.penumbra.addLight(light);
   }
-  /** Removes a light; returns whether it was there. */
+  /** Removes a light, and stops it following a game object; returns whether it was there. */
   removeLight(light: Light): boolean {
+    this.dropFollower(light, false);
     return this.penumbra.removeLight(light);
+  }
+
+  /**
+   * Makes a light follow a game object (a sprite, an image, a container, any object with a
+   * transform): it sits at `options.offset` in the object's local space (default the object's
+   * origin point; a sprite's flipX and flipY mirror it within the frame, as Phaser draws the
+   * picture) and, with `options.rotation`, turns with the object; it shines while the object is
+   * visible and on a display list. The light is added to the scene's lighting and placed before
+   * every render. Following the same light again replaces the follower. It ends when the object is
+   * destroyed (the light is removed too), when the scene shuts down, on
+   * {@link PenumbraPlugin.removeLight} or on {@link PenumbraPlugin.unfollow}. See {@link LightFollower}.
+   *
+   * ```ts
+   * const player = this.physics.add.sprite(100, 100, 'hero');
+   * this.penumbra.follow(player, new PointLight({ range: 200, radius: 6 }), { offset: [0, -12] });  // a torch over its head
+   * this.penumbra.follow(turret, new Spotlight({ range: 300, coneAngle: 0.4 }), { rotation: 0 });   // a beam along the turret's +x
+   * ```
+   * @throws TypeError for an object without a transform, or an option of the wrong type.
+   */
+  follow<T extends Light>(object: Phaser.GameObjects.GameObject, light: T, options: LightFollowOptions = {}): LightFollower<Placed> {
+    if (!(object instanceof Phaser.GameObjects.GameObject) || typeof (object as Partial<Placed>).scaleX !== 'number') {
+      throw new TypeError(`penumbra: PenumbraPlugin.follow takes a game object with a transform (a Sprite, an Image, a Container…), got ${describe(object)}`);
+    }
+    if (!(light instanceof Light)) throw new TypeError(`penumbra: PenumbraPlugin.follow takes a Light to move, got ${describe(light)}`);
+    const placed = object as Placed;
+    const follower = new LightFollower(placed, light, options, 'PenumbraPlugin.follow');
+    this.dropFollower(light, true);
+    this.penumbra.addLight(light);
+    if (!this._followers.some((other) => other.object === placed)) placed.on(Phaser.GameObjects.Events.DESTROY, this.followedDestroyed, this);
+    this._followers.push(follower);
+    this.placeFollower(follower);
+    return follower;
+  }
+
+  /** The lights following game objects, in the order they started. */
+  get followers(): readonly LightFollower<Placed>[] {
+    return this._followers;
+  }
+
+  /**
+   * Stops a light following its game object, or every light following a game object: the lights
+   * stay in the lighting where they are, enabled. Returns whether one was following.
+   */
+  unfollow(target: LightFollower<Placed> | Light | Phaser.GameObjects.GameObject): boolean {
+    let stopped = false;
+    for (let i = this._followers.length - 1; i >= 0; i--) {
+      const follower = this._followers[i];
+      if (follower !== target && follower.light !== target && follower.object !== target) continue;
+      this.stopFollower(i);
+      stopped = true;
+    }
+    return stopped;
+  }
+
+  /**
+   * Places every following light for its object's current transform. Runs before every render of
+   * the scene; call it yourself only to read the lights' placement right after a change.
+   */
+  updateFollowers(): void {
+    const followers = this._followers;
+    for (let i = 0; i < followers.length; i++) this.placeFollower(followers[i]);
   }
   /** Adds a hull in world units; see {@link PenumbraRenderer.addHull}. */
   addHull(hull: Hull): Hull {
@@ -226,6 +298,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     const events = this.systems!.events;
     events.on(Phaser.Scenes.Events.START, this.onStart, this);
     events.on(Phaser.Scenes.Events.SHUTDOWN, this.onShutdown, this);
+    events.on(Phaser.Scenes.Events.PRE_RENDER, this.updateFollowers, this);
     events.once(Phaser.Scenes.Events.DESTROY, this.destroy, this);
   }
 
@@ -234,8 +307,10 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     const events = this.systems?.events;
     events?.off(Phaser.Scenes.Events.START, this.onStart, this);
     events?.off(Phaser.Scenes.Events.SHUTDOWN, this.onShutdown, this);
+    events?.off(Phaser.Scenes.Events.PRE_RENDER, this.updateFollowers, this);
     events?.off(Phaser.Scenes.Events.DESTROY, this.destroy, this);
     this.dropOccluders();
+    this.dropFollowers();
     this.extern?.destroy();
     this.extern = null;
     this.inPlace?.renderer.dispose();
@@ -267,11 +342,81 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     for (const occluder of [...this.occluders.values()]) occluder.destroy();
   }
 
+  private dropFollowers(): void {
+    for (let i = this._followers.length - 1; i >= 0; i--) this.stopFollower(i);
+  }
+
+  /**
+   * Places a follower's light by its object's world transform T(x, y) · R(rotation) · S(scale),
+   * after the mirror that flipX and flipY make of a frame object: Phaser draws a flipped frame
+   * mirrored within its untrimmed size (about the frame's custom pivot, if it has one), so a local
+   * x becomes `realWidth − 2 · displayOriginX − x`.
+   */
+  private placeFollower(follower: LightFollower<Placed>): void {
+    const object = follower.object;
+    const p = readPlacement(object, true, this.followedPlacement);
+    let fx = 1, fy = 1, ex = 0, ey = 0;
+    const framed = object as Partial<FrameObject>;
+    if (framed.frame) {
+      const pivot = framed.frame.customPivot;
+      if (framed.flipX) {
+        fx = -1;
+        if (!pivot) ex = framed.frame.realWidth - 2 * framed.displayOriginX!;
+      }
+      if (framed.flipY) {
+        fy = -1;
+        if (!pivot) ey = framed.frame.realHeight - 2 * framed.displayOriginY!;
+      }
+    }
+    const cos = Math.cos(p.rotation), sin = Math.sin(p.rotation);
+    const a = cos * p.scaleX, b = sin * p.scaleX, c = -sin * p.scaleY, d = cos * p.scaleY;
+    const m = this.followedTransform;
+    m[0] = a * fx;
+    m[1] = b * fx;
+    m[2] = c * fy;
+    m[3] = d * fy;
+    m[4] = a * ex + c * ey + p.x;
+    m[5] = b * ex + d * ey + p.y;
+    const visible = (object as Partial<Phaser.GameObjects.Components.Visible>).visible !== false;
+    const shown = visible && (object.displayList != null || object.parentContainer != null);
+    follower.place(m, shown);
+  }
+
+  /** Ends follower `i`: stops listening to its object once no other follower needs it, and hands the light back. */
+  private stopFollower(i: number): LightFollower<Placed> {
+    const [follower] = this._followers.splice(i, 1);
+    if (!this._followers.some((other) => other.object === follower.object)) {
+      follower.object.off(Phaser.GameObjects.Events.DESTROY, this.followedDestroyed, this);
+    }
+    follower.release();
+    return follower;
+  }
+
+  /** Ends the follower of `light`, if any; `keep` leaves the light in the lighting. */
+  private dropFollower(light: Light, keep: boolean): void {
+    const i = this._followers.findIndex((follower) => follower.light === light);
+    if (i < 0) return;
+    this.stopFollower(i);
+    if (!keep) this.inPlace?.renderer.removeLight(light);
+  }
+
+  /** A followed object was destroyed: its lights go with it. */
+  private followedDestroyed(object: Phaser.GameObjects.GameObject): void {
+    for (let i = this._followers.length - 1; i >= 0; i--) {
+      if (this._followers[i].object === object) this.inPlace?.renderer.removeLight(this.stopFollower(i).light);
+    }
+  }
+
   private createLighting(options: PenumbraPluginOptions): InPlaceLighting {
     const renderer = this.game!.renderer as Partial<Phaser.Renderer.WebGL.WebGLRenderer>;
     if (!renderer.gl) throw new TypeError('penumbra: PenumbraPlugin needs Phaser\'s WebGL renderer (type: Phaser.WEBGL)');
-    const gl = renderer.gl as WebGL2RenderingContext;
-    // Phaser 4 types its context as WebGL1; PenumbraRenderer checks for WebGL2 itself.
+    const gl: unknown = renderer.gl;
+    if (!isWebGL2(gl)) throw notWebGL2Error('PenumbraPlugin', gl, PHASER_WEBGL2_FIX);
+    if (isOpaqueMultisampledCanvas(gl)) {
+      throw new Error('penumbra: PenumbraPlugin cannot light Phaser\'s canvas: its context is antialiased and opaque (antialias: true, '
+        + 'alpha: false), and the lighting copies a multisampled canvas only into its own RGBA format; make the game with '
+        + 'penumbraGameConfig, or make the context with antialias: false or alpha: true');
+    }
     const penumbra = new PenumbraRenderer(gl, {
       ...options,
       viewProjection: null,
@@ -303,6 +448,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   private onShutdown(): void {
     this.extern = null;
     this.dropOccluders();
+    this.dropFollowers();
     const penumbra = this.inPlace?.renderer;
     if (!penumbra) return;
     for (let i = penumbra.lights.length - 1; i >= 0; i--) penumbra.removeLight(penumbra.lights[i]);

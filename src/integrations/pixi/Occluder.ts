@@ -94,8 +94,7 @@ export class Occluder {
    */
   update(space: OccluderSpace): void {
     this.refresh();
-    relativeTransform(this.object, space);
-    const shown = this.enabled && walk.visible && (walk.found || walk.root === space.root);
+    const shown = placeInSpace(this.object, space, RELATIVE) && this.enabled;
     if (shown !== this.shown) {
       this.shown = shown;
       for (let i = 0; i < this._hulls.length; i++) this._hulls[i].enabled = shown;
@@ -250,13 +249,19 @@ function walkUp(object: Container, stop: Container | null, out: Float64Array): v
   walk.root = top;
 }
 
-/** `RELATIVE` = `object` → camera space (or stage space without a camera), with {@link walk} filled in. */
-function relativeTransform(object: Container, space: OccluderSpace): void {
-  walkUp(object, space.camera, RELATIVE);
-  if (walk.found || !space.camera) return;
-  // The camera is not an ancestor: through the stage, then into the camera's space.
-  WALKED.set(RELATIVE);
-  multiply(RELATIVE, space.fromRoot, WALKED, 0);
+/**
+ * Writes into `out` the transform from `object`'s local space to the camera's (or to the stage
+ * without a camera), `[a, b, c, d, tx, ty]`, and returns whether the object is shown: it and every
+ * parent up to the camera are visible, and it is in the stage the layer is drawn in. @internal
+ */
+export function placeInSpace(object: Container, space: OccluderSpace, out: Float64Array): boolean {
+  walkUp(object, space.camera, out);
+  if (!walk.found && space.camera) {
+    // The camera is not an ancestor: through the stage, then into the camera's space.
+    WALKED.set(out);
+    multiply(out, space.fromRoot, WALKED, 0);
+  }
+  return walk.visible && (walk.found || walk.root === space.root);
 }
 
 /**

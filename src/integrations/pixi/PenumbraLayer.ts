@@ -1,9 +1,11 @@
 import { Graphics, RenderContainer, Sprite, type Container, type Renderer, type TextureSource, type WebGLRenderer } from 'pixi.js';
-import { Hull, PenumbraRenderer, type Light, type LightOptions, type PenumbraRendererOptions } from '../../index';
-import { ALL_LAYERS, assertLayerMask } from '../../scene/validate';
+import { Hull, Light, PenumbraRenderer, type LightOptions, type PenumbraRendererOptions } from '../../index';
+import { isOpaqueMultisampledCanvas, isWebGL2, notWebGL2Error } from '../../gl/capabilities';
+import { ALL_LAYERS, assertLayerMask, describeValue } from '../../scene/validate';
 import { InPlaceLighting, type InPlaceView } from '../inPlaceLighting';
+import { LightFollower, type LightFollowOptions } from '../LightFollower';
 import { GraphicsOccluder, type GraphicsHullsOptions } from './graphicsHulls';
-import { Occluder, prepareSpace, type OccluderSpace } from './Occluder';
+import { Occluder, placeInSpace, prepareSpace, type OccluderSpace } from './Occluder';
 import { gpuReads, SpriteOccluder, type SpriteHullsOptions } from './spriteHulls';
 import { PixiSurfaces, type SurfaceOptions } from './surfaces';
 
@@ -24,6 +26,10 @@ export interface PenumbraLayerOptions extends Omit<PenumbraRendererOptions, 'vie
 
 type BindState = ReturnType<WebGLRenderer['renderTarget']['getBindState']>;
 
+/** What to do when Pixi's context is not WebGL2: Pixi falls back to WebGL1 when asked to, or without WebGL2. */
+const PIXI_WEBGL2_FIX = 'Pixi made a WebGL1 context (preferWebGLVersion: 1, or no WebGL2 in this browser); '
+  + 'init the Application with preference: \'webgl\' and preferWebGLVersion: 2 (the default) in a browser with WebGL2';
+
 /**
  * A PixiJS v8 display object that lights everything drawn before it in the same render target.
  * Put it in the stage after the world and before the HUD: the world is multiplied by the
@@ -43,9 +49,12 @@ type BindState = ReturnType<WebGLRenderer['renderTarget']['getBindState']>;
  *
  * Hulls can also follow display objects: {@link PenumbraLayer.addOccluder} traces a `Sprite`'s
  * alpha or reads a `Graphics`' shapes, {@link PenumbraLayer.follow} takes your own hulls; the
- * layer moves them with their objects each time it renders (see {@link Occluder}).
+ * layer moves them with their objects each time it renders (see {@link Occluder}). Lights follow
+ * display objects the same way: `follow(object, light)` (see {@link LightFollower}).
  *
- * Only the WebGL renderer is supported (`preference: 'webgl'`). `destroy()` frees the GL resources.
+ * Only the WebGL renderer is supported (`preference: 'webgl'`), on a WebGL2 context (Pixi's default),
+ * and not on an antialiased opaque canvas (`antialias: true` with an opaque background), which the
+ * lighting cannot copy: the constructor throws, saying so. `destroy()` frees the GL resources.
  * The members it inherits from Pixi's `RenderContainer` are documented by Pixi.
  *
  * @noInheritDoc
@@ -59,6 +68,9 @@ export class PenumbraLayer extends RenderContainer {
   private readonly bindState = {} as BindState;
   private readonly pixi: Renderer;
   private readonly _occluders: Occluder[] = [];
+  private readonly _followers: LightFollower<Container>[] = [];
+  /** Scratch for a follower's object → camera transform. */
+  private readonly followerPlacement = new Float64Array(6);
   private readonly space: OccluderSpace = { camera: null, root: null, fromRoot: new Float64Array(6) };
   private readonly removeDestroyed = (occluder: Occluder): void => {
     this.removeOccluder(occluder);
@@ -75,6 +87,11 @@ export class PenumbraLayer extends RenderContainer {
     super({ label: 'PenumbraLayer' });
     const gl = (renderer as Partial<WebGLRenderer>).gl;
     if (!gl) throw new TypeError('penumbra: PenumbraLayer needs Pixi\'s WebGL renderer (Application.init({ preference: \'webgl\' }))');
+    if (!isWebGL2(gl)) throw notWebGL2Error('PenumbraLayer', gl, PIXI_WEBGL2_FIX);
+    if (isOpaqueMultisampledCanvas(gl)) {
+      throw new Error('penumbra: PenumbraLayer cannot light Pixi\'s canvas: it is antialiased and opaque (antialias: true with an opaque '
+        + 'background), and the lighting copies a multisampled canvas only into its own RGBA format; init the Application with antialias: false');
+    }
     const { camera = null, layers = ALL_LAYERS, ...rendererOptions } = options;
     this.camera = camera;
     this.layers = layers;
@@ -102,8 +119,9 @@ export class PenumbraLayer extends RenderContainer {
   addLight<T extends Light>(light: T): T {
     return this.penumbra.addLight(light);
   }
-  /** Removes a light; returns whether it was there. */
+  /** Removes a light, and stops it following a display object; returns whether it was there. */
   removeLight(light: Light): boolean {
+    this.dropFollower(light, false);
     return this.penumbra.removeLight(light);
   }
   /** Adds a hull (in the camera's space); see {@link PenumbraRenderer.addHull}. */
@@ -178,9 +196,70 @@ export class PenumbraLayer extends RenderContainer {
    * lighting.follow(door, new Hull([[0, 0], [64, 0], [64, 8], [0, 8]]));  // a thin slab, not every pixel
    * ```
    */
-  follow(object: Container, hulls: Hull | readonly Hull[]): Occluder {
-    const list = hulls instanceof Hull ? [hulls] : hulls;
-    return this.start(new Occluder(object, this.penumbra, list, this.removeDestroyed));
+  follow(object: Container, hulls: Hull | readonly Hull[]): Occluder;
+  /**
+   * Makes a light follow a display object: it sits at `options.offset` in the object's local space
+   * (default its position point) and, with `options.rotation`, turns with it; it shines while the
+   * object is shown. The light is added to the renderer; the layer places it each time it renders,
+   * relative to {@link PenumbraLayer.camera} as hulls are. Following the same light again replaces
+   * the follower. It ends when the object is destroyed (the light is removed too), on
+   * {@link PenumbraLayer.removeLight} or on {@link PenumbraLayer.unfollow}. See {@link LightFollower}.
+   *
+   * ```ts
+   * const player = world.addChild(new Sprite(heroTexture));
+   * lighting.follow(player, new PointLight({ range: 200, radius: 6 }), { offset: [0, -12] });     // a torch over its head
+   * lighting.follow(turret, new Spotlight({ range: 300, coneAngle: 0.4 }), { rotation: 0 });      // a beam along the turret's +x
+   * ```
+   * @throws TypeError for an object that is no display object, or an option of the wrong type.
+   */
+  follow(object: Container, light: Light, options?: LightFollowOptions): LightFollower<Container>;
+  follow(object: Container, target: Hull | readonly Hull[] | Light, options: LightFollowOptions = {}): Occluder | LightFollower<Container> {
+    if (!(target instanceof Light)) {
+      const list = target instanceof Hull ? [target] : target;
+      return this.start(new Occluder(object, this.penumbra, list, this.removeDestroyed));
+    }
+    if (typeof (object as Partial<Container> | null)?.updateLocalTransform !== 'function') {
+      throw new TypeError(`penumbra: PenumbraLayer.follow takes a Pixi display object to follow, got ${describeValue(object)}`);
+    }
+    const follower = new LightFollower(object, target, options, 'PenumbraLayer.follow');
+    this.dropFollower(target, true);
+    this.penumbra.addLight(target);
+    if (!this._followers.some((other) => other.object === object)) object.on('destroyed', this.followedDestroyed);
+    this._followers.push(follower);
+    prepareSpace(this.space, this, this.camera);
+    this.placeFollower(follower);
+    return follower;
+  }
+
+  /** The lights following display objects, in the order they started. */
+  get followers(): readonly LightFollower<Container>[] {
+    return this._followers;
+  }
+
+  /**
+   * Stops a light following its display object, or every light following a display object: the
+   * lights stay in the renderer where they are, enabled. Returns whether one was following.
+   */
+  unfollow(target: LightFollower<Container> | Light | Container): boolean {
+    let stopped = false;
+    for (let i = this._followers.length - 1; i >= 0; i--) {
+      const follower = this._followers[i];
+      if (follower !== target && follower.light !== target && follower.object !== target) continue;
+      this.stopFollower(i);
+      stopped = true;
+    }
+    return stopped;
+  }
+
+  /**
+   * Places every following light for its object's current transform. The layer does it each time
+   * it renders; call it to read the lights' placement before then.
+   */
+  updateFollowers(): void {
+    const followers = this._followers;
+    if (followers.length === 0) return;
+    prepareSpace(this.space, this, this.camera);
+    for (let i = 0; i < followers.length; i++) this.placeFollower(followers[i]);
   }
 
   /**
@@ -210,6 +289,34 @@ export class PenumbraLayer extends RenderContainer {
     for (let i = 0; i < occluders.length; i++) occluders[i].update(this.space);
   }
 
+  private placeFollower(follower: LightFollower<Container>): void {
+    const shown = placeInSpace(follower.object, this.space, this.followerPlacement);
+    follower.place(this.followerPlacement, shown);
+  }
+
+  /** Ends follower `i`: stops listening to its object once no other follower needs it, and hands the light back. */
+  private stopFollower(i: number): LightFollower<Container> {
+    const [follower] = this._followers.splice(i, 1);
+    if (!this._followers.some((other) => other.object === follower.object)) follower.object.off('destroyed', this.followedDestroyed);
+    follower.release();
+    return follower;
+  }
+
+  /** Ends the follower of `light`, if any; `keep` leaves the light in the renderer. */
+  private dropFollower(light: Light, keep: boolean): void {
+    const i = this._followers.findIndex((follower) => follower.light === light);
+    if (i < 0) return;
+    this.stopFollower(i);
+    if (!keep) this.penumbra.removeLight(light);
+  }
+
+  /** A followed object was destroyed: its lights go with it. */
+  private readonly followedDestroyed = (object: Container): void => {
+    for (let i = this._followers.length - 1; i >= 0; i--) {
+      if (this._followers[i].object === object) this.penumbra.removeLight(this.stopFollower(i).light);
+    }
+  };
+
   private start<T extends Occluder>(occluder: T): T {
     this._occluders.push(occluder);
     prepareSpace(this.space, this, this.camera);
@@ -224,6 +331,7 @@ export class PenumbraLayer extends RenderContainer {
     targets.getBindState(this.bindState);
     const reads = gpuReads;
     this.updateOccluders();
+    this.updateFollowers();
     // A texture read back from the GPU left its own framebuffer bound: back to Pixi's target.
     if (gpuReads !== reads) {
       pixi.resetState();
@@ -267,6 +375,7 @@ export class PenumbraLayer extends RenderContainer {
   override destroy(options?: Parameters<RenderContainer['destroy']>[0]): void {
     for (const occluder of this._occluders) occluder.detach();
     this._occluders.length = 0;
+    for (let i = this._followers.length - 1; i >= 0; i--) this.stopFollower(i);
     this.penumbra.dispose();
     this.surfaces?.dispose();
     super.destroy(options);

@@ -7,6 +7,7 @@ export { PenumbraGroup, type PenumbraGroupOptions } from './PenumbraGroup';
 export type { SurfaceOptions } from './surfaces';
 export { hullFromBounds, hullFromPolygon } from './hulls';
 export { Occluder } from './Occluder';
+export { LightFollower, type LightFollowOptions } from '../LightFollower';
 export { SpriteOccluder, hullsFromTexture, forgetTextureHulls, type SpriteHullsOptions, type TextureHullsOptions } from './spriteHulls';
 export { GraphicsOccluder, hullsFromGraphics, type GraphicsHullsOptions } from './graphicsHulls';
 export * from '../../index';
