@@ -16,13 +16,20 @@ import { LIGHT_TEXTURE_UNITS, SHADOW_TEXTURE_UNITS } from './passes/lightLayout'
 import { ShadowTextures } from './shadow/ShadowTextures';
 import { LightmapAttachments, SceneAttachments } from './passes/surfaceLayout';
 import { Hull } from './scene/Hull';
-import { checkIlluminationQuery, IlluminationQuery, type Illumination, type IlluminationOptions } from './scene/illumination';
+import {
+  checkIlluminationQuery, ILLUMINATION_OPTION_KEYS, IlluminationQuery, IS_LIT_OPTION_KEYS, type Illumination, type IlluminationOptions,
+} from './scene/illumination';
 import { describeTexture, DirectionalLight, Light, TexturedLight, type LightOptions } from './scene/lights';
-import { ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, describeValue, frozenColor, type ColorLike } from './scene/validate';
+import {
+  ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, assertOptions, describeValue, frozenColor, type ColorLike,
+} from './scene/validate';
 
-/** Options of a {@link PenumbraRenderer}; every field has the default shown. */
+/**
+ * Options of a {@link PenumbraRenderer}; every field has the default shown. A key that is not one
+ * of these (a misspelt `ambient`) is a `TypeError` that names it.
+ */
 export interface PenumbraRendererOptions {
-  /** Colour of unlit areas, 0..1 per channel. Default `[0.2, 0.2, 0.2]`. */
+  /** Colour of unlit areas: `[r, g, b]` floats 0..1 per channel, `0xrrggbb` or a CSS string (see {@link ColorLike}). Default `[0.2, 0.2, 0.2]`. */
   ambientColor?: ColorLike;
   /** Draw light quads and shadow geometry as wireframe over the result. Default `false`. */
   debug?: boolean;
@@ -71,6 +78,12 @@ export interface PenumbraRendererOptions {
    */
   classificationBudget?: number;
 }
+
+/** The options a {@link PenumbraRenderer} takes; any other key is an error. */
+const RENDERER_OPTION_KEYS: readonly string[] = Object.keys({
+  ambientColor: true, debug: true, viewProjection: true, width: true, height: true, lightmapScale: true, measureCpuTime: true,
+  onContextRestored: true, exposure: true, toneMapping: true, dithering: true, lightmapBlur: true, normals: true, classificationBudget: true,
+} satisfies Record<keyof PenumbraRendererOptions, true>);
 
 /**
  * The normal and material textures of a host that draws into its own targets (see
@@ -251,6 +264,7 @@ export class PenumbraRenderer {
 
   constructor(gl: WebGL2RenderingContext, options: PenumbraRendererOptions = {}) {
     if (!isWebGL2(gl)) throw notWebGL2Error('PenumbraRenderer', gl, WEBGL2_CONTEXT_FIX);
+    assertOptions('PenumbraRenderer', options, RENDERER_OPTION_KEYS);
     this.gl = gl;
     this.debug = options.debug ?? false;
     this.measureCpuTime = options.measureCpuTime ?? false;
@@ -281,7 +295,10 @@ export class PenumbraRenderer {
     this.canvas?.addEventListener('webglcontextrestored', this.handleContextRestored);
   }
 
-  /** Colour of unlit areas `[r, g, b]`, 0..1 per channel; a frozen array, as the lights' vectors: assign a new one to change it. */
+  /**
+   * Colour of unlit areas, read as a frozen `[r, g, b]` array, 0..1 per channel, as the lights'
+   * vectors; assign any {@link ColorLike} form (`[r, g, b]`, `0x333344`, `'#334'`) to change it.
+   */
   get ambientColor(): readonly [number, number, number] {
     return this._ambient;
   }
@@ -517,7 +534,7 @@ export class PenumbraRenderer {
   illuminationAt(x: number, y: number, options?: IlluminationOptions, out?: Illumination): Illumination {
     assertFinite('PenumbraRenderer.illuminationAt x', x);
     assertFinite('PenumbraRenderer.illuminationAt y', y);
-    checkIlluminationQuery('PenumbraRenderer.illuminationAt', options, out);
+    checkIlluminationQuery('PenumbraRenderer.illuminationAt', options, ILLUMINATION_OPTION_KEYS, out);
     return (this.illumination ??= new IlluminationQuery()).at(this._lights, this._hulls, this._ambient, x, y, options, out);
   }
 
@@ -539,7 +556,7 @@ export class PenumbraRenderer {
     assertFinite('PenumbraRenderer.isLit x', x);
     assertFinite('PenumbraRenderer.isLit y', y);
     assertFinite('PenumbraRenderer.isLit threshold', threshold);
-    checkIlluminationQuery('PenumbraRenderer.isLit', options);
+    checkIlluminationQuery('PenumbraRenderer.isLit', options, IS_LIT_OPTION_KEYS);
     const layers = (options?.layers ?? ALL_LAYERS) | 0;
     return (this.illumination ??= new IlluminationQuery()).isLit(this._lights, this._hulls, x, y, threshold, options?.cookie ?? null, layers);
   }

@@ -5,7 +5,7 @@ export { ToneMapping, Dithering } from './passes/compositeLayout';
 export type { Illumination, IlluminationOptions, LightIllumination, CookieSampler } from './scene/illumination';
 export { Hull, type HullOptions } from './scene/Hull';
 export {
-  Light, PointLight, Spotlight, TexturedLight, DirectionalLight, ShadowType, Falloff,
+  Light, PointLight, Spotlight, TexturedLight, DirectionalLight, ShadowType, Falloff, DEFAULT_LIGHT_RADIUS,
   type LightOptions, type SpotlightOptions, type TexturedLightOptions, type DirectionalLightOptions, type LightKind,
 } from './scene/lights';
 export type { Vec2Like, ColorLike } from './scene/validate';

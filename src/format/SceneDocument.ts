@@ -136,7 +136,10 @@ export interface SceneLightBase {
   position: [number, number];
   /** ≥ 0. Optional, default `100`. */
   range: number;
-  /** ≥ 0. Optional, default `0`. */
+  /**
+   * ≥ 0. Optional, default `0` in every version: the format's own default, kept so that a file means
+   * what it meant when written; a light made in code has `DEFAULT_LIGHT_RADIUS` (10).
+   */
   radius: number;
   /** `[r, g, b]`, channels ≥ 0. Optional, default `[1, 1, 1]`. */
   color: [number, number, number];

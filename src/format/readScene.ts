@@ -47,6 +47,11 @@ const VERSION_FIELDS: Readonly<Record<number, VersionFields>> = {
   2: VERSION_2,
   [SCENE_FORMAT_VERSION]: { ...VERSION_2, document: [...DOCUMENT_FIELDS_V2, 'app'] },
 };
+/**
+ * A light's radius in a file that gives none, in every version: the format's own, not the
+ * constructors' `DEFAULT_LIGHT_RADIUS`, so that a file means what it meant when it was written.
+ */
+const FILE_DEFAULT_RADIUS = 0;
 /** The light fields a directional light lacks: it has no position and lights everything alike. */
 const POSITION_FIELDS: readonly string[] = ['position', 'range', 'radius', 'origin', 'falloff', 'height'];
 const KIND_FIELDS = { point: [], spot: ['coneAngle', 'coneDecay'], textured: ['cookie', 'size'], directional: ['angularSize', 'elevation'] } as const;
@@ -195,7 +200,7 @@ function readLight(value: unknown, path: string, fields: VersionFields, hullCoun
 function readLightBase(light: Fields, shadowTypes: VersionFields['shadowTypes'], hullCount: number): SceneLightBase {
   const position = vec2Field(light, 'position');
   const range = numberField(light, 'range', 100, 0);
-  const radius = numberField(light, 'radius', 0, 0);
+  const radius = numberField(light, 'radius', FILE_DEFAULT_RADIUS, 0);
   const { color, intensity, rotation, ...rest } = readSharedLightFields(light, shadowTypes, hullCount);
   const origin = vec2Field(light, 'origin', [0.5, 0.5]);
   const falloff = choiceField(light, 'falloff', FALLOFFS, 'linear');

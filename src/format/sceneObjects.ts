@@ -22,25 +22,33 @@ export type CookieResolver = (name: string) => WebGLTexture | null;
  * @throws {SceneFormatError} `lights[i].cookie` when `resolveCookie` does not know a cookie name.
  */
 export function createSceneObjects(scene: SceneDocument, resolveCookie: CookieResolver): SceneObjects {
-  const hulls = scene.hulls.map((hull) => new Hull(hull.points, hull));
+  const hulls = scene.hulls.map(({ points, ...options }) => new Hull(points, options));
   const lights = scene.lights.map((light, i) => createLight(light, i, hulls, resolveCookie));
   return { hulls, lights };
 }
 
+/** The light a document's entry describes: its fields are the light's options, less `kind` (and a textured light's `cookie`). */
 function createLight(light: SceneLight, index: number, hulls: readonly Hull[], resolveCookie: CookieResolver): Light {
-  const options = { ...light, ignoredHulls: light.ignoredHulls.map((i) => hulls[i]) };
+  const ignoredHulls = light.ignoredHulls.map((i) => hulls[i]);
   switch (light.kind) {
-    case 'point':
-      return new PointLight(options);
-    case 'spot':
-      return new Spotlight({ ...options, coneAngle: light.coneAngle, coneDecay: light.coneDecay });
-    case 'textured': {
-      const texture = resolveCookie(light.cookie);
-      if (!texture) throw new SceneFormatError(`lights[${index}].cookie`, `unknown cookie ${describeValue(light.cookie)}`);
-      return new TexturedLight({ ...options, texture, size: light.size ?? undefined });
+    case 'point': {
+      const { kind, ...options } = light;
+      return new PointLight({ ...options, ignoredHulls });
     }
-    case 'directional':
-      return new DirectionalLight(options);
+    case 'spot': {
+      const { kind, ...options } = light;
+      return new Spotlight({ ...options, ignoredHulls });
+    }
+    case 'textured': {
+      const { kind, cookie, size, ...options } = light;
+      const texture = resolveCookie(cookie);
+      if (!texture) throw new SceneFormatError(`lights[${index}].cookie`, `unknown cookie ${describeValue(cookie)}`);
+      return new TexturedLight({ ...options, ignoredHulls, texture, size: size ?? undefined });
+    }
+    case 'directional': {
+      const { kind, ...options } = light;
+      return new DirectionalLight({ ...options, ignoredHulls });
+    }
   }
 }
 

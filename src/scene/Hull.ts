@@ -3,13 +3,13 @@ import { assertBoolean, assertFinite, assertLayerMask, assertOptions, describeVa
 
 /** Options of a {@link Hull}; every field has the default shown. */
 export interface HullOptions {
-  /** World position of the hull's `origin`. Default `[0, 0]`. */
+  /** World position of the hull's `origin`: `[x, y]` or `{ x, y }` ({@link Vec2Like}). Default `[0, 0]`. */
   position?: Vec2Like;
   /** Pivot in the points' local space: rotation and scale happen around it. Default `[0, 0]`. */
   origin?: Vec2Like;
   /** Rotation in radians around `origin` (positive turns +x towards +y). Default `0`. */
   rotation?: number;
-  /** Scale around `origin` along the local axes (before the rotation), one factor or `[sx, sy]`; a negative factor mirrors. Default `1`. */
+  /** Scale around `origin` along the local axes (before the rotation), one factor, `[sx, sy]` or `{ x, y }` (a Pixi sprite's `scale`); a negative factor mirrors. Default `1`. */
   scale?: number | Vec2Like;
   /** A disabled hull casts no shadow. Default `true`. */
   enabled?: boolean;
@@ -26,6 +26,11 @@ export interface HullOptions {
   layers?: number;
 }
 
+/** The options a hull takes; any other key is an error (see {@link assertOptions}). */
+const HULL_OPTION_KEYS: readonly string[] = Object.keys({
+  position: true, origin: true, rotation: true, scale: true, enabled: true, closed: true, layers: true,
+} satisfies Record<keyof HullOptions, true>);
+
 /**
  * A polygon that blocks light, or with `closed: false` an open polyline that does. Points are in
  * the hull's local space, in either winding; `position`, `origin`, `rotation` and `scale` place
@@ -38,10 +43,12 @@ export interface HullOptions {
  * Checking and triangulating the points takes O(n log n) for most outlines. A polyline needs 2
  * distinct points; it may cross itself.
  *
- * Setters and options are checked as the lights' are (`TypeError` for a wrong type, `RangeError`
- * for NaN or ∞, naming the property). `points`, `position`, `origin` and `scale` are frozen
- * arrays: snapshots that never change and cannot be written to; assign a new value, or call
- * {@link Hull.setPosition}, to change them.
+ * Setters and options are checked as the lights' are (`TypeError` for a wrong type or an options
+ * key the class does not take, `RangeError` for NaN or ∞, naming the property). Points, `position`,
+ * `origin` and `scale` are taken as `[x, y]` pairs or `{ x, y }` objects such as PixiJS `Point`s
+ * and Phaser `Vector2`s ({@link Vec2Like}); `points`, `position`, `origin` and `scale` read back as
+ * frozen `[x, y]` arrays whatever form was given: snapshots that never change and cannot be written
+ * to; assign a new value, or call {@link Hull.setPosition}, to change them.
  */
 export class Hull {
   /** The points as given, `[x0, y0, …]`; their frozen pairs are made when first asked for. */
@@ -86,7 +93,7 @@ export class Hull {
   readonly coarseBounds = new Float64Array(4);
 
   constructor(points: ReadonlyArray<Vec2Like>, options: HullOptions = {}) {
-    assertOptions('Hull', options);
+    assertOptions('Hull', options, HULL_OPTION_KEYS);
     this._closed = options.closed === undefined ? true : assertBoolean('Hull.closed', options.closed);
     this.points = points;
     if (options.position !== undefined) this.position = options.position;
@@ -97,13 +104,16 @@ export class Hull {
     if (options.layers !== undefined) this.layers = options.layers;
   }
 
-  /** The points as given (local space), frozen, pairs too. Assign a new array to reshape the hull. */
+  /**
+   * The points as given (local space), frozen `[x, y]` pairs in a frozen array. Assign a new array
+   * of points (pairs or `{ x, y }` objects, see {@link Vec2Like}) to reshape the hull.
+   */
   get points(): ReadonlyArray<readonly [number, number]> {
     const coords = this.givenCoords;
     return (this._points ??= Object.freeze(Array.from({ length: coords.length >> 1 }, (_, i) => Object.freeze([coords[2 * i], coords[2 * i + 1]] as const))));
   }
   set points(points: ReadonlyArray<Vec2Like>) {
-    if (!Array.isArray(points)) throw new TypeError(`Hull.points must be an array of [x, y] pairs, got ${describeValue(points)}`);
+    if (!Array.isArray(points)) throw new TypeError(`Hull.points must be an array of [x, y] pairs or { x, y } points, got ${describeValue(points)}`);
     this.setCoords(vec2ListCoords('Hull.points', points));
   }
 

@@ -1,6 +1,6 @@
 import { alphaOutlines } from '../geometry/alphaOutlines';
 import { Hull } from './Hull';
-import { assertBoolean, assertFinite, assertNonNegative, describeValue, frozenVec2, type Vec2Like } from './validate';
+import { assertBoolean, assertFinite, assertNonNegative, assertOptions, describeValue, frozenVec2, type Vec2Like } from './validate';
 
 /**
  * An image's pixels as RGBA bytes, row after row from the top: a browser's `ImageData`, or raw
@@ -19,7 +19,8 @@ export interface AlphaImage {
  * Options of {@link hullsFromAlpha}; every field has the default shown. The placement fields are
  * a sprite's: a hull follows a sprite drawn from the same image when it gets the sprite's
  * `position`, `rotation` and `scale` (world units per pixel), and `anchor` is the sprite's
- * anchor (Pixi) or origin (Phaser).
+ * anchor (Pixi) or origin (Phaser). The vectors take `[x, y]` or `{ x, y }` ({@link Vec2Like}):
+ * a Pixi sprite's `anchor`, `position` and `scale` as they are.
  */
 export interface HullsFromAlphaOptions {
   /** A pixel is solid when its alpha is ≥ this (0–255). Default `128`. */
@@ -59,6 +60,10 @@ export interface HullsFromAlphaOptions {
 }
 
 const NAME = 'hullsFromAlpha';
+/** The options {@link hullsFromAlpha} takes; any other key is an error (see {@link assertOptions}). */
+const OPTION_KEYS: readonly string[] = Object.keys({
+  threshold: true, tolerance: true, maxPoints: true, minArea: true, anchor: true, position: true, rotation: true, scale: true, flipX: true, flipY: true,
+} satisfies Record<keyof HullsFromAlphaOptions, true>);
 
 /**
  * Hulls that cast the shadow of an image's opaque pixels: the pixels with alpha ≥ `threshold`,
@@ -81,7 +86,7 @@ const NAME = 'hullsFromAlpha';
  */
 export function hullsFromAlpha(image: AlphaImage, options: HullsFromAlphaOptions = {}): Hull[] {
   const { data, width, height } = checkImage(image);
-  if (typeof options !== 'object' || options === null) throw new TypeError(`${NAME} options must be an object, got ${describeValue(options)}`);
+  assertOptions(NAME, options, OPTION_KEYS);
   const {
     threshold = 128, tolerance = 1, maxPoints = 64, minArea = 0, anchor = [0.5, 0.5], position = [0, 0], rotation = 0,
     scale = 1, flipX = false, flipY = false,

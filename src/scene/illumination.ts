@@ -3,7 +3,7 @@ import { HullGrid } from '../geometry/HullGrid';
 import { isInsidePolygon } from '../geometry/polygon';
 import type { Hull } from './Hull';
 import { DirectionalLight, falloffAt, ShadowType, Spotlight, TexturedLight, type Light } from './lights';
-import { ALL_LAYERS, assertBoolean, assertLayerMask, describeValue } from './validate';
+import { ALL_LAYERS, assertBoolean, assertLayerMask, assertOptions, describeValue } from './validate';
 
 /** Every content layer, as an int32 (0xffffffff | 0). */
 const EVERY_LAYER = -1;
@@ -84,15 +84,22 @@ export interface Illumination {
   lights: LightIllumination[];
 }
 
+/** The options `PenumbraRenderer.illuminationAt` takes. @internal */
+export const ILLUMINATION_OPTION_KEYS: readonly string[] = Object.keys({
+  perLight: true, includeAmbient: true, cookie: true, layers: true,
+} satisfies Record<keyof IlluminationOptions, true>);
+/** The options `PenumbraRenderer.isLit` takes: it makes no per-light list and compares the lights alone. @internal */
+export const IS_LIT_OPTION_KEYS: readonly string[] = ['cookie', 'layers'] satisfies (keyof IlluminationOptions)[];
+
 /**
  * Checks the options and the result to reuse of `PenumbraRenderer.illuminationAt` and `isLit` (`name`,
- * for messages): a TypeError or RangeError naming the field and showing the value, before the query
- * reads or writes anything.
+ * for messages): a TypeError or RangeError naming the field and showing the value, or a TypeError
+ * naming a key not in `keys`, before the query reads or writes anything.
  * @internal
  */
-export function checkIlluminationQuery(name: string, options: IlluminationOptions | undefined, out?: Illumination): void {
+export function checkIlluminationQuery(name: string, options: IlluminationOptions | undefined, keys: readonly string[], out?: Illumination): void {
   if (options !== undefined) {
-    if (typeof options !== 'object' || options === null) throw new TypeError(`${name}: options must be an object, got ${describeValue(options)}`);
+    assertOptions(`${name}:`, options, keys);
     if (options.perLight !== undefined) assertBoolean(`${name}: options.perLight`, options.perLight);
     if (options.includeAmbient !== undefined) assertBoolean(`${name}: options.includeAmbient`, options.includeAmbient);
     const cookie: unknown = options.cookie;

@@ -49,13 +49,17 @@ export type Falloff = (typeof Falloff)[keyof typeof Falloff];
 
 /** Options shared by every light; every field has the default shown. */
 export interface LightOptions {
-  /** World position of the light's centre (where shadows are cast from). Default `[0, 0]`. */
+  /** World position of the light's centre (where shadows are cast from): `[x, y]` or `{ x, y }`. Default `[0, 0]`. */
   position?: Vec2Like;
   /** Distance, in world units, at which the light reaches zero. Not negative. Default `100`. */
   range?: number;
-  /** Radius of the emitting disk; 0 gives hard shadows, larger gives wider penumbrae. Not negative. Default `0`. */
+  /**
+   * Radius of the emitting disk in world units: the penumbrae widen with it, 0 gives hard shadows.
+   * Not negative. Default `10` ({@link DEFAULT_LIGHT_RADIUS}), a lamp's size in a view in pixels,
+   * so that a light made with the defaults shows soft shadows.
+   */
   radius?: number;
-  /** Linear RGB colour, 0..1 per channel. Default `[1, 1, 1]`. */
+  /** Colour: `[r, g, b]` floats 0..1 per channel, `0xrrggbb` or a CSS string (see {@link ColorLike}). Default `[1, 1, 1]`. */
   color?: ColorLike;
   /** Multiplier on the colour; above 1 over-brightens. Not negative. Default `1`. */
   intensity?: number;
@@ -95,7 +99,8 @@ export interface LightOptions {
   litLayers?: number;
   /**
    * Colour of this light's shadows: the fraction of each channel of the light that a point in
-   * full shadow still gets, where {@link LightOptions.shadowStrength} is 1. Default `[0, 0, 0]`.
+   * full shadow still gets, where {@link LightOptions.shadowStrength} is 1. Any {@link ColorLike}
+   * form. Default `[0, 0, 0]`.
    */
   shadowColor?: ColorLike;
   /**
@@ -113,13 +118,49 @@ export type LightKind = 'point' | 'spot' | 'textured' | 'directional';
 const CLASS_NAMES: Readonly<Record<LightKind, string>> = { point: 'PointLight', spot: 'Spotlight', textured: 'TexturedLight', directional: 'DirectionalLight' };
 
 /**
+ * The default {@link LightOptions.radius}, in world units: a lamp's size where a world unit is a
+ * pixel, so that a light made with the defaults casts the soft shadows the library is for. The
+ * scene format keeps its own default for a file without `radius` (0, see `SceneLightBase.radius`),
+ * so what a file means does not depend on this.
+ */
+export const DEFAULT_LIGHT_RADIUS = 10;
+
+/** Every option key, listed through a record so that the compiler checks the list against the options type. */
+function optionKeys<T>(keys: Record<keyof T, true>): readonly string[] {
+  return Object.freeze(Object.keys(keys));
+}
+
+/** The options of every light. */
+const LIGHT_OPTION_KEYS = optionKeys<Required<LightOptions>>({
+  position: true, range: true, radius: true, color: true, intensity: true, rotation: true, origin: true, shadowType: true, falloff: true,
+  height: true, enabled: true, castsShadows: true, ignoredHulls: true, shadowLayers: true, litLayers: true, shadowColor: true, shadowStrength: true,
+});
+/** The options about a position and a range, which a directional light has not. */
+const POSITIONAL_OPTION_KEYS = optionKeys<Omit<Required<LightOptions>, keyof DirectionalLightOptions>>({
+  position: true, range: true, radius: true, origin: true, falloff: true, height: true,
+});
+/** The options each kind of light takes; any other key is an error (see {@link assertOptions}). */
+const OPTION_KEYS: Readonly<Record<LightKind, readonly string[]>> = {
+  point: LIGHT_OPTION_KEYS,
+  spot: [...LIGHT_OPTION_KEYS, ...optionKeys<Omit<Required<SpotlightOptions>, keyof LightOptions>>({ coneAngle: true, coneDecay: true })],
+  textured: [...LIGHT_OPTION_KEYS, ...optionKeys<Omit<Required<TexturedLightOptions>, keyof LightOptions>>({ texture: true, size: true })],
+  directional: [
+    ...LIGHT_OPTION_KEYS.filter((key) => !POSITIONAL_OPTION_KEYS.includes(key)),
+    ...optionKeys<Omit<Required<DirectionalLightOptions>, keyof LightOptions>>({ angularSize: true, elevation: true }),
+  ],
+};
+
+/**
  * Common state of every light. Lights are plain data: add them to a renderer with
  * `renderer.addLight(light)`; every change shows in the next frame.
  *
  * Every setter and constructor option is checked: a value of the wrong type throws a
- * `TypeError`, one out of range (NaN, ∞, negative) a `RangeError`, both naming the property.
- * Vector getters (`position`, `origin`, `color`, `size`) return frozen arrays: a snapshot that
- * never changes and cannot be written to. To change a vector, assign a new one or call
+ * `TypeError`, one out of range (NaN, ∞, negative) a `RangeError`, both naming the property; an
+ * options key the class does not take (a misspelt `positon`) throws a `TypeError` that names it.
+ * Points and vectors are taken as `[x, y]` or `{ x, y }` ({@link Vec2Like}), colours as `[r, g, b]`,
+ * `0xrrggbb` or a CSS string ({@link ColorLike}). Vector getters (`position`, `origin`, `color`,
+ * `shadowColor`, `size`) return frozen arrays, `[x, y]` and `[r, g, b]` whatever form was given: a
+ * snapshot that never changes and cannot be written to. To change a vector, assign a new one or call
  * {@link Light.setPosition}. `ignoredHulls` is a live set: adding and deleting hulls takes effect.
  */
 export abstract class Light {
@@ -127,7 +168,7 @@ export abstract class Light {
   private _origin: readonly [number, number] = Object.freeze([0.5, 0.5] as const);
   private _color: readonly [number, number, number] = Object.freeze([1, 1, 1] as const);
   private _range = 100;
-  private _radius = 0;
+  private _radius = DEFAULT_LIGHT_RADIUS;
   private _intensity = 1;
   private _rotation = 0;
   private _enabled = true;
@@ -144,7 +185,7 @@ export abstract class Light {
   readonly ignoredHulls = new Set<Hull>();
 
   constructor(options: LightOptions = {}) {
-    assertOptions(this.className, options);
+    assertOptions(this.className, options, this.optionKeys);
     if (options.position !== undefined) this.position = options.position;
     if (options.range !== undefined) this.range = options.range;
     if (options.radius !== undefined) this.radius = options.radius;
@@ -172,7 +213,12 @@ export abstract class Light {
     return CLASS_NAMES[this.kind];
   }
 
-  /** World position of the light's centre, frozen. */
+  /** The options keys the class takes. */
+  private get optionKeys(): readonly string[] {
+    return OPTION_KEYS[this.kind];
+  }
+
+  /** World position of the light's centre, a frozen `[x, y]` pair whatever form was given (see {@link Vec2Like}). */
   get position(): readonly [number, number] {
     return this._position;
   }
@@ -193,7 +239,7 @@ export abstract class Light {
     this._origin = frozenVec2(`${this.className}.origin`, value);
   }
 
-  /** Linear RGB colour, frozen. */
+  /** Colour `[r, g, b]`, frozen, whatever form was given: `0xff8800` reads back as `[1, 0.533…, 0]` (see {@link ColorLike}). */
   get color(): readonly [number, number, number] {
     return this._color;
   }
@@ -209,7 +255,7 @@ export abstract class Light {
     this._range = assertNonNegative(`${this.className}.range`, value);
   }
 
-  /** Radius of the emitting disk. */
+  /** Radius of the emitting disk; see {@link LightOptions.radius}. */
   get radius(): number {
     return this._radius;
   }
@@ -618,7 +664,8 @@ export interface DirectionalLightOptions extends Omit<LightOptions, 'position' |
  * distance from it (by `2 × tan(angularSize / 2)` per unit). Hulls anywhere upstream of the view
  * shadow it, not only those in view.
  *
- * `position`, `range`, `radius`, `origin` and `height` (inherited) mean nothing for it and are ignored.
+ * `position`, `range`, `radius`, `origin`, `falloff` and `height` mean nothing for it: as options
+ * they are errors, as the properties it inherits they are ignored.
  */
 export class DirectionalLight extends Light {
   private _angularSize = SUN_ANGULAR_SIZE;

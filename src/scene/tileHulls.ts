@@ -1,7 +1,7 @@
 import { holeFreeRegions } from '../geometry/gridRegions';
 import { traceOutlines } from '../geometry/tileOutlines';
 import { Hull } from './Hull';
-import { assertOptions, describeValue, type Vec2Like } from './validate';
+import { assertFinite, assertOptions, describeValue, frozenVec2, type Vec2Like } from './validate';
 
 /**
  * A tile grid: an array of rows (`number[][]`, `boolean[][]`, strings…; all rows the same length),
@@ -12,9 +12,12 @@ export type TileGrid<T = number | boolean> = ArrayLike<ArrayLike<T>> | ArrayLike
 
 /** Options of {@link hullsFromTiles} and {@link TileHulls}; every field has the default shown. */
 export interface TileHullsOptions<T = number | boolean> {
-  /** Width and height of a tile in world units: one number or `[w, h]`, each > 0. Default `1`. */
+  /** Width and height of a tile in world units: one number, `[w, h]` or `{ x: w, y: h }`, each > 0. Default `1`. */
   tileSize?: number | Vec2Like;
-  /** World position of the top-left corner of tile (0, 0); tile (x, y) spans `position + [x, y] × tileSize`. Default `[0, 0]`. */
+  /**
+   * World position of the top-left corner of tile (0, 0), `[x, y]` or `{ x, y }`; tile (x, y) spans
+   * `position + [x, y] × tileSize`. Default `[0, 0]`.
+   */
   position?: Vec2Like;
   /**
    * Which tile values are solid: one value, a list of values, or a test `(value, x, y) => boolean`.
@@ -33,6 +36,11 @@ export interface TileHullsOptions<T = number | boolean> {
    */
   chunkSize?: number;
 }
+
+/** The options {@link TileHulls} and {@link hullsFromTiles} take; any other key is an error (see {@link assertOptions}). */
+const OPTION_KEYS: readonly string[] = Object.keys({
+  tileSize: true, position: true, solid: true, width: true, height: true, chunkSize: true,
+} satisfies Record<keyof TileHullsOptions, true>);
 
 /** Tiles per side of a chunk unless `options.chunkSize` says otherwise. */
 const DEFAULT_CHUNK_SIZE = 32;
@@ -134,7 +142,7 @@ export class TileHulls<T = unknown> {
   constructor(grid: (x: number, y: number) => T, options: TileHullsOptions<T> & { width: number; height: number });
   constructor(grid: TileGrid<T>, options: TileHullsOptions<T> = {}) {
     const name = this.name = messageName;
-    assertOptions(name, options);
+    assertOptions(name, options, OPTION_KEYS);
     [this.tileWidth, this.tileHeight] = readTileSize(name, options.tileSize);
     [this.originX, this.originY] = readPosition(name, options.position);
     this.chunkSize = readChunkSize(name, options.chunkSize);
@@ -249,25 +257,14 @@ function readChunkSize(name: string, value: unknown): number {
 
 function readTileSize(name: string, value: number | Vec2Like | undefined): [number, number] {
   if (value === undefined) return [1, 1];
-  const pair = typeof value === 'number' ? [value, value] : value;
-  const valid = typeof pair === 'object' && pair !== null && pair.length >= 2
-    && [pair[0], pair[1]].every((v) => typeof v === 'number' && v > 0 && Number.isFinite(v));
-  if (!valid) {
-    const wrongType = typeof value !== 'number' && (typeof value !== 'object' || value === null || typeof value.length !== 'number');
-    throw new (wrongType ? TypeError : RangeError)(`${name} options.tileSize must be a positive finite number or [w, h] pair, got ${describeValue(value)}`);
-  }
-  return [pair[0], pair[1]];
+  const label = `${name} options.tileSize`;
+  const [width, height] = typeof value === 'number' ? [assertFinite(label, value), value] : frozenVec2(label, value);
+  if (!(width > 0 && height > 0)) throw new RangeError(`${label} must be a positive finite number or [w, h] pair, got ${describeValue(value)}`);
+  return [width, height];
 }
 
-function readPosition(name: string, value: Vec2Like | undefined): [number, number] {
-  if (value === undefined) return [0, 0];
-  if (typeof value !== 'object' || value === null || typeof value.length !== 'number') {
-    throw new TypeError(`${name} options.position must be an [x, y] pair, got ${describeValue(value)}`);
-  }
-  if (value.length < 2 || !Number.isFinite(value[0]) || !Number.isFinite(value[1])) {
-    throw new RangeError(`${name} options.position must be an [x, y] pair of finite numbers, got ${describeValue(value)}`);
-  }
-  return [value[0], value[1]];
+function readPosition(name: string, value: Vec2Like | undefined): readonly [number, number] {
+  return value === undefined ? [0, 0] : frozenVec2(`${name} options.position`, value);
 }
 
 /** The test of a tile value: `undefined` for the default, which checks the value's type itself. */

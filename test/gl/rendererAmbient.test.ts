@@ -25,7 +25,7 @@ it('ambientColor is a frozen snapshot: writing into it throws and leaves the amb
 
 it('an ambientColor option of null or NaN is an error, as from the setter, not the default', () => {
   expect(() => new PenumbraRenderer(gl, { ambientColor: null as unknown as [number, number, number] }))
-    .toThrow(new TypeError('PenumbraRenderer.ambientColor must be an [r, g, b] triple, got null'));
-  expect(() => new PenumbraRenderer(gl, { ambientColor: NaN as unknown as [number, number, number] }))
-    .toThrow(new TypeError('PenumbraRenderer.ambientColor must be an [r, g, b] triple, got NaN'));
+    .toThrow(new TypeError("PenumbraRenderer.ambientColor must be an [r, g, b] triple, a 0xrrggbb number or a '#rrggbb', '#rgb' or 'rgb(r, g, b)' string, got null"));
+  expect(() => new PenumbraRenderer(gl, { ambientColor: NaN }))
+    .toThrow(new RangeError("PenumbraRenderer.ambientColor must be an [r, g, b] triple, a 0xrrggbb number or a '#rrggbb', '#rgb' or 'rgb(r, g, b)' string; a number must be an integer from 0x000000 to 0xffffff, got NaN"));
 });

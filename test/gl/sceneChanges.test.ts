@@ -111,7 +111,7 @@ describe('lights inside hulls', () => {
 
   it('still shadows a lamp by the hulls it does not ignore', () => {
     const housing = new Hull([[44, 28], [52, 28], [52, 36], [44, 36]]);
-    renderer.addLight(new PointLight({ position: [48, 32], range: 40, ignoredHulls: [housing] }));
+    renderer.addLight(new PointLight({ position: [48, 32], range: 40, radius: 0, ignoredHulls: [housing] }));
     renderer.addHull(housing);
     renderer.addHull(new Hull([[60, 28], [64, 28], [64, 36], [60, 36]]));
     const lightmap = frame();

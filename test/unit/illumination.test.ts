@@ -264,7 +264,7 @@ describe('IlluminationQuery: the rules of the renderer\'s model', () => {
   });
 
   it('applies a spotlight\'s cone: (1 − θ / half angle) ^ decay inside, 0 outside', () => {
-    const spot = (coneDecay: number) => new Spotlight({ position: [0, 0], range: 100, rotation: Math.PI / 2, coneAngle: (2 * Math.PI) / 3, coneDecay });
+    const spot = (coneDecay: number) => new Spotlight({ position: [0, 0], range: 100, radius: 0, rotation: Math.PI / 2, coneAngle: (2 * Math.PI) / 3, coneDecay });
     // 30° off the axis (+y) at distance 40, half angle 60°: 1 − ½.
     const point: Point = [40 * Math.sin(Math.PI / 6), 40 * Math.cos(Math.PI / 6)];
     expect(redAt([spot(1)], [], ...point)).toBeCloseTo(0.6 * 0.5, 9);
