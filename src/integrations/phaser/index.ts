@@ -8,6 +8,6 @@ export { PenumbraGroup, type PenumbraGroupOptions } from './PenumbraGroup';
 export type { MaterialOptions } from './surfaces';
 export { TilemapLayerHulls, type TilemapLayerHullsOptions } from './TilemapLayerHulls';
 export { SpriteHulls, type SpriteHullsOptions, type FrameObject } from './SpriteHulls';
-export type { HullTarget } from './shared';
+export type { HullTarget, Placed } from './shared';
 export { LightFollower, type LightFollowOptions } from '../LightFollower';
 export * from '../../index';
