@@ -8,7 +8,12 @@
  *
  * Getters return the library's own form, a frozen `[x, y]` pair.
  */
-export type Vec2Like = readonly [number, number] | ArrayLike<number> | { readonly x: number; readonly y: number };
+export type Vec2Like = readonly [number, number] | ArrayLike<number> | {
+  /** The x component. */
+  readonly x: number;
+  /** The y component. */
+  readonly y: number;
+};
 
 /**
  * An RGB colour, in any of the forms engines use:
