@@ -1,5 +1,5 @@
 import type { Light } from '../index';
-import { assertBoolean, assertFinite, describeValue, frozenVec2, type Vec2Like } from '../scene/validate';
+import { assertBoolean, assertFinite, assertOptions, frozenVec2, type Vec2Like } from '../scene/validate';
 
 /** Options of a light following a display object: where it sits on the object, and whether it turns with it. */
 export interface LightFollowOptions {
@@ -53,10 +53,7 @@ export class LightFollower<T extends object = object> {
 
   /** Made by the layer or the plugin. @internal */
   constructor(object: T, light: Light, options: LightFollowOptions, owner: string) {
-    if (typeof options !== 'object' || options === null) throw new TypeError(`penumbra: ${owner} options must be an object, got ${describeValue(options)}`);
-    for (const key of Object.keys(options)) {
-      if (!OPTION_KEYS.includes(key)) throw new TypeError(`penumbra: ${owner} options.${key} is not an option (the options are ${OPTION_KEYS.join(', ')})`);
-    }
+    assertOptions(`penumbra: ${owner}`, options, OPTION_KEYS);
     this.object = object;
     this.light = light;
     this._offset = frozenVec2('LightFollower.offset', options.offset ?? [0, 0]);

@@ -57,7 +57,9 @@ describe('LightFollower', () => {
   it('rejects options that do not fit, naming them', () => {
     const light = new PointLight();
     expect(() => new LightFollower({}, light, { ofset: [1, 2] } as never, 'PenumbraLayer.follow'))
-      .toThrow('penumbra: PenumbraLayer.follow options.ofset is not an option (the options are offset, rotation)');
+      .toThrow('penumbra: PenumbraLayer.follow options.ofset is not an option (did you mean \'offset\'?)');
+    expect(() => new LightFollower({}, light, { at: [1, 2] } as never, 'PenumbraLayer.follow'))
+      .toThrow('penumbra: PenumbraLayer.follow options.at is not an option (the options are offset, rotation)');
     expect(() => new LightFollower({}, light, { rotation: Number.NaN }, 'PenumbraLayer.follow')).toThrow(RangeError);
     expect(() => new LightFollower({}, light, { offset: 'here' as never }, 'PenumbraLayer.follow')).toThrow(TypeError);
   });
