@@ -130,33 +130,42 @@ function exactSign(a: readonly bigint[], b: readonly bigint[], c: readonly bigin
   return determinant > 0n ? 1 : determinant < 0n ? -1 : 0;
 }
 
-/** The sign of (b − a) × (c − a), exactly. */
+/**
+ * The sign of (b − a) × (c − a), exactly: from the doubles when the determinant is more than 1e-10
+ * of its terms' size (its rounding error is below 1e-15 of that), else in BigInt.
+ */
 function exactOrientation(ax: number, ay: number, bx: number, by: number, cx: number, cy: number): number {
+  const left = (bx - ax) * (cy - ay), right = (by - ay) * (cx - ax);
+  if (Math.abs(left - right) > 1e-10 * (Math.abs(left) + Math.abs(right))) return Math.sign(left - right);
   const [eax, eay, ebx, eby, ecx, ecy] = exactIntegers([ax, ay, bx, by, cx, cy]);
   return exactSign([eax, eay], [ebx, eby], [ecx, ecy]);
 }
 
-/** Whether the closed segments a–b and c–d of exact points share a point. */
-function exactSegmentsMeet(a: readonly bigint[], b: readonly bigint[], c: readonly bigint[], d: readonly bigint[]): boolean {
-  const o1 = exactSign(a, b, c), o2 = exactSign(a, b, d), o3 = exactSign(c, d, a), o4 = exactSign(c, d, b);
-  const within = (p: readonly bigint[], q: readonly bigint[], r: readonly bigint[]) =>
-    [0, 1].every((k) => (p[k] < q[k] ? p[k] : q[k]) <= r[k] && r[k] <= (p[k] < q[k] ? q[k] : p[k]));
+type Point = readonly number[];
+
+/** Whether the closed segments a–b and c–d share a point, exactly. */
+function exactSegmentsMeet(a: Point, b: Point, c: Point, d: Point): boolean {
+  const orientation = (p: Point, q: Point, r: Point) => exactOrientation(p[0], p[1], q[0], q[1], r[0], r[1]);
+  const o1 = orientation(a, b, c), o2 = orientation(a, b, d), o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+  const within = (p: Point, q: Point, r: Point) =>
+    Math.min(p[0], q[0]) <= r[0] && r[0] <= Math.max(p[0], q[0]) && Math.min(p[1], q[1]) <= r[1] && r[1] <= Math.max(p[1], q[1]);
   if (o1 * o2 < 0 && o3 * o4 < 0) return true;
   return (o1 === 0 && within(a, b, c)) || (o2 === 0 && within(a, b, d)) || (o3 === 0 && within(c, d, a)) || (o4 === 0 && within(c, d, b));
 }
 
 /** Simple polygon, exactly, by every pair of edges: neighbours meet only at their shared point, others nowhere. */
-function exactlySimple(points: ReadonlyArray<readonly number[]>): boolean {
-  const flat = exactIntegers(points.flat()), n = points.length;
-  const exact = Array.from({ length: n }, (_, i) => [flat[2 * i], flat[2 * i + 1]]);
+function exactlySimple(points: ReadonlyArray<Point>): boolean {
+  const n = points.length;
   for (let i = 0; i < n; i++) {
-    const a = exact[i], b = exact[(i + 1) % n];
+    const a = points[i], b = points[(i + 1) % n];
     for (let j = i + 1; j < n; j++) {
-      const c = exact[j], d = exact[(j + 1) % n];
+      const c = points[j], d = points[(j + 1) % n];
       if (j === i + 1 || (i === 0 && j === n - 1)) {
-        // Neighbours share one point; they meet elsewhere only by folding back along each other.
+        // Neighbours share one point; they meet elsewhere only by folding back along each other
+        // (collinear, the other two points on one side: each coordinate difference has one sign).
         const [shared, p, q] = j === i + 1 ? [b, a, d] : [a, b, c];
-        if (exactSign(shared, p, q) === 0 && (p[0] - shared[0]) * (q[0] - shared[0]) + (p[1] - shared[1]) * (q[1] - shared[1]) > 0n) return false;
+        if (exactOrientation(shared[0], shared[1], p[0], p[1], q[0], q[1]) === 0
+          && [0, 1].every((k) => Math.sign(p[k] - shared[k]) * Math.sign(q[k] - shared[k]) >= 0)) return false;
       } else if (exactSegmentsMeet(a, b, c, d)) return false;
     }
   }
@@ -230,9 +239,9 @@ describe('exact decisions on nearly collinear edges', () => {
       const ccw = signedArea2(coords) > 0 ? coords : points.slice().reverse().flat();
       const triangles = triangulate(ccw);
       expect(triangles).toHaveLength(3 * (points.length - 2));
-      const exact = exactIntegers(ccw), point = (i: number) => [exact[2 * i], exact[2 * i + 1]];
       for (let t = 0; t < triangles.length; t += 3) {
-        if (exactSign(point(triangles[t]), point(triangles[t + 1]), point(triangles[t + 2])) !== 1) expect.fail(`triangle ${t / 3} of ${JSON.stringify(ccw)} does not turn left`);
+        const [a, b, c] = [2 * triangles[t], 2 * triangles[t + 1], 2 * triangles[t + 2]];
+        if (exactOrientation(ccw[a], ccw[a + 1], ccw[b], ccw[b + 1], ccw[c], ccw[c + 1]) !== 1) expect.fail(`triangle ${t / 3} of ${JSON.stringify(ccw)} does not turn left`);
       }
     }
   });
