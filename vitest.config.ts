@@ -1,3 +1,4 @@
+import { resolve } from 'node:path';
 import { defineConfig } from 'vitest/config';
 
 export default defineConfig({
@@ -8,5 +9,8 @@ export default defineConfig({
     hookTimeout: 120_000,
     // headless-gl contexts and Chromium are heavy: one test file at a time keeps memory and timings sane.
     fileParallelism: false,
+    // In a terminal, vitest's live summary; in a log (CI, a pipe), each test as it ends and each file
+    // as it starts and ends, so a long run is never silent.
+    reporters: process.stdout.isTTY ? ['default'] : ['verbose', resolve(import.meta.dirname, 'test/progressReporter.ts')],
   },
 });
