@@ -30,8 +30,8 @@ export interface PaintGuide {
 
 /**
  * The editing gizmos, drawn unlit on a 2D canvas over the WebGL canvas: light handles, the suns'
- * compasses, hull outlines (invalid hulls dashed red, as the renderer ignores them; open hulls
- * unclosed), the selection, the hulls the
+ * compasses, outlines of the hulls no art draws (invalid hulls dashed red, as the renderer ignores
+ * them; open hulls unclosed), the selection, the hulls the
  * selected light ignores (orange), the hull being drawn, and in tile mode the faint grid and the
  * tile under the pointer.
  */
@@ -57,8 +57,10 @@ export class Overlay {
     const { hulls, lights } = playground.renderer;
     const selected = playground.selection;
     g.lineWidth = 1.5;
+    // The showcase's art shows the level's hulls: an outline over it would read as a rim of light along every wall.
+    const drawnByArt = (hull: Hull) => playground.showcaseActive && playground.showcase.draws(hull);
     for (const hull of hulls) {
-      if (hull === selected || hull.valid && hulls.length > MAX_OUTLINED_HULLS) continue;
+      if (hull === selected || drawnByArt(hull) || hull.valid && hulls.length > MAX_OUTLINED_HULLS) continue;
       this.outlineHull(hull, hull.valid ? 'rgba(255, 255, 255, 0.25)' : '#ff4d4d');
     }
     if (selected instanceof Hull) this.outlineHull(selected, selected.valid ? SELECTED_COLOR : '#ff4d4d');

@@ -285,6 +285,12 @@ export class Playground extends EventTarget {
     renderer.draw();
   }
 
+  /** Whether images traced into hulls are drawn: a scene file keeps their hulls, not their pictures. */
+  get hasTracedImages(): boolean {
+    const hulls = this.renderer.hulls;
+    return this.images.some((image) => image.hulls.some((hull) => hulls.includes(hull)));
+  }
+
   /** Drops (and frees) the images none of whose hulls is in the scene any more. */
   private forgetRemovedImages(): void {
     const hulls = this.renderer.hulls;

@@ -66,7 +66,10 @@ function selectPreset(name: string): void {
 
 const panel = new Panel(playground, editor, tracer, {
   selectPreset,
-  save: () => downloadText(writeScene(playground.document()), 'scene.penumbra.json'),
+  save: () => {
+    downloadText(writeScene(playground.document()), 'scene.penumbra.json');
+    if (playground.hasTracedImages) showError('Saved. The file keeps the hulls traced from images, not the images drawn under them.');
+  },
   load: () => pickTextFile((text, name) => loadText(text, name, `file: ${name}`)),
   pickImage: () => pickImageFile((file) => void traceImage(file, ...viewCentre())),
   showError,

@@ -295,6 +295,24 @@ describe('playground page in Chromium', () => {
       brightnessNear(half, day, 0.5);
     }, SHOWCASE_TEST_MS);
 
+    it('outlines no hull the level\'s art draws (a rim of light along every wall), but a hull drawn in the editor and the selected one', async () => {
+      await page.evaluate(() => window.playground.selectPreset('Showcase'));
+      // The west side of the wall between the hall and the storeroom (world x = 768, y 384–704).
+      const edge: [number, number] = [768, 459];
+      await setCamera(...edge, 1);
+      const outlineAt = async (x: number, y: number) => page.evaluate((p) => window.playground.overlayAlpha(...p), await toScreen(x, y));
+      expect(await outlineAt(...edge)).toBe(0);
+      await page.mouse.click(...await toScreen(800, 459));
+      expect(await outlineAt(...edge)).toBeGreaterThan(100);
+      await page.keyboard.press('Escape');
+      expect(await outlineAt(...edge)).toBe(0);
+      await clickButton('draw hull');
+      for (const point of [[700, 420], [740, 420], [740, 500]] as [number, number][]) await page.mouse.click(...await toScreen(...point));
+      await page.keyboard.press('Enter');
+      await page.keyboard.press('Escape');
+      expect(await outlineAt(720, 420)).toBeGreaterThan(30);
+    }, SHOWCASE_TEST_MS);
+
     it('saves the showcase with its art, look, daylight and flicker, and the saved file loads back to the same pixels', async () => {
       await page.evaluate(() => window.playground.selectPreset('Showcase'));
       // Take out the second torch: the lights after it move up the file, and keep their art.
@@ -598,6 +616,9 @@ describe('playground page in Chromium', () => {
     const [r, g] = await readPixel(cx + 35, cy);
     expect(r).toBeGreaterThan(2 * g + 20);
     expect(Math.abs(floor[0] - floor[1])).toBeLessThan(30);
+    // A file keeps the traced hulls, not the picture: the save says so.
+    expect(JSON.parse(await saveThroughPanel()).hulls).toHaveLength(shapes.length);
+    expect(await page.evaluate(() => window.playground.errorMessage())).toBe('Saved. The file keeps the hulls traced from images, not the images drawn under them.');
     expect(errors).toEqual([]);
   });
 
