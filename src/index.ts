@@ -1,3 +1,17 @@
+/**
+ * The core, for any WebGL2 context (plain WebGL2 in a browser, or Node with headless-gl 9):
+ * {@link PenumbraRenderer}, the lights, {@link Hull} and the scene files.
+ * `import { PenumbraRenderer, PointLight, Hull } from 'penumbra-gl'`.
+ *
+ * - {@link PenumbraRenderer} lights a WebGL2 context: `beginDraw()` / `draw()`, or `drawInPlace()`.
+ * - Lights: {@link PointLight}, {@link Spotlight}, {@link TexturedLight}, {@link DirectionalLight}.
+ * - Occluders: {@link Hull}, from tile grids ({@link hullsFromTiles}, {@link TileHulls}) and sprite alpha ({@link hullsFromAlpha}).
+ * - Scene files: {@link readScene}, {@link writeScene}, {@link createSceneObjects}.
+ *
+ * A bundle that imports only the scene format or the model classes leaves the shaders and GL code out.
+ *
+ * @module penumbra-gl
+ */
 export { PenumbraRenderer, type PenumbraRendererOptions, type FrameStats, type SurfaceTextures } from './PenumbraRenderer';
 export { SURFACE_GLSL } from './passes/shaders';
 export { encodeShininess } from './passes/surfaceLayout';

@@ -1,6 +1,14 @@
 /**
- * Phaser 4 integration of penumbra-gl: `import { PenumbraPlugin } from 'penumbra-gl/phaser'`.
- * Re-exports the core API so that one import is enough.
+ * With Phaser 4: {@link PenumbraPlugin}, a scene plugin, and {@link penumbraGameConfig} for a WebGL2 game.
+ * `import { PenumbraPlugin, penumbraGameConfig } from 'penumbra-gl/phaser'`.
+ *
+ * - {@link PenumbraPlugin}: a scene plugin, `this.penumbra` in every scene.
+ * - {@link penumbraGameConfig} gives Phaser the WebGL2 context the lighting needs.
+ * - Occluders from game objects: {@link TilemapLayerHulls}, {@link SpriteHulls}; {@link PenumbraGroup} lights a group apart.
+ *
+ * Re-exports the core API (`penumbra-gl`), so that one import is enough.
+ *
+ * @module penumbra-gl/phaser
  */
 export { PenumbraPlugin, DEFAULT_LAYER_DEPTH, type PenumbraPluginOptions } from './PenumbraPlugin';
 export { penumbraGameConfig } from './gameConfig';
