@@ -10,7 +10,7 @@ export const CHROMIUM_PATH = process.env.PUPPETEER_EXECUTABLE_PATH ?? '/usr/bin/
  */
 export async function launchChromium(protocolTimeout?: number): Promise<Browser> {
   if (!existsSync(CHROMIUM_PATH)) {
-    throw new Error(`Chromium not found at ${CHROMIUM_PATH}: install it (as root: apt-get install -y chromium) or set PUPPETEER_EXECUTABLE_PATH.`);
+    throw new Error(`Chromium not found at ${CHROMIUM_PATH}: install it (Debian, as root: apt-get update && apt-get install -y chromium) or set PUPPETEER_EXECUTABLE_PATH to a Chromium or Chrome binary; npm test checks this before it starts (node scripts/with-display.mjs --check).`);
   }
   return puppeteer.launch({
     executablePath: CHROMIUM_PATH,
