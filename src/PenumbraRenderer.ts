@@ -707,14 +707,22 @@ export class PenumbraRenderer {
   /**
    * Throws, before anything is bound, unless `blitFramebuffer` can copy the viewport of the bound
    * framebuffer into the scene target: from a multisampled framebuffer (a browser canvas's, by
-   * default) it copies only between identical rectangles, so the viewport must be the renderer's
-   * size at the origin. Reads the viewport saved by the host state, and the samples of the bound
-   * draw framebuffer.
+   * default) it copies only between identical rectangles and formats, so the framebuffer must have
+   * alpha (an opaque canvas's is RGB) and the viewport must be the renderer's size at the origin.
+   * Reads the viewport saved by the host state, and the samples and alpha bits of the bound draw
+   * framebuffer.
    */
   private checkInPlaceSource(): void {
     const gl = this.gl, v = this.compositeViewport;
     const samples = gl.getParameter(gl.SAMPLES) as number | null;
-    if (!samples || (v[0] === 0 && v[1] === 0 && v[2] === this.width && v[3] === this.height)) return;
+    if (!samples) return;
+    // A multisampled copy needs the same format at both ends, and the scene target has alpha.
+    if (gl.getParameter(gl.ALPHA_BITS) === 0) {
+      throw new Error(`penumbra: PenumbraRenderer.drawInPlace: the bound framebuffer is multisampled (${samples} samples) and has no alpha, ` +
+        'so it cannot be copied into the renderer\'s RGBA scene target (WebGL refuses a multisampled copy between formats): make the canvas ' +
+        'with getContext(\'webgl2\', { alpha: true }) or { antialias: false }, or draw into a framebuffer with alpha or without multisampling');
+    }
+    if (v[0] === 0 && v[1] === 0 && v[2] === this.width && v[3] === this.height) return;
     throw new Error(`penumbra: PenumbraRenderer.drawInPlace: the bound framebuffer is multisampled (${samples} samples), which can be copied ` +
       `only to the same rectangle: its viewport [${v.join(', ')}] must be [0, 0, ${this.width}, ${this.height}], the renderer's size at the origin ` +
       '(resize the renderer to the viewport and draw at the origin, or draw into a framebuffer without multisampling)');
@@ -764,8 +772,9 @@ export class PenumbraRenderer {
    *   {@link PenumbraRenderer.draw}). Default every layer.
    * @param surfaces - with `normals`, the host's normal and material textures for what it drew
    *   (see {@link SurfaceTextures}). Default: none (lit as without normals).
-   * @throws Error, before anything is bound, when the bound framebuffer is multisampled and its
-   *   viewport is not the renderer's size at the origin.
+   * @throws Error, before anything is bound, when the bound framebuffer is multisampled and has no
+   *   alpha (a canvas made with `{ alpha: false }` and antialiasing) or its viewport is not the
+   *   renderer's size at the origin.
    */
   drawInPlace(layers = ALL_LAYERS, surfaces?: SurfaceTextures): void {
     assertLayerMask('PenumbraRenderer.drawInPlace: layers', layers);

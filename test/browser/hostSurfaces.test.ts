@@ -9,6 +9,7 @@ import type { MrtFrame, MultisampledFigures } from './host-surfaces-page/main';
 interface HostSurfacesPageApi {
   mrtFrames(): { draw: MrtFrame; inPlace: MrtFrame; reference: { lit: number; dark: number } };
   multisampledInPlace(): MultisampledFigures;
+  opaqueMultisampledInPlace(): { alphaBits: number; samples: number; thrown: string; glError: number };
   textureMisuse(): { thrown: string[]; glError: number };
 }
 
@@ -49,6 +50,14 @@ describe('host framebuffers in Chromium', () => {
     ]);
     for (const refusal of figures.refused) expect(refusal, refusal.viewport.join()).toMatchObject({ glError: 0, stateKept: true });
     expect(figures.afterwards).toEqual({ differs: 0, glError: 0 });
+  });
+
+  it('multisampled and opaque (an antialiased canvas with alpha: false): drawInPlace refuses it naming the cause, where the copy would leave it black', async () => {
+    const figures = await page.page.evaluate(() => (window as unknown as HostSurfacesPageApi).opaqueMultisampledInPlace());
+    expect(figures.samples).toBeGreaterThan(0);
+    expect(figures.alphaBits).toBe(0);
+    expect(figures.thrown).toMatch(/PenumbraRenderer\.drawInPlace: the bound framebuffer is multisampled \(\d+ samples\) and has no alpha.*\{ alpha: true \}/);
+    expect(figures.glError).toBe(0);
   });
 
   it('TexturedLight refuses a texture that is no WebGLTexture, and the renderer one of another context, at addLight and at the next frame', async () => {

@@ -196,4 +196,22 @@ function textureMisuse(): { thrown: string[]; glError: number } {
   return { thrown, glError: gl.getError() };
 }
 
-Object.assign(window, { mrtFrames, multisampledInPlace, textureMisuse });
+/** drawInPlace on a multisampled opaque canvas (RGB, no alpha): what it throws, and the GL error left. */
+function opaqueMultisampledInPlace(): { alphaBits: number; samples: number; thrown: string; glError: number } {
+  const opaque = document.createElement('canvas');
+  opaque.width = opaque.height = SIZE;
+  const context = opaque.getContext('webgl2', { alpha: false, antialias: true })!;
+  const lit = new PenumbraRenderer(context, { width: SIZE, height: SIZE });
+  lit.addLight(new PointLight({ position: [8, 12], range: 30, radius: 2 }));
+  let thrown = 'nothing';
+  try {
+    lit.drawInPlace();
+  } catch (error) {
+    thrown = String(error);
+  }
+  const figures = { alphaBits: context.getParameter(context.ALPHA_BITS) as number, samples: context.getParameter(context.SAMPLES) as number, thrown, glError: context.getError() };
+  lit.dispose();
+  return figures;
+}
+
+Object.assign(window, { mrtFrames, multisampledInPlace, opaqueMultisampledInPlace, textureMisuse });
