@@ -92,7 +92,7 @@ export function segmentsIntersect(
 /**
  * True for a simple polygon: at least 3 points, non-zero area, and no two edges meeting
  * anywhere but at their shared end point (so also no outline folding back along itself).
- * Exact for any doubles (see {@link orient2d}). Zero area needs no test of its own (a rounded
+ * Exact for any doubles (see `orient2d`). Zero area needs no test of its own (a rounded
  * area could call a thin polygon far from the origin degenerate): points all on one line always
  * fold back at the outermost one.
  * O(n log n): after linear checks of the points, a sweep line (Shamos–Hoey) tests only edges
