@@ -6,6 +6,11 @@ import type { Playground } from './Playground';
 export const TILE_SIZES = [16, 32, 64] as const;
 /** Tiles per side of the painted grid: it is centred where painting starts, and moves when a stroke leaves it. */
 const GRID_TILES = 256;
+/**
+ * Tiles per side of the grid's chunks (TileHulls' chunkSize). The grid starts at a multiple of it, so
+ * the seams where joined walls are cut lie at the same places in the world whichever tile started it.
+ */
+const CHUNK_TILES = 32;
 
 /**
  * Paints wall tiles on a world-aligned grid (tile (tx, ty) spans `[tx, tx + 1) × [ty, ty + 1) ×
@@ -100,10 +105,10 @@ export class TilePainter {
   private gridFor(tx: number, ty: number): TileHulls {
     const inside = (grid: TileHulls) => tx >= this.gridX && ty >= this.gridY && tx < this.gridX + grid.width && ty < this.gridY + grid.height;
     if (this.tiles && this.current && this.gridSize === this.tileSize && inside(this.tiles)) return this.tiles;
-    // A grid of the same size that still holds the tile keeps its place; otherwise it centres on the tile.
+    // A grid of the same size that still holds the tile keeps its place; otherwise one around the tile, on the chunks.
     if (!(this.tiles && this.gridSize === this.tileSize && inside(this.tiles))) {
-      this.gridX = tx - GRID_TILES / 2;
-      this.gridY = ty - GRID_TILES / 2;
+      this.gridX = Math.floor((tx - GRID_TILES / 2) / CHUNK_TILES) * CHUNK_TILES;
+      this.gridY = Math.floor((ty - GRID_TILES / 2) / CHUNK_TILES) * CHUNK_TILES;
     }
     this.gridSize = this.tileSize;
     this.current = true;
@@ -136,7 +141,7 @@ export class TilePainter {
         }
       }
     }
-    const tiles = new TileHulls(cells, { width: GRID_TILES, tileSize: size, position: [this.gridX * size, this.gridY * size] });
+    const tiles = new TileHulls(cells, { width: GRID_TILES, tileSize: size, position: [this.gridX * size, this.gridY * size], chunkSize: CHUNK_TILES });
     this.tiles = tiles;
     this.made.clear();
     for (const hull of tiles.hulls) {
