@@ -219,7 +219,7 @@ export class LightPass {
     this.binning.set(draw.binning);
     light.writeShadowKept(this.shadowKept);
     this.falloff[0] = FALLOFF_CODES[light.falloff];
-    this.falloff[1] = light.inverseSquareCore();
+    light.writeInverseSquareCore(this.falloff, 1);
     this.towardsLight[0] = light.position[0];
     this.towardsLight[1] = light.position[1];
     this.towardsLight[2] = light.height;

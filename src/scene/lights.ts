@@ -150,6 +150,9 @@ const OPTION_KEYS: Readonly<Record<LightKind, readonly string[]>> = {
   ],
 };
 
+/** Where {@link Light.inverseSquareCore} reads its value back. */
+const coreScratch = new Float64Array(1);
+
 /**
  * Common state of every light. Lights are plain data: add them to a renderer with
  * `renderer.addLight(light)`; every change shows in the next frame.
@@ -373,7 +376,9 @@ export abstract class Light {
    * @internal
    */
   writeEmittedColor(out: Float32Array): void {
-    for (let c = 0; c < 3; c++) out[c] = Math.min(this._color[c] * this._intensity, FLOAT32_MAX);
+    // The bounds are written out as numbers here and in writeInverseSquareCore: read from module
+    // constants, they cost a boxed number per light and frame (the bench's Node heap figure).
+    for (let c = 0; c < 3; c++) out[c] = Math.min(this._color[c] * this._intensity, 3.4028234663852886e38 /* FLOAT32_MAX */);
   }
 
   /** Adds `hulls` to {@link Light.ignoredHulls} after checking that every one is a `Hull`; on an error none is added. */
@@ -395,8 +400,14 @@ export abstract class Light {
    * @internal
    */
   inverseSquareCore(): number {
+    this.writeInverseSquareCore(coreScratch, 0);
+    return coreScratch[0];
+  }
+
+  /** Writes {@link Light.inverseSquareCore} into `out[at]` (the light pass's path, each frame). @internal */
+  writeInverseSquareCore(out: Float32Array | Float64Array, at: number): void {
     const core = Math.max(this._radius, 1) / this._range;
-    return core > INVERSE_SQUARE_CORE_MAX ? INVERSE_SQUARE_CORE_MAX : core < INVERSE_SQUARE_CORE_MIN ? INVERSE_SQUARE_CORE_MIN : core;
+    out[at] = core > 65536 /* 2^16 */ ? 65536 : core < 8.673617379884035e-19 /* 2^−60 */ ? 8.673617379884035e-19 : core;
   }
 
   /**
@@ -452,8 +463,6 @@ export abstract class Light {
 }
 
 const CENTRE = [0.5, 0.5] as const;
-/** Bounds of the inverse-square core s: s² within float32's normal numbers, as the shader squares it (see {@link Falloff.InverseSquare}). */
-const INVERSE_SQUARE_CORE_MIN = 2 ** -60, INVERSE_SQUARE_CORE_MAX = 2 ** 16;
 /** A light's height while none is set, per unit of range: high enough that flat normals are well lit across most of the range. */
 const DEFAULT_HEIGHT_PER_RANGE = 0.25;
 const SHADOW_TYPES: readonly ShadowType[] = Object.values(ShadowType);
