@@ -126,3 +126,18 @@ export class LightFollower<T extends object = object> {
 function checkRotation(value: number | null): number | null {
   return value === null ? null : assertFinite('LightFollower.rotation', value);
 }
+
+/**
+ * Stops, last first, every follower of `followers` that `target` names (the follower itself, its
+ * light or its object) through `stop(index)`; whether there was one.
+ */
+export function stopFollowersOf<T extends object>(followers: readonly LightFollower<T>[], target: LightFollower<T> | Light | T, stop: (index: number) => unknown): boolean {
+  let stopped = false;
+  for (let i = followers.length - 1; i >= 0; i--) {
+    const follower = followers[i];
+    if (follower !== target && follower.light !== target && follower.object !== target) continue;
+    stop(i);
+    stopped = true;
+  }
+  return stopped;
+}

@@ -3,7 +3,7 @@ import { Light, PenumbraRenderer, type Hull, type LightOptions, type PenumbraRen
 import { ALL_LAYERS, assertLayerMask } from '../../scene/validate';
 import { isOpaqueMultisampledCanvas, isWebGL2, notWebGL2Error } from '../../gl/capabilities';
 import { InPlaceLighting, type InPlaceView } from '../inPlaceLighting';
-import { LightFollower, type LightFollowOptions } from '../LightFollower';
+import { LightFollower, stopFollowersOf, type LightFollowOptions } from '../LightFollower';
 import type { Affine2D } from '../viewProjection';
 import { PHASER_WEBGL2_FIX } from './gameConfig';
 import { PenumbraGroup, type PenumbraGroupOptions } from './PenumbraGroup';
@@ -196,14 +196,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
    * stay in the lighting where they are, enabled. Returns whether one was following.
    */
   unfollow(target: LightFollower<Placed> | Light | Phaser.GameObjects.GameObject): boolean {
-    let stopped = false;
-    for (let i = this._followers.length - 1; i >= 0; i--) {
-      const follower = this._followers[i];
-      if (follower !== target && follower.light !== target && follower.object !== target) continue;
-      this.stopFollower(i);
-      stopped = true;
-    }
-    return stopped;
+    return stopFollowersOf(this._followers, target, (i) => this.stopFollower(i));
   }
 
   /**

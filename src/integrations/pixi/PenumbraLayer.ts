@@ -3,7 +3,7 @@ import { Hull, Light, PenumbraRenderer, type LightOptions, type PenumbraRenderer
 import { isOpaqueMultisampledCanvas, isWebGL2, notWebGL2Error } from '../../gl/capabilities';
 import { ALL_LAYERS, assertLayerMask, describeValue } from '../../scene/validate';
 import { InPlaceLighting, type InPlaceView } from '../inPlaceLighting';
-import { LightFollower, type LightFollowOptions } from '../LightFollower';
+import { LightFollower, stopFollowersOf, type LightFollowOptions } from '../LightFollower';
 import { GraphicsOccluder, type GraphicsHullsOptions } from './graphicsHulls';
 import { Occluder, placeInSpace, prepareSpace, type OccluderSpace } from './Occluder';
 import { gpuReads, SpriteOccluder, type SpriteHullsOptions } from './spriteHulls';
@@ -241,14 +241,7 @@ export class PenumbraLayer extends RenderContainer {
    * lights stay in the renderer where they are, enabled. Returns whether one was following.
    */
   unfollow(target: LightFollower<Container> | Light | Container): boolean {
-    let stopped = false;
-    for (let i = this._followers.length - 1; i >= 0; i--) {
-      const follower = this._followers[i];
-      if (follower !== target && follower.light !== target && follower.object !== target) continue;
-      this.stopFollower(i);
-      stopped = true;
-    }
-    return stopped;
+    return stopFollowersOf(this._followers, target, (i) => this.stopFollower(i));
   }
 
   /**
