@@ -127,17 +127,68 @@ function checkRotation(value: number | null): number | null {
   return value === null ? null : assertFinite('LightFollower.rotation', value);
 }
 
+/** What an engine gives a {@link LightFollowers}: its objects' destruction, and removing a light. */
+export interface FollowedObjects<T> {
+  /** Calls `destroyed(object)` once `object` is destroyed, until {@link FollowedObjects.ignore}. */
+  listen(object: T, destroyed: (object: T) => void): void;
+  ignore(object: T, destroyed: (object: T) => void): void;
+  removeLight(light: Light): void;
+}
+
 /**
- * Stops, last first, every follower of `followers` that `target` names (the follower itself, its
- * light or its object) through `stop(index)`; whether there was one.
+ * The lights following display objects of one layer or plugin, in the order they started: one
+ * follower per light, the engine listening to each followed object's destruction while a follower
+ * needs it (the object's lights are then removed). @internal
  */
-export function stopFollowersOf<T extends object>(followers: readonly LightFollower<T>[], target: LightFollower<T> | Light | T, stop: (index: number) => unknown): boolean {
-  let stopped = false;
-  for (let i = followers.length - 1; i >= 0; i--) {
-    const follower = followers[i];
-    if (follower !== target && follower.light !== target && follower.object !== target) continue;
-    stop(i);
-    stopped = true;
+export class LightFollowers<T extends object> {
+  readonly list: LightFollower<T>[] = [];
+
+  constructor(private readonly engine: FollowedObjects<T>) {}
+
+  /** Adds `follower`, ending the one its light had. */
+  add(follower: LightFollower<T>): void {
+    this.drop(follower.light, true);
+    if (!this.list.some((other) => other.object === follower.object)) this.engine.listen(follower.object, this.destroyed);
+    this.list.push(follower);
   }
-  return stopped;
+
+  /** Ends every follower `target` names (the follower itself, its light or its object); whether there was one. */
+  unfollow(target: object): boolean {
+    let stopped = false;
+    for (let i = this.list.length - 1; i >= 0; i--) {
+      const follower = this.list[i];
+      if (follower !== target && follower.light !== target && follower.object !== target) continue;
+      this.stop(i);
+      stopped = true;
+    }
+    return stopped;
+  }
+
+  /** Ends the follower of `light`, if any; `keep` leaves the light in the renderer. */
+  drop(light: Light, keep: boolean): void {
+    const i = this.list.findIndex((follower) => follower.light === light);
+    if (i < 0) return;
+    this.stop(i);
+    if (!keep) this.engine.removeLight(light);
+  }
+
+  /** Ends every follower, the lights left where they are. */
+  clear(): void {
+    for (let i = this.list.length - 1; i >= 0; i--) this.stop(i);
+  }
+
+  /** Ends follower `i`: stops listening to its object once no other follower needs it, and hands the light back. */
+  private stop(i: number): LightFollower<T> {
+    const [follower] = this.list.splice(i, 1);
+    if (!this.list.some((other) => other.object === follower.object)) this.engine.ignore(follower.object, this.destroyed);
+    follower.release();
+    return follower;
+  }
+
+  /** A followed object was destroyed: its lights go with it. */
+  private readonly destroyed = (object: T): void => {
+    for (let i = this.list.length - 1; i >= 0; i--) {
+      if (this.list[i].object === object) this.engine.removeLight(this.stop(i).light);
+    }
+  };
 }

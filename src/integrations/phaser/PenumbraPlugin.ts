@@ -3,7 +3,7 @@ import { Light, PenumbraRenderer, type Hull, type LightOptions, type PenumbraRen
 import { ALL_LAYERS, assertLayerMask } from '../../scene/validate';
 import { isOpaqueMultisampledCanvas, isWebGL2, notWebGL2Error } from '../../gl/capabilities';
 import { InPlaceLighting, type InPlaceView } from '../inPlaceLighting';
-import { LightFollower, stopFollowersOf, type LightFollowOptions } from '../LightFollower';
+import { LightFollower, LightFollowers, type LightFollowOptions } from '../LightFollower';
 import type { Affine2D } from '../viewProjection';
 import { PHASER_WEBGL2_FIX } from './gameConfig';
 import { PenumbraGroup, type PenumbraGroupOptions } from './PenumbraGroup';
@@ -57,7 +57,11 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   private surfaces: PhaserSurfaces | null = null;
   /** The tilemap layers and sprites added, with their hulls. */
   private readonly occluders = new Map<Phaser.GameObjects.GameObject, TilemapLayerHulls | SpriteHulls>();
-  private readonly _followers: LightFollower<Placed>[] = [];
+  private readonly _followers = new LightFollowers<Placed>({
+    listen: (object, destroyed) => object.on(Phaser.GameObjects.Events.DESTROY, destroyed),
+    ignore: (object, destroyed) => object.off(Phaser.GameObjects.Events.DESTROY, destroyed),
+    removeLight: (light) => this.inPlace?.renderer.removeLight(light),
+  });
   /** Scratch for a follower's object placement and its object → world transform. */
   private readonly followedPlacement: Placement = { x: 0, y: 0, rotation: 0, scaleX: 1, scaleY: 1 };
   private readonly followedTransform = new Float64Array(6);
@@ -150,7 +154,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   }
   /** Removes a light, and stops it following a game object; returns whether it was there. */
   removeLight(light: Light): boolean {
-    this.dropFollower(light, false);
+    this._followers.drop(light, false);
     return this.penumbra.removeLight(light);
   }
 
@@ -178,17 +182,15 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     if (!(light instanceof Light)) throw new TypeError(`penumbra: PenumbraPlugin.follow takes a Light to move, got ${describe(light)}`);
     const placed = object as Placed;
     const follower = new LightFollower(placed, light, options, 'PenumbraPlugin.follow');
-    this.dropFollower(light, true);
+    this._followers.add(follower);
     this.penumbra.addLight(light);
-    if (!this._followers.some((other) => other.object === placed)) placed.on(Phaser.GameObjects.Events.DESTROY, this.followedDestroyed, this);
-    this._followers.push(follower);
     this.placeFollower(follower);
     return follower;
   }
 
   /** The lights following game objects, in the order they started. */
   get followers(): readonly LightFollower<Placed>[] {
-    return this._followers;
+    return this._followers.list;
   }
 
   /**
@@ -196,7 +198,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
    * stay in the lighting where they are, enabled. Returns whether one was following.
    */
   unfollow(target: LightFollower<Placed> | Light | Phaser.GameObjects.GameObject): boolean {
-    return stopFollowersOf(this._followers, target, (i) => this.stopFollower(i));
+    return this._followers.unfollow(target);
   }
 
   /**
@@ -204,7 +206,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
    * the scene; call it yourself only to read the lights' placement right after a change.
    */
   updateFollowers(): void {
-    const followers = this._followers;
+    const followers = this._followers.list;
     for (let i = 0; i < followers.length; i++) this.placeFollower(followers[i]);
   }
   /** Adds a hull in world units; see {@link PenumbraRenderer.addHull}. */
@@ -303,7 +305,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     events?.off(Phaser.Scenes.Events.PRE_RENDER, this.updateFollowers, this);
     events?.off(Phaser.Scenes.Events.DESTROY, this.destroy, this);
     this.dropOccluders();
-    this.dropFollowers();
+    this._followers.clear();
     this.extern?.destroy();
     this.extern = null;
     this.inPlace?.renderer.dispose();
@@ -333,10 +335,6 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
 
   private dropOccluders(): void {
     for (const occluder of [...this.occluders.values()]) occluder.destroy();
-  }
-
-  private dropFollowers(): void {
-    for (let i = this._followers.length - 1; i >= 0; i--) this.stopFollower(i);
   }
 
   /**
@@ -373,31 +371,6 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
     const visible = (object as Partial<Phaser.GameObjects.Components.Visible>).visible !== false;
     const shown = visible && (object.displayList != null || object.parentContainer != null);
     follower.place(m, shown);
-  }
-
-  /** Ends follower `i`: stops listening to its object once no other follower needs it, and hands the light back. */
-  private stopFollower(i: number): LightFollower<Placed> {
-    const [follower] = this._followers.splice(i, 1);
-    if (!this._followers.some((other) => other.object === follower.object)) {
-      follower.object.off(Phaser.GameObjects.Events.DESTROY, this.followedDestroyed, this);
-    }
-    follower.release();
-    return follower;
-  }
-
-  /** Ends the follower of `light`, if any; `keep` leaves the light in the lighting. */
-  private dropFollower(light: Light, keep: boolean): void {
-    const i = this._followers.findIndex((follower) => follower.light === light);
-    if (i < 0) return;
-    this.stopFollower(i);
-    if (!keep) this.inPlace?.renderer.removeLight(light);
-  }
-
-  /** A followed object was destroyed: its lights go with it. */
-  private followedDestroyed(object: Phaser.GameObjects.GameObject): void {
-    for (let i = this._followers.length - 1; i >= 0; i--) {
-      if (this._followers[i].object === object) this.inPlace?.renderer.removeLight(this.stopFollower(i).light);
-    }
   }
 
   private createLighting(options: PenumbraPluginOptions): InPlaceLighting {
@@ -441,7 +414,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   private onShutdown(): void {
     this.extern = null;
     this.dropOccluders();
-    this.dropFollowers();
+    this._followers.clear();
     const penumbra = this.inPlace?.renderer;
     if (!penumbra) return;
     for (let i = penumbra.lights.length - 1; i >= 0; i--) penumbra.removeLight(penumbra.lights[i]);

@@ -3,7 +3,7 @@ import { Hull, Light, PenumbraRenderer, type LightOptions, type PenumbraRenderer
 import { isOpaqueMultisampledCanvas, isWebGL2, notWebGL2Error } from '../../gl/capabilities';
 import { ALL_LAYERS, assertLayerMask, describeValue } from '../../scene/validate';
 import { InPlaceLighting, type InPlaceView } from '../inPlaceLighting';
-import { LightFollower, stopFollowersOf, type LightFollowOptions } from '../LightFollower';
+import { LightFollower, LightFollowers, type LightFollowOptions } from '../LightFollower';
 import { GraphicsOccluder, type GraphicsHullsOptions } from './graphicsHulls';
 import { Occluder, placeInSpace, prepareSpace, type OccluderSpace } from './Occluder';
 import { gpuReads, SpriteOccluder, type SpriteHullsOptions } from './spriteHulls';
@@ -68,7 +68,11 @@ export class PenumbraLayer extends RenderContainer {
   private readonly bindState = {} as BindState;
   private readonly pixi: Renderer;
   private readonly _occluders: Occluder[] = [];
-  private readonly _followers: LightFollower<Container>[] = [];
+  private readonly _followers = new LightFollowers<Container>({
+    listen: (object, destroyed) => object.on('destroyed', destroyed),
+    ignore: (object, destroyed) => object.off('destroyed', destroyed),
+    removeLight: (light) => this.penumbra.removeLight(light),
+  });
   /** Scratch for a follower's object → camera transform. */
   private readonly followerPlacement = new Float64Array(6);
   private readonly space: OccluderSpace = { camera: null, root: null, fromRoot: new Float64Array(6) };
@@ -121,7 +125,7 @@ export class PenumbraLayer extends RenderContainer {
   }
   /** Removes a light, and stops it following a display object; returns whether it was there. */
   removeLight(light: Light): boolean {
-    this.dropFollower(light, false);
+    this._followers.drop(light, false);
     return this.penumbra.removeLight(light);
   }
   /** Adds a hull (in the camera's space); see {@link PenumbraRenderer.addHull}. */
@@ -222,10 +226,8 @@ export class PenumbraLayer extends RenderContainer {
       throw new TypeError(`penumbra: PenumbraLayer.follow takes a Pixi display object to follow, got ${describeValue(object)}`);
     }
     const follower = new LightFollower(object, target, options, 'PenumbraLayer.follow');
-    this.dropFollower(target, true);
+    this._followers.add(follower);
     this.penumbra.addLight(target);
-    if (!this._followers.some((other) => other.object === object)) object.on('destroyed', this.followedDestroyed);
-    this._followers.push(follower);
     prepareSpace(this.space, this, this.camera);
     this.placeFollower(follower);
     return follower;
@@ -233,7 +235,7 @@ export class PenumbraLayer extends RenderContainer {
 
   /** The lights following display objects, in the order they started. */
   get followers(): readonly LightFollower<Container>[] {
-    return this._followers;
+    return this._followers.list;
   }
 
   /**
@@ -241,7 +243,7 @@ export class PenumbraLayer extends RenderContainer {
    * lights stay in the renderer where they are, enabled. Returns whether one was following.
    */
   unfollow(target: LightFollower<Container> | Light | Container): boolean {
-    return stopFollowersOf(this._followers, target, (i) => this.stopFollower(i));
+    return this._followers.unfollow(target);
   }
 
   /**
@@ -249,7 +251,7 @@ export class PenumbraLayer extends RenderContainer {
    * it renders; call it to read the lights' placement before then.
    */
   updateFollowers(): void {
-    const followers = this._followers;
+    const followers = this._followers.list;
     if (followers.length === 0) return;
     prepareSpace(this.space, this, this.camera);
     for (let i = 0; i < followers.length; i++) this.placeFollower(followers[i]);
@@ -286,29 +288,6 @@ export class PenumbraLayer extends RenderContainer {
     const shown = placeInSpace(follower.object, this.space, this.followerPlacement);
     follower.place(this.followerPlacement, shown);
   }
-
-  /** Ends follower `i`: stops listening to its object once no other follower needs it, and hands the light back. */
-  private stopFollower(i: number): LightFollower<Container> {
-    const [follower] = this._followers.splice(i, 1);
-    if (!this._followers.some((other) => other.object === follower.object)) follower.object.off('destroyed', this.followedDestroyed);
-    follower.release();
-    return follower;
-  }
-
-  /** Ends the follower of `light`, if any; `keep` leaves the light in the renderer. */
-  private dropFollower(light: Light, keep: boolean): void {
-    const i = this._followers.findIndex((follower) => follower.light === light);
-    if (i < 0) return;
-    this.stopFollower(i);
-    if (!keep) this.penumbra.removeLight(light);
-  }
-
-  /** A followed object was destroyed: its lights go with it. */
-  private readonly followedDestroyed = (object: Container): void => {
-    for (let i = this._followers.length - 1; i >= 0; i--) {
-      if (this._followers[i].object === object) this.penumbra.removeLight(this.stopFollower(i).light);
-    }
-  };
 
   private start<T extends Occluder>(occluder: T): T {
     this._occluders.push(occluder);
@@ -368,7 +347,7 @@ export class PenumbraLayer extends RenderContainer {
   override destroy(options?: Parameters<RenderContainer['destroy']>[0]): void {
     for (const occluder of this._occluders) occluder.detach();
     this._occluders.length = 0;
-    for (let i = this._followers.length - 1; i >= 0; i--) this.stopFollower(i);
+    this._followers.clear();
     this.penumbra.dispose();
     this.surfaces?.dispose();
     super.destroy(options);
