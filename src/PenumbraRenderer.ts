@@ -9,12 +9,12 @@ import { LightShapes } from './passes/LightShapes';
 import { BlurPass } from './passes/BlurPass';
 import { CompositePass, CompositeUnits } from './passes/CompositePass';
 import { HullMaskPass } from './passes/HullMaskPass';
-import { Dithering, MAX_BLUR_RADIUS, MIN_BLUR_RADIUS, ToneMapping } from './passes/compositeLayout';
+import { Dithering, MAX_BLUR_RADIUS, MIN_BLUR_RADIUS, ToneMapping } from './scene/look';
 import { DebugPass } from './passes/DebugPass';
 import { LightPass, type Surface } from './passes/LightPass';
 import { LIGHT_TEXTURE_UNITS, SHADOW_TEXTURE_UNITS } from './passes/lightLayout';
 import { ShadowTextures } from './shadow/ShadowTextures';
-import { LightmapAttachments, SceneAttachments } from './passes/surfaceLayout';
+import { LightmapAttachments, SceneAttachments, type SurfaceTextures } from './passes/surfaceLayout';
 import { Hull } from './scene/Hull';
 import {
   checkIlluminationQuery, ILLUMINATION_OPTION_KEYS, IlluminationQuery, IS_LIT_OPTION_KEYS, type Illumination, type IlluminationOptions,
@@ -22,7 +22,7 @@ import {
 import { describeTexture, DirectionalLight, Light, TexturedLight, type LightOptions } from './scene/lights';
 import {
   ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, assertOptions, describeValue, frozenColor, type ColorLike,
-} from './scene/validate';
+} from './util/validate';
 
 /**
  * Options of a {@link PenumbraRenderer}; every field has the default shown. A key that is not one
@@ -84,20 +84,6 @@ const RENDERER_OPTION_KEYS: readonly string[] = Object.keys({
   ambientColor: true, debug: true, viewProjection: true, width: true, height: true, lightmapScale: true, measureCpuTime: true,
   onContextRestored: true, exposure: true, toneMapping: true, dithering: true, lightmapBlur: true, normals: true, classificationBudget: true,
 } satisfies Record<keyof PenumbraRendererOptions, true>);
-
-/**
- * The normal and material textures of a host that draws into its own targets (see
- * {@link PenumbraRenderer.drawInPlace}), for a renderer made with `normals: true`. Both have the
- * renderer's size and hold the encodings of docs/normal-maps.md for the region lit.
- */
-export interface SurfaceTextures {
-  /** World-axes normals premultiplied by coverage (location 1 of the scene target). */
-  normals: WebGLTexture;
-  /** Specular, shininess code and emissive premultiplied by coverage (location 2). Default: none (no highlights, no emission). */
-  material?: WebGLTexture | null;
-  /** Whether the textures' row 0 is the top of the image (render textures of PixiJS). Default `false`. */
-  flipY?: boolean;
-}
 
 /** Figures about the last frame, for overlays and benchmarks. */
 export interface FrameStats {

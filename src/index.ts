@@ -12,17 +12,17 @@
  *
  * @module penumbra-gl
  */
-export { PenumbraRenderer, type PenumbraRendererOptions, type FrameStats, type SurfaceTextures } from './PenumbraRenderer';
+export { PenumbraRenderer, type PenumbraRendererOptions, type FrameStats } from './PenumbraRenderer';
 export { SURFACE_GLSL } from './passes/shaders';
-export { encodeShininess } from './passes/surfaceLayout';
-export { ToneMapping, Dithering } from './passes/compositeLayout';
+export { encodeShininess, type SurfaceTextures } from './passes/surfaceLayout';
+export { ToneMapping, Dithering } from './scene/look';
 export type { Illumination, IlluminationOptions, LightIllumination, CookieSampler } from './scene/illumination';
 export { Hull, type HullOptions } from './scene/Hull';
 export {
   Light, PointLight, Spotlight, TexturedLight, DirectionalLight, ShadowType, Falloff, DEFAULT_LIGHT_RADIUS,
   type LightOptions, type SpotlightOptions, type TexturedLightOptions, type DirectionalLightOptions, type LightKind,
 } from './scene/lights';
-export type { Vec2Like, ColorLike } from './scene/validate';
+export type { Vec2Like, ColorLike } from './util/validate';
 export { isSimplePolygon, signedArea2 } from './geometry/polygon';
 export { hullsFromTiles, TileHulls, type TileGrid, type TileHullsOptions, type TileHullsChange } from './scene/tileHulls';
 export { hullsFromAlpha, type AlphaImage, type HullsFromAlphaOptions } from './scene/hullsFromAlpha';

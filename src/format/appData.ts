@@ -1,7 +1,7 @@
 import { childPath, readArray, readObject } from './fields';
 import { SCENE_MAX_APP_DEPTH, SCENE_MAX_APP_SIZE, type JsonValue, type SceneAppData } from './SceneDocument';
 import { SceneFormatError } from './SceneFormatError';
-import { describeValue } from '../scene/validate';
+import { describeValue } from '../util/validate';
 
 const JSON_KINDS = 'an object, an array, a string, a finite number, true, false or null';
 

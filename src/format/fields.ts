@@ -1,4 +1,4 @@
-import { describeValue, FLOAT32_MAX, isFloat32Finite, shortened } from '../scene/validate';
+import { describeValue, FLOAT32_MAX, isFloat32Finite, shortened } from '../util/validate';
 import { SceneFormatError } from './SceneFormatError';
 
 /**
@@ -65,7 +65,7 @@ function field<T>(fields: Fields, key: string, fallback: T | undefined, read: (v
 
 /**
  * A finite number within `[min, max]`. Finite as a float32, as the scene classes take numbers (see
- * src/scene/validate.ts): at most {@link FLOAT32_MAX} in size.
+ * src/util/validate.ts): at most {@link FLOAT32_MAX} in size.
  */
 export function numberField(fields: Fields, key: string, fallback?: number, min = -Infinity, max = Infinity): number {
   return field(fields, key, fallback, (value, path) => {

@@ -3,8 +3,8 @@ import {
   readVec2, vec2Field, type Fields,
 } from './fields';
 import { readAppData } from './appData';
-import { MAX_BLUR_RADIUS, MIN_BLUR_RADIUS } from '../passes/compositeLayout';
-import { describeValue, shortened } from '../scene/validate';
+import { MAX_BLUR_RADIUS, MIN_BLUR_RADIUS } from '../scene/look';
+import { describeValue, shortened } from '../util/validate';
 import {
   DEFAULT_LOOK, SCENE_FORMAT, SCENE_FORMAT_VERSION, SCENE_MAX_HULL_POINTS,
   type SceneCamera, type SceneDirectionalLight, type SceneDocument, type SceneHull, type SceneLight, type SceneLightBase, type SceneLook,

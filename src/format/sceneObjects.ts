@@ -1,6 +1,6 @@
 import { Hull } from '../scene/Hull';
 import { DirectionalLight, Light, PointLight, Spotlight, TexturedLight } from '../scene/lights';
-import { describeValue } from '../scene/validate';
+import { describeValue } from '../util/validate';
 import { DEFAULT_LOOK, SCENE_FORMAT, SCENE_FORMAT_VERSION, type SceneAppData, type SceneCamera, type SceneDocument, type SceneLight, type SceneLook } from './SceneDocument';
 import { SceneFormatError } from './SceneFormatError';
 

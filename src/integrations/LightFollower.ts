@@ -1,5 +1,5 @@
 import type { Light } from '../index';
-import { assertBoolean, assertFinite, assertOptions, frozenVec2, type Vec2Like } from '../scene/validate';
+import { assertBoolean, assertFinite, assertOptions, frozenVec2, type Vec2Like } from '../util/validate';
 
 /** Options of a light following a display object: where it sits on the object, and whether it turns with it. */
 export interface LightFollowOptions {

@@ -1,6 +1,6 @@
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
-import { MAX_BLUR_RADIUS, MIN_BLUR_RADIUS } from './compositeLayout';
+import { MAX_BLUR_RADIUS, MIN_BLUR_RADIUS } from '../scene/look';
 import { shaderSources } from './shaders';
 
 const SOURCE_UNIT = 0;

@@ -1,5 +1,6 @@
 import { createProgram, type Program } from '../gl/program';
-import { DITHERING_CODES, TONE_MAPPING_CODES, type Dithering, type ToneMapping } from './compositeLayout';
+import { DITHERING_CODES, TONE_MAPPING_CODES } from './compositeLayout';
+import type { Dithering, ToneMapping } from '../scene/look';
 import type { Surface } from './LightPass';
 import type { HullMaskPass } from './HullMaskPass';
 import { compositeStage, shaderSources } from './shaders';

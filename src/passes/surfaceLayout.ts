@@ -29,3 +29,17 @@ export const SURFACE_DEFINES: Readonly<Record<string, string>> = {
 export function encodeShininess(shininess: number): number {
   return Math.log2(Math.min(Math.max(shininess, 1), 2 ** SHININESS_LOG2_MAX)) / SHININESS_LOG2_MAX;
 }
+
+/**
+ * The normal and material textures of a host that draws into its own targets (see
+ * {@link PenumbraRenderer.drawInPlace}), for a renderer made with `normals: true`. Both have the
+ * renderer's size and hold the encodings of docs/normal-maps.md for the region lit.
+ */
+export interface SurfaceTextures {
+  /** World-axes normals premultiplied by coverage (location 1 of the scene target). */
+  normals: WebGLTexture;
+  /** Specular, shininess code and emissive premultiplied by coverage (location 2). Default: none (no highlights, no emission). */
+  material?: WebGLTexture | null;
+  /** Whether the textures' row 0 is the top of the image (render textures of PixiJS). Default `false`. */
+  flipY?: boolean;
+}

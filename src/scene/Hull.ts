@@ -1,5 +1,5 @@
 import { isConvexPolygon, isSimplePolygon, signedArea2, simplifyPolygon, simplifyPolyline, triangulate } from '../geometry/polygon';
-import { assertBoolean, assertFinite, assertLayerMask, assertOptions, describeValue, frozenPair, frozenVec2, vec2ListCoords, type Vec2Like } from './validate';
+import { assertBoolean, assertFinite, assertLayerMask, assertOptions, describeValue, frozenPair, frozenVec2, vec2ListCoords, type Vec2Like } from '../util/validate';
 
 /** Options of a {@link Hull}; every field has the default shown. */
 export interface HullOptions {

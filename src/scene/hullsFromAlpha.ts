@@ -1,6 +1,6 @@
 import { alphaOutlines } from '../geometry/alphaOutlines';
 import { Hull } from './Hull';
-import { assertBoolean, assertFinite, assertNonNegative, assertOptions, describeValue, frozenVec2, type Vec2Like } from './validate';
+import { assertBoolean, assertFinite, assertNonNegative, assertOptions, describeValue, frozenVec2, type Vec2Like } from '../util/validate';
 
 /**
  * An image's pixels as RGBA bytes, row after row from the top: a browser's `ImageData`, or raw

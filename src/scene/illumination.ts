@@ -3,7 +3,7 @@ import { HullGrid } from '../geometry/HullGrid';
 import { isInsidePolygon } from '../geometry/polygon';
 import type { Hull } from './Hull';
 import { DirectionalLight, falloffAt, ShadowType, Spotlight, TexturedLight, type Light } from './lights';
-import { ALL_LAYERS, assertBoolean, assertLayerMask, assertOptions, describeValue } from './validate';
+import { ALL_LAYERS, assertBoolean, assertLayerMask, assertOptions, describeValue } from '../util/validate';
 
 /** Every content layer, as an int32 (0xffffffff | 0). */
 const EVERY_LAYER = -1;

@@ -2,7 +2,7 @@ import { Hull } from './Hull';
 import {
   ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, assertOptions, assertUnit, describeValue,
   FLOAT32_MAX, frozenColor, frozenPair, frozenVec2, type ColorLike, type Vec2Like,
-} from './validate';
+} from '../util/validate';
 
 /** How a light treats the inside of the hulls it shines on. */
 export const ShadowType = {

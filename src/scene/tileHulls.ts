@@ -1,7 +1,7 @@
 import { holeFreeRegions } from '../geometry/gridRegions';
 import { traceOutlines } from '../geometry/tileOutlines';
 import { Hull } from './Hull';
-import { assertFinite, assertOptions, describeValue, frozenVec2, type Vec2Like } from './validate';
+import { assertFinite, assertOptions, describeValue, frozenVec2, type Vec2Like } from '../util/validate';
 
 /**
  * A tile grid: an array of rows (`number[][]`, `boolean[][]`, strings…; all rows the same length),

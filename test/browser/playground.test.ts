@@ -5,7 +5,7 @@ import { PNG } from 'pngjs';
 import type { Browser, Page } from 'puppeteer';
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import type { SceneDirectionalLight, SceneDocument, SceneLight, ScenePointLight } from '../../src/index';
-import { Dithering, ToneMapping } from '../../src/passes/compositeLayout';
+import { Dithering, ToneMapping } from '../../src/scene/look';
 import { Falloff, falloffAt, ShadowType } from '../../src/scene/lights';
 import { collectPageErrors, launchChromium } from './chromium';
 import { serveDirectory, type StaticServer } from './staticServer';

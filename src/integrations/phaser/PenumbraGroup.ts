@@ -1,6 +1,6 @@
 import Phaser from 'phaser';
 import type { LightOptions } from '../../index';
-import { ALL_LAYERS, assertLayerMask } from '../../scene/validate';
+import { ALL_LAYERS, assertLayerMask } from '../../util/validate';
 import type { PenumbraPlugin } from './PenumbraPlugin';
 
 /** Options of a {@link PenumbraGroup}; see {@link PenumbraPlugin.addGroup}. */

@@ -1,6 +1,6 @@
 import Phaser from 'phaser';
 import { Light, PenumbraRenderer, type Hull, type LightOptions, type PenumbraRendererOptions } from '../../index';
-import { ALL_LAYERS, assertLayerMask } from '../../scene/validate';
+import { ALL_LAYERS, assertLayerMask } from '../../util/validate';
 import { isOpaqueMultisampledCanvas, isWebGL2, notWebGL2Error } from '../../gl/capabilities';
 import { InPlaceLighting, type InPlaceView } from '../inPlaceLighting';
 import { LightFollower, LightFollowers, type LightFollowOptions } from '../LightFollower';

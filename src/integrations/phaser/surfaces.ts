@@ -1,8 +1,8 @@
 import Phaser from 'phaser';
 import type { SurfaceTextures } from '../../index';
-import { assertBoolean, assertFinite, assertUnit, describeValue } from '../../scene/validate';
+import { assertBoolean, assertFinite, assertUnit, describeValue } from '../../util/validate';
 import type { InPlaceView } from '../inPlaceLighting';
-import { SurfacePass, createSurfaceQuad, setQuadMaterial, setQuadUvs, setWorldFromImage } from '../SurfacePass';
+import { SurfacePass, createSurfaceQuad, setQuadMaterial, setQuadUvs, setWorldFromImage } from '../../passes/SurfacePass';
 
 /**
  * The material of normal-mapped images and sprites, for a plugin made with `normals: true`

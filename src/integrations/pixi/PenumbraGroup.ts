@@ -3,7 +3,7 @@ import {
   type ContainerOptions, type DestroyOptions, type FilterSystem, type RenderSurface, type Texture, type WebGLRenderer,
 } from 'pixi.js';
 import type { LightOptions } from '../../index';
-import { ALL_LAYERS, assertLayerMask } from '../../scene/validate';
+import { ALL_LAYERS, assertLayerMask } from '../../util/validate';
 import type { PenumbraLayer } from './PenumbraLayer';
 
 /**

@@ -1,7 +1,7 @@
 import { Graphics, RenderContainer, Sprite, type Container, type Renderer, type TextureSource, type WebGLRenderer } from 'pixi.js';
 import { Hull, Light, PenumbraRenderer, type LightOptions, type PenumbraRendererOptions } from '../../index';
 import { isOpaqueMultisampledCanvas, isWebGL2, notWebGL2Error } from '../../gl/capabilities';
-import { ALL_LAYERS, assertLayerMask, describeValue } from '../../scene/validate';
+import { ALL_LAYERS, assertLayerMask, describeValue } from '../../util/validate';
 import { InPlaceLighting, type InPlaceView } from '../inPlaceLighting';
 import { LightFollower, LightFollowers, type LightFollowOptions } from '../LightFollower';
 import { GraphicsOccluder, type GraphicsHullsOptions } from './graphicsHulls';

@@ -1,8 +1,8 @@
 import { Sprite, Texture, TextureSource, type Container, type WebGLRenderer } from 'pixi.js';
 import type { SurfaceTextures } from '../../index';
-import { assertBoolean, assertFinite, assertUnit, describeValue } from '../../scene/validate';
+import { assertBoolean, assertFinite, assertUnit, describeValue } from '../../util/validate';
 import type { InPlaceView } from '../inPlaceLighting';
-import { SurfacePass, createSurfaceQuad, setQuadMaterial } from '../SurfacePass';
+import { SurfacePass, createSurfaceQuad, setQuadMaterial } from '../../passes/SurfacePass';
 
 /**
  * A sprite's surface for a lighting layer made with `normals: true`: its normal map and material

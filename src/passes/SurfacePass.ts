@@ -1,4 +1,5 @@
-import { SURFACE_GLSL, type SurfaceTextures } from '../index';
+import { SURFACE_GLSL } from './shaders';
+import type { SurfaceTextures } from './surfaceLayout';
 import { HostState } from '../gl/HostState';
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget } from '../gl/RenderTarget';
