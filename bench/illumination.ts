@@ -5,7 +5,7 @@
 // renderer forwards to (src/scene/illumination.ts), driven without a GL context.
 import type { Hull } from '../src/scene/Hull';
 import { IlluminationQuery, type Illumination, type IlluminationOptions } from '../src/scene/illumination';
-import type { Light } from '../src/scene/lights';
+import type { Light } from '../src/scene/Light';
 import { createScene, seededRandom, WORLD_HEIGHT, WORLD_WIDTH, type SceneSpec } from './scenes';
 
 /** Queries per frame. */

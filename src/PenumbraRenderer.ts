@@ -19,7 +19,9 @@ import { Hull } from './scene/Hull';
 import {
   checkIlluminationQuery, ILLUMINATION_OPTION_KEYS, IlluminationQuery, IS_LIT_OPTION_KEYS, type Illumination, type IlluminationOptions,
 } from './scene/illumination';
-import { describeTexture, DirectionalLight, Light, TexturedLight, type LightOptions } from './scene/lights';
+import { DirectionalLight } from './scene/DirectionalLight';
+import { Light, type LightOptions } from './scene/Light';
+import { describeTexture, TexturedLight } from './scene/TexturedLight';
 import {
   ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, assertOptions, describeValue, frozenColor, type ColorLike,
 } from './util/validate';

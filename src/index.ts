@@ -18,10 +18,12 @@ export { encodeShininess, type SurfaceTextures } from './passes/surfaceLayout';
 export { ToneMapping, Dithering } from './scene/look';
 export type { Illumination, IlluminationOptions, LightIllumination, CookieSampler } from './scene/illumination';
 export { Hull, type HullOptions } from './scene/Hull';
-export {
-  Light, PointLight, Spotlight, TexturedLight, DirectionalLight, ShadowType, Falloff, DEFAULT_LIGHT_RADIUS,
-  type LightOptions, type SpotlightOptions, type TexturedLightOptions, type DirectionalLightOptions, type LightKind,
-} from './scene/lights';
+export { Light, ShadowType, DEFAULT_LIGHT_RADIUS, type LightOptions, type LightKind } from './scene/Light';
+export { Falloff } from './scene/falloff';
+export { PointLight } from './scene/PointLight';
+export { Spotlight, type SpotlightOptions } from './scene/Spotlight';
+export { TexturedLight, type TexturedLightOptions } from './scene/TexturedLight';
+export { DirectionalLight, type DirectionalLightOptions } from './scene/DirectionalLight';
 export type { Vec2Like, ColorLike } from './util/validate';
 export { isSimplePolygon, signedArea2 } from './geometry/polygon';
 export { hullsFromTiles, TileHulls, type TileGrid, type TileHullsOptions, type TileHullsChange } from './scene/tileHulls';

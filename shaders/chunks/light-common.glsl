@@ -15,7 +15,7 @@ layout(location = 0) out vec4 o_light;
 
 uniform vec2 u_falloff; // the curve's code (FALLOFF_LINEAR, …: src/passes/lightLayout.ts), the inverse-square core in ranges
 
-// The light's strength by distance (Falloff in src/scene/lights.ts, and falloffAt there on the
+// The light's strength by distance (Falloff in src/scene/falloff.ts, and falloffAt there on the
 // CPU): 1 at the centre, 0 from the range on. A branch on a value the whole draw shares.
 float distanceFalloff() {
   float t = length(v_fromLight);

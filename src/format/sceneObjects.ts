@@ -1,5 +1,9 @@
 import { Hull } from '../scene/Hull';
-import { DirectionalLight, Light, PointLight, Spotlight, TexturedLight } from '../scene/lights';
+import { DirectionalLight } from '../scene/DirectionalLight';
+import { Light } from '../scene/Light';
+import { PointLight } from '../scene/PointLight';
+import { Spotlight } from '../scene/Spotlight';
+import { TexturedLight } from '../scene/TexturedLight';
 import { describeValue } from '../util/validate';
 import { DEFAULT_LOOK, SCENE_FORMAT, SCENE_FORMAT_VERSION, type SceneAppData, type SceneCamera, type SceneDocument, type SceneLight, type SceneLook } from './SceneDocument';
 import { SceneFormatError } from './SceneFormatError';

@@ -5,7 +5,10 @@ import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import type { LightShapes } from './LightShapes';
 import { SHADOW_TYPE_CODES, TILE_CLASSES } from '../shadow/shadowLayout';
 import { FALLOFF_CODES, LIGHT_TEXTURE_UNITS, type LightSampler } from './lightLayout';
-import { DirectionalLight, Spotlight, TexturedLight, type LightKind } from '../scene/lights';
+import { DirectionalLight } from '../scene/DirectionalLight';
+import type { LightKind } from '../scene/Light';
+import { Spotlight } from '../scene/Spotlight';
+import { TexturedLight } from '../scene/TexturedLight';
 import { lightStages, shaderSources, type LightStages } from './shaders';
 
 const LIGHT_SAMPLERS = Object.keys(LIGHT_TEXTURE_UNITS) as LightSampler[];

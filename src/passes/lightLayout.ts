@@ -1,4 +1,4 @@
-import type { Falloff } from '../scene/lights';
+import type { Falloff } from '../scene/falloff';
 
 /**
  * The light passes' codes for a light's distance falloff (see `Falloff`), which

@@ -2,7 +2,11 @@ import { DiskVisibility } from '../geometry/diskVisibility';
 import { HullGrid } from '../geometry/HullGrid';
 import { isInsidePolygon } from '../geometry/polygon';
 import type { Hull } from './Hull';
-import { DirectionalLight, falloffAt, ShadowType, Spotlight, TexturedLight, type Light } from './lights';
+import { DirectionalLight } from './DirectionalLight';
+import { falloffAt } from './falloff';
+import { ShadowType, type Light } from './Light';
+import { Spotlight } from './Spotlight';
+import { TexturedLight } from './TexturedLight';
 import { ALL_LAYERS, assertBoolean, assertLayerMask, assertOptions, describeValue } from '../util/validate';
 
 /** Every content layer, as an int32 (0xffffffff | 0). */

@@ -1,5 +1,5 @@
 import type { Hull } from '../scene/Hull';
-import type { Light } from '../scene/lights';
+import type { Light } from '../scene/Light';
 import type { ShadowGeometry } from './ShadowGeometry';
 
 /** Whether the hull at `index` shadows `light`: it is in one of the light's shadow layers and not ignored by it. */

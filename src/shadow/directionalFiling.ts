@@ -1,7 +1,7 @@
 import { extendBox } from '../geometry/boxes';
 import type { HullGrid } from '../geometry/HullGrid';
 import type { Hull } from '../scene/Hull';
-import type { DirectionalLight } from '../scene/lights';
+import type { DirectionalLight } from '../scene/DirectionalLight';
 import { shadows } from './casters';
 import type { LightDraw } from './lightPlacement';
 import { DISTANCE_BUCKETS, type DirectionalStrips, type ShadowBins } from './ShadowBins';

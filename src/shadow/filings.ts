@@ -1,5 +1,6 @@
 import type { Hull } from '../scene/Hull';
-import { DirectionalLight, type Light, type ShadowType } from '../scene/lights';
+import { DirectionalLight } from '../scene/DirectionalLight';
+import type { Light, ShadowType } from '../scene/Light';
 import type { LightDraw } from './lightPlacement';
 import { type BinSpan, bucketWidthOf, type FiledDisk, type ShadowBins } from './ShadowBins';
 import { MOVING_LIST, STILL_LIST, TILE_GRID } from './shadowLayout';

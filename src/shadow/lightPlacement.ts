@@ -1,5 +1,6 @@
 import { mat4, type ReadonlyMat4 } from 'gl-matrix';
-import { DirectionalLight, type Light } from '../scene/lights';
+import { DirectionalLight } from '../scene/DirectionalLight';
+import type { Light } from '../scene/Light';
 import type { LightFiling } from './filings';
 import { DirectionalStrips } from './ShadowBins';
 import { TILE_CLASS_COUNT } from './shadowLayout';

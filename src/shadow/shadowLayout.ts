@@ -1,4 +1,4 @@
-import type { ShadowType } from '../scene/lights';
+import type { ShadowType } from '../scene/Light';
 
 /**
  * The GPU layouts of the shadow data, written by `ShadowGeometry` and `ShadowBins` and read by

@@ -6,7 +6,8 @@ import type { Browser, Page } from 'puppeteer';
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import type { SceneDirectionalLight, SceneDocument, SceneLight, ScenePointLight } from '../../src/index';
 import { Dithering, ToneMapping } from '../../src/scene/look';
-import { Falloff, falloffAt, ShadowType } from '../../src/scene/lights';
+import { Falloff, falloffAt } from '../../src/scene/falloff';
+import { ShadowType } from '../../src/scene/Light';
 import { collectPageErrors, launchChromium } from './chromium';
 import { serveDirectory, type StaticServer } from './staticServer';
 

@@ -1,6 +1,6 @@
 import { afterAll, beforeAll, beforeEach, describe, expect, it } from 'vitest';
 import { Falloff, Hull, PenumbraRenderer, PointLight, ToneMapping } from '../../src/index';
-import { falloffAt } from '../../src/scene/lights';
+import { falloffAt } from '../../src/scene/falloff';
 import { createContext, destroyContext } from './context';
 import { readTexture } from './readTexture';
 

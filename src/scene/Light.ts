@@ -1,3 +1,4 @@
+import { Falloff } from './falloff';
 import { Hull } from './Hull';
 import {
   ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, assertOptions, assertUnit, describeValue,
@@ -15,7 +16,7 @@ export const ShadowType = {
    * that neither another hull nor its own hull hides, with the same soft edge as shadows on the
    * floor. A segment from a pixel inside a hull leaves that hull once; the hull hides what lies
    * beyond a place where the segment enters it again, so a convex hull never shades itself and a
-   * concave one shades its own parts behind its nearer walls (the thesis' occluded hulls, §4.2).
+   * concave one shades its own parts behind its nearer walls.
    * Where hulls overlap, a pixel inside several is lit as from inside all of them at once, whatever
    * their order: the segment is hidden where it meets a hull that does not hold the pixel, or enters
    * one that does again.
@@ -24,28 +25,6 @@ export const ShadowType = {
 } as const;
 /** One of the {@link ShadowType} values. */
 export type ShadowType = (typeof ShadowType)[keyof typeof ShadowType];
-
-/**
- * How a point light's or a spotlight's strength falls with the distance d from its position, t =
- * d / range: every curve is 1 at the centre and 0 from the range on.
- */
-export const Falloff = {
-  /** `max(0, 1 − t)`: the default. */
-  Linear: 'linear',
-  /** `max(0, 1 − t²)²`: flat near the centre, a soft edge at the range. */
-  Smooth: 'smooth',
-  /**
-   * `s² / (s² + t²) × max(0, 1 − t⁴)²`, s = max(radius, 1) / range: the light of a uniformly
-   * emitting disk of the light's radius seen face-on (inverse square beyond it), windowed to reach
-   * zero at the range. Physically based and bright only near a small light: raise the intensity.
-   * s is taken within [2^−60, 2^16], so that s² stays a normal float32 on the GPU: above 2^16 the
-   * curve is its window to float32 precision, and below 2^−60 (a range over 2^60 times the radius,
-   * where float32 cannot tell the distances near the light apart anyway) it is that of 2^−60.
-   */
-  InverseSquare: 'inverseSquare',
-} as const;
-/** One of the {@link Falloff} values. */
-export type Falloff = (typeof Falloff)[keyof typeof Falloff];
 
 /** Options shared by every light; every field has the default shown. */
 export interface LightOptions {
@@ -125,30 +104,15 @@ const CLASS_NAMES: Readonly<Record<LightKind, string>> = { point: 'PointLight', 
  */
 export const DEFAULT_LIGHT_RADIUS = 10;
 
-/** Every option key, listed through a record so that the compiler checks the list against the options type. */
-function optionKeys<T>(keys: Record<keyof T, true>): readonly string[] {
-  return Object.freeze(Object.keys(keys));
-}
-
-/** The options of every light. */
-const LIGHT_OPTION_KEYS = optionKeys<Required<LightOptions>>({
+/**
+ * The options every light takes; a subclass adds its own, and any other key is an error (see
+ * {@link assertOptions}).
+ * @internal
+ */
+export const LIGHT_OPTION_KEYS: readonly string[] = Object.keys({
   position: true, range: true, radius: true, color: true, intensity: true, rotation: true, origin: true, shadowType: true, falloff: true,
   height: true, enabled: true, castsShadows: true, ignoredHulls: true, shadowLayers: true, litLayers: true, shadowColor: true, shadowStrength: true,
-});
-/** The options about a position and a range, which a directional light has not. */
-const POSITIONAL_OPTION_KEYS = optionKeys<Omit<Required<LightOptions>, keyof DirectionalLightOptions>>({
-  position: true, range: true, radius: true, origin: true, falloff: true, height: true,
-});
-/** The options each kind of light takes; any other key is an error (see {@link assertOptions}). */
-const OPTION_KEYS: Readonly<Record<LightKind, readonly string[]>> = {
-  point: LIGHT_OPTION_KEYS,
-  spot: [...LIGHT_OPTION_KEYS, ...optionKeys<Omit<Required<SpotlightOptions>, keyof LightOptions>>({ coneAngle: true, coneDecay: true })],
-  textured: [...LIGHT_OPTION_KEYS, ...optionKeys<Omit<Required<TexturedLightOptions>, keyof LightOptions>>({ texture: true, size: true })],
-  directional: [
-    ...LIGHT_OPTION_KEYS.filter((key) => !POSITIONAL_OPTION_KEYS.includes(key)),
-    ...optionKeys<Omit<Required<DirectionalLightOptions>, keyof LightOptions>>({ angularSize: true, elevation: true }),
-  ],
-};
+} satisfies Record<keyof LightOptions, true>);
 
 /** Where {@link Light.inverseSquareCore} reads its value back. */
 const coreScratch = new Float64Array(1);
@@ -178,7 +142,7 @@ export abstract class Light {
   private _castsShadows = true;
   private _shadowType: ShadowType = ShadowType.Illuminated;
   private _falloff: Falloff = Falloff.Linear;
-  /** The height set, NaN while it follows the range: a double field (null beside numbers made reading it box a number each frame). */
+  /** The height set, NaN while it follows the range: a double field, since a null beside numbers would box the number on every read. */
   private _height = NaN;
   private _shadowLayers = ALL_LAYERS;
   private _litLayers = ALL_LAYERS;
@@ -216,9 +180,9 @@ export abstract class Light {
     return CLASS_NAMES[this.kind];
   }
 
-  /** The options keys the class takes. */
-  private get optionKeys(): readonly string[] {
-    return OPTION_KEYS[this.kind];
+  /** The options keys the class takes. A getter, as `kind` is, since the constructor checks the options by it. @internal */
+  protected get optionKeys(): readonly string[] {
+    return LIGHT_OPTION_KEYS;
   }
 
   /** World position of the light's centre, a frozen `[x, y]` pair whatever form was given (see {@link Vec2Like}). */
@@ -377,7 +341,7 @@ export abstract class Light {
    */
   writeEmittedColor(out: Float32Array): void {
     // The bounds are written out as numbers here and in writeInverseSquareCore: read from module
-    // constants, they cost a boxed number per light and frame (the bench's Node heap figure).
+    // constants, they would cost a boxed number per light and frame.
     for (let c = 0; c < 3; c++) out[c] = Math.min(this._color[c] * this._intensity, 3.4028234663852886e38 /* FLOAT32_MAX */);
   }
 
@@ -467,259 +431,3 @@ const CENTRE = [0.5, 0.5] as const;
 const DEFAULT_HEIGHT_PER_RANGE = 0.25;
 const SHADOW_TYPES: readonly ShadowType[] = Object.values(ShadowType);
 const FALLOFFS: readonly Falloff[] = Object.values(Falloff);
-
-/**
- * The light's strength at distance t (in ranges) from its position by `falloff` (see
- * {@link Falloff}); `core` is s, the inverse-square core in ranges. The same curves as
- * `distanceFalloff` in shaders/chunks/light-common.glsl.
- * @internal
- */
-export function falloffAt(falloff: Falloff, t: number, core: number): number {
-  if (falloff === Falloff.Smooth) {
-    const window = Math.max(0, 1 - t * t);
-    return window * window;
-  }
-  if (falloff === Falloff.InverseSquare) {
-    const t2 = t * t, window = Math.max(0, 1 - t2 * t2), core2 = core * core;
-    return (window * window * core2) / (core2 + t2);
-  }
-  return Math.max(0, 1 - t);
-}
-
-
-/** An isotropic light: full at its centre, falling to zero at `range` along its `falloff` curve (see {@link Falloff}). */
-export class PointLight extends Light {
-  get kind(): 'point' {
-    return 'point';
-  }
-}
-
-/** Options of a {@link Spotlight}. */
-export interface SpotlightOptions extends LightOptions {
-  /** Full angle of the cone in radians, 0..π. Default `π / 2`. */
-  coneAngle?: number;
-  /**
-   * Falloff across the cone, not negative: the intensity at angle θ off the axis is
-   * `(1 − θ / (coneAngle / 2)) ^ coneDecay`. 0 gives a hard-edged cone of even intensity;
-   * larger values concentrate the light towards the axis. Default `1`.
-   */
-  coneDecay?: number;
-}
-
-/**
- * A cone of light from `position` along `rotation` (0 points along +x), with the point light's
- * distance falloff times a cone falloff set by `coneAngle` and `coneDecay`.
- */
-export class Spotlight extends Light {
-  get kind(): 'spot' {
-    return 'spot';
-  }
-
-  private _coneAngle = Math.PI / 2;
-  private _coneDecay = 1;
-
-  constructor(options: SpotlightOptions = {}) {
-    super(options);
-    if (options.coneAngle !== undefined) this.coneAngle = options.coneAngle;
-    if (options.coneDecay !== undefined) this.coneDecay = options.coneDecay;
-  }
-
-  /** Full angle of the cone in radians (0..π). */
-  get coneAngle(): number {
-    return this._coneAngle;
-  }
-  set coneAngle(value: number) {
-    assertNonNegative('Spotlight.coneAngle', value);
-    if (value > Math.PI) throw new RangeError(`Spotlight.coneAngle must be at most π, got ${value}`);
-    this._coneAngle = value;
-  }
-
-  /** Falloff exponent across the cone; see {@link SpotlightOptions.coneDecay}. */
-  get coneDecay(): number {
-    return this._coneDecay;
-  }
-  set coneDecay(value: number) {
-    this._coneDecay = assertNonNegative('Spotlight.coneDecay', value);
-  }
-}
-
-/** Options of a {@link TexturedLight}. */
-export interface TexturedLightOptions extends LightOptions {
-  /** The light cookie: intensity is read from its red channel. Must belong to the renderer's context. */
-  texture: WebGLTexture;
-  /** Size of the textured quad in world units `[width, height]`. Default `[2 × range, 2 × range]`. */
-  size?: Vec2Like;
-}
-
-/**
- * A light whose intensity at each pixel comes from a texture (a "light cookie", red channel)
- * stretched over a quad of `size`, with `origin` as its pivot at `position` and turned by
- * `rotation`. No procedural falloff: animate the texture for flicker. Shadows are cast
- * from `position` over the whole quad; `range` sets the default `size`.
- */
-export class TexturedLight extends Light {
-  private _texture: WebGLTexture;
-  private _size: readonly [number, number] | null = null;
-
-  constructor(options: TexturedLightOptions) {
-    super(options);
-    if (options?.texture === undefined) throw new TypeError('TexturedLight.texture is required');
-    this._texture = checkTexture(options.texture);
-    if (options.size !== undefined) this.size = options.size;
-  }
-
-  get kind(): 'textured' {
-    return 'textured';
-  }
-
-  /**
-   * The light cookie texture, a WebGLTexture of the renderer's context: a value of another kind
-   * throws a TypeError when set; the renderer checks the context when the light is added and when
-   * the texture changes (see `PenumbraRenderer.addLight`).
-   */
-  get texture(): WebGLTexture {
-    return this._texture;
-  }
-  set texture(value: WebGLTexture) {
-    this._texture = checkTexture(value);
-  }
-
-  /** Size of the quad in world units, frozen; `2 × range` on each side unless a size was given. */
-  get size(): readonly [number, number] {
-    return this._size ?? Object.freeze([2 * this.range, 2 * this.range] as const);
-  }
-  set size(value: Vec2Like) {
-    const size = frozenVec2('TexturedLight.size', value);
-    assertNonNegative('TexturedLight.size[0]', size[0]);
-    assertNonNegative('TexturedLight.size[1]', size[1]);
-    this._size = size;
-  }
-
-  /**
-   * The size given, or null while the quad follows `range`: a scene file saves null then, since
-   * `2 × range` can overflow where `range` does not.
-   * @internal
-   */
-  get givenSize(): readonly [number, number] | null {
-    return this._size;
-  }
-
-  protected override quadWidth(): number {
-    return this._size ? this._size[0] : super.quadWidth();
-  }
-  protected override quadHeight(): number {
-    return this._size ? this._size[1] : super.quadHeight();
-  }
-
-  protected override quadPivot(): readonly [number, number] {
-    return this.origin;
-  }
-
-  /** The farthest corner of the quad: the cookie has no falloff, so it may light its whole quad. */
-  override reach(): number {
-    const pivot = this.quadPivot();
-    const x = Math.max(pivot[0], 1 - pivot[0]) * this.quadWidth();
-    const y = Math.max(pivot[1], 1 - pivot[1]) * this.quadHeight();
-    return Math.sqrt(x * x + y * y);
-  }
-
-  /** The cookie may light the quad's corners. */
-  override isConfinedToRangeDisk(): boolean {
-    return false;
-  }
-}
-
-/**
- * Throws unless `value` is a WebGLTexture: an instance of the platform's class where there is one
- * (browsers), else any object (headless-gl in Node has no global class). Whether it belongs to a
- * renderer's context is for the renderer to check, when the light is added and drawn.
- */
-function checkTexture(value: WebGLTexture): WebGLTexture {
-  const textureClass = (globalThis as { WebGLTexture?: unknown }).WebGLTexture;
-  const isTexture = typeof value === 'object' && value !== null && (typeof textureClass !== 'function' || value instanceof textureClass);
-  if (!isTexture) throw new TypeError(`TexturedLight.texture must be a WebGLTexture, got ${describeTexture(value)}`);
-  return value;
-}
-
-/**
- * A texture as messages show it: an object by its class (WebGL objects have no fields to list).
- * @internal
- */
-export function describeTexture(value: unknown): string {
-  const name = typeof value === 'object' && value !== null ? (value as { constructor?: { name?: unknown } }).constructor?.name : undefined;
-  return typeof name === 'string' && name !== '' && name !== 'Object' ? `a ${name}` : describeValue(value);
-}
-
-/** Options of a {@link DirectionalLight}: those of every light but the ones about a position and a range. */
-export interface DirectionalLightOptions extends Omit<LightOptions, 'position' | 'range' | 'radius' | 'origin' | 'falloff' | 'height'> {
-  /**
-   * Angle of the light above the plane in radians, in (0, π/2], for normal-mapped lighting
-   * (`PenumbraRenderer` option `normals`): π/2 is straight above, small values graze the relief.
-   * Shadows do not depend on it. Default `π/4`.
-   */
-  elevation?: number;
-  /**
-   * Apparent diameter of the light's disk in radians, 0..π/2: the sun's is about 0.0093 (0.53°);
-   * wider gives the soft shadows of an overcast sky, 0 hard shadows. Default `0.0093`.
-   */
-  angularSize?: number;
-}
-
-/**
- * Light from far away — the sun or the moon — travelling along `rotation` (0: towards +x, so
- * shadows fall towards +x) and covering the whole view with the same colour × intensity: no
- * position, no range, no falloff. Its disk has an apparent diameter `angularSize`, so shadows are
- * soft: exact for a uniformly emitting disk at infinity, hard at the hull and widening with the
- * distance from it (by `2 × tan(angularSize / 2)` per unit). Hulls anywhere upstream of the view
- * shadow it, not only those in view.
- *
- * `position`, `range`, `radius`, `origin`, `falloff` and `height` mean nothing for it: as options
- * they are errors, as the properties it inherits they are ignored.
- */
-export class DirectionalLight extends Light {
-  private _angularSize = SUN_ANGULAR_SIZE;
-  private _elevation = Math.PI / 4;
-
-  constructor(options: DirectionalLightOptions = {}) {
-    super(options);
-    if (options.angularSize !== undefined) this.angularSize = options.angularSize;
-    if (options.elevation !== undefined) this.elevation = options.elevation;
-  }
-
-  get kind(): 'directional' {
-    return 'directional';
-  }
-
-  /** Apparent diameter of the light's disk in radians (0..π/2); see {@link DirectionalLightOptions.angularSize}. */
-  get angularSize(): number {
-    return this._angularSize;
-  }
-  set angularSize(value: number) {
-    assertNonNegative('DirectionalLight.angularSize', value);
-    if (value > Math.PI / 2) throw new RangeError(`DirectionalLight.angularSize must be at most π/2, got ${value}`);
-    this._angularSize = value;
-  }
-
-  /** Angle above the plane in radians, (0, π/2]; see {@link DirectionalLightOptions.elevation}. */
-  get elevation(): number {
-    return this._elevation;
-  }
-  set elevation(value: number) {
-    assertFinite('DirectionalLight.elevation', value);
-    if (!(value > 0 && value <= Math.PI / 2)) throw new RangeError(`DirectionalLight.elevation must be in (0, π/2], got ${value}`);
-    this._elevation = value;
-  }
-
-  /** Unbounded: it lights the whole view. @internal */
-  override reach(): number {
-    return Infinity;
-  }
-
-  /** It covers the view, not a disk. @internal */
-  override isConfinedToRangeDisk(): boolean {
-    return false;
-  }
-}
-
-/** The sun's apparent diameter seen from the Earth, in radians (0.53°). */
-const SUN_ANGULAR_SIZE = 0.0093;
