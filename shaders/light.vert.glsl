@@ -39,5 +39,7 @@ void main() {
   v_fromLight = (world - u_light.xy) / u_light.z;
   v_world = world;
   gl_Position = u_viewProjection * vec4(world, 0.0, 1.0);
+  // Depth 0 whatever the matrix does to z: the near and far planes never clip a light (no light
+  // draw tests depth).
   gl_Position.z = 0.0;
 }

@@ -5,10 +5,11 @@
 // region S: P's edges facing p (its near chain, from the counter-clockwise-most silhouette point
 // to the clockwise-most), the rays from p through those two points beyond them, closed far
 // beyond the disk. Within a window of directions from p, S is cut by the window's two rays: the
-// chain cut to the window, rays out from its two ends, the same closure. The part of the disk in S is what P hides: the disk's own points inside P
-// included (SPEC §6). Its area is the sum, over S's edges a → b, of the signed area of the disk
-// within the triangle (centre, a, b) — a triangle where the edge is inside the disk, a sector
-// where it is outside — with no quadrature and no arrays.
+// chain cut to the window, rays out from its two ends, the same closure. The part of the disk in S
+// is what P hides, the disk's own points inside P included (their segments to p meet P). Its area
+// is the sum, over S's edges a → b, of the signed area of the disk within the triangle (centre, a,
+// b) — a triangle where the edge is inside the disk, a sector where it is outside — with no
+// quadrature and no arrays.
 //
 // P is one record, or every record of a convex hull's fan (their shared diagonals lie inside the
 // hull and are left out of the outline: S of the hull is the union of S of its records).

@@ -1,6 +1,7 @@
-// Shared by the light passes built with SHADOWED: the fraction of the light's disk visible from the
-// pixel (SPEC §6), computed in the light's own fragment from the hulls in the pixel's angular bin
-// (see src/shadow/shadowLayout.ts for the textures, ShadowBins for what a bin holds).
+// Shared by the light passes built with SHADOWED: the fraction of the light's disk whose segments to
+// the pixel meet no hull (docs/shadows.md), computed in the light's own fragment from the hulls in
+// the pixel's angular bin (see src/shadow/shadowLayout.ts for the textures, ShadowBins for what a
+// bin holds).
 //
 // Seen from a pixel p outside the disk, the line through p in direction d passes the centre c at
 // the signed distance cross(c − p, d) / |d|; over the radius r this is the chord height t in
