@@ -6,11 +6,11 @@ const CELLS_PER_HULL = 4;
 /**
  * A uniform grid over boxes (the hulls' coarse bounds, computed without transforming a hull's
  * points, so hulls no light reaches are never transformed; see `ShadowGeometry.coarseBounds`),
- * rebuilt each frame in O(hulls) with a counting sort into reused typed arrays from flat arrays
- * only (reading each hull's own objects cost 30× more on ten thousand hulls), so finding the
- * hulls near a light visits only the cells its bounds overlap instead of every hull. Chosen over a packed R-tree (flatbush): both answer a light's
- * query in microseconds here, but the R-tree allocates its arrays on every rebuild and its results
- * on every query.
+ * rebuilt each frame in O(hulls) with a counting sort into reused typed arrays, from flat arrays
+ * only (not each hull's own objects, which would cost a pointer chase per hull), so finding the
+ * hulls near a light visits only the cells its bounds overlap instead of every hull. Chosen over a
+ * packed R-tree (flatbush), which answers as fast but allocates its arrays on every rebuild and its
+ * results on every query.
  */
 export class HullGrid {
   private cellSize = MIN_CELL_SIZE;

@@ -1,6 +1,6 @@
 /**
- * The exact fraction of a light's disk visible from a point past a set of edges (SPEC §6), on the
- * CPU in double precision: what `PenumbraRenderer.illuminationAt` reports per light.
+ * The exact fraction of a light's disk visible from a point past a set of edges (the share of its
+ * area whose segments to the point meet no edge; docs/shadows.md), on the CPU in double precision: what `PenumbraRenderer.illuminationAt` reports per light.
  *
  * From the point p, every point of the disk lies on one ray from p. In polar coordinates around p
  * (direction δ measured from the direction of the centre c, distance s along the ray) the disk's
@@ -70,8 +70,7 @@ export class DiskVisibility {
   private hidden = false;
   /**
    * What {@link DiskVisibility.start} reads: `[px, py, cx, cy, r]`. Hot callers write it and call
-   * `start()` instead of `begin(…)`: doubles in a typed array are never boxed, arguments of a call
-   * that is not inlined are (16 bytes each).
+   * `start()` instead of `begin(…)` (see Hot-path rules in docs/architecture.md).
    */
   readonly input = new Float64Array(5);
   /** What {@link DiskVisibility.computeFraction} found: `[fraction]`. */
@@ -299,8 +298,8 @@ export class DiskVisibility {
   }
 
   /**
-   * {@link DiskVisibility.fraction} into `output[0]`: hot callers read it from there, since a number
-   * returned from a call that is not inlined is boxed (16 bytes).
+   * {@link DiskVisibility.fraction} into `output[0]`, where hot callers read it (see Hot-path rules
+   * in docs/architecture.md).
    */
   computeFraction(): void {
     const output = this.output;

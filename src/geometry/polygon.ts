@@ -332,7 +332,7 @@ function fan(n: number): number[] {
 
 /**
  * Even-odd test of `point` (`[x, y]`) against the polygon of `count` points starting at point
- * `first`. The point comes as an array: two doubles passed to a call that is not inlined are boxed.
+ * `first`. The point comes as an array (see Hot-path rules in docs/architecture.md).
  */
 export function isInsidePolygon(coords: ArrayLike<number>, point: ArrayLike<number>, first = 0, count = (coords.length >> 1) - first): boolean {
   const x = point[0], y = point[1];
