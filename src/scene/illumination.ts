@@ -171,8 +171,8 @@ const EVERYWHERE = [-Infinity, -Infinity, Infinity, Infinity] as const;
  * each hull's version, O(hulls) reads. Hulls are transformed and their bounds, layers and flags
  * copied into flat arrays when a search first finds them after a change. Nothing is allocated per
  * query but the result, and not that when one is passed in to be reused: numbers between the
- * methods go through typed arrays (`values`, `DiskVisibility.input` and `output`), since V8 boxes
- * the doubles passed to and returned from a call it does not inline.
+ * methods go through typed arrays (`values`, `DiskVisibility.input` and `output`; see Hot-path
+ * rules in docs/architecture.md).
  * @internal
  */
 export class IlluminationQuery {
@@ -190,7 +190,7 @@ export class IlluminationQuery {
   private flags = new Uint8Array(0);
   private readonly quad = new Float32Array(6);
   private readonly lightBounds = new Float64Array(4);
-  /** The query point (x, y), then the last light's strength and visibility: doubles passed through a typed array, which V8 never boxes. */
+  /** The query point (x, y), then the last light's strength and visibility. */
   private readonly values = new Float64Array(4);
   private readonly box = new Float64Array(4);
   /** A directional light's cone of directions from the query point: towards the light (x, y), then sin and cos of its half-angle. */
@@ -210,10 +210,9 @@ export class IlluminationQuery {
     const perLight = options?.perLight ?? true;
     const includeAmbient = options?.includeAmbient ?? true;
     const cookie = options?.cookie ?? null;
-    // An int32: 0xffffffff is a double (see PenumbraRenderer.renderLightmapInto).
+    // An int32 (see Hot-path rules in docs/architecture.md).
     const layers = (options?.layers ?? ALL_LAYERS) | 0;
-    // NaN, not 0: V8 then lays the number fields out as doubles from the start, and later stores of
-    // doubles into them reuse their boxes instead of allocating new ones.
+    // NaN, not 0: double fields from the start (see Hot-path rules in docs/architecture.md).
     const result = out ?? { color: [NaN, NaN, NaN], luminance: NaN, lights: [] };
     this.sync(hulls);
     const values = this.values;
