@@ -36,8 +36,9 @@ export const SCENE_MAX_APP_SIZE = 1_000_000;
 /**
  * The most points a hull of a scene file may have; {@link readScene} rejects a file with more
  * before reading them. Checking and triangulating a hull takes O(n log n) for most outlines, but
- * up to O(n²) for some crafted ones: the cap bounds what a hostile file can cost (a 20,000-point
- * hull loads in well under a second). Hulls built in code have no cap.
+ * up to O(n²) for some crafted ones: the cap bounds what a hostile file can cost (load times of
+ * hulls this size: `npm run bench:hulls`, logged in docs/performance.md). Hulls built in code have
+ * no cap.
  */
 export const SCENE_MAX_HULL_POINTS = 20_000;
 

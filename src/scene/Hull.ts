@@ -270,7 +270,7 @@ export class Hull {
     this.worldVersion = this.version;
     const n = this.pointCount;
     const cos = Math.cos(this._rotation), sin = Math.sin(this._rotation);
-    // Indexed, not destructured: array destructuring goes through the iterator protocol and allocates.
+    // Indexed, not destructured (see Hot-path rules in docs/architecture.md).
     const sx = this._scale[0], sy = this._scale[1];
     const ox = this._origin[0], oy = this._origin[1];
     const px = this._position[0], py = this._position[1];
