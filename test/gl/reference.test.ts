@@ -9,8 +9,8 @@ import { renderLightmap, type Lightmap } from './lightmap';
 
 // Every scene is held to the limits of test/reference/limits.ts over every pixel within range
 // (lit, umbra and penumbra alike), in units of full light: mean ≤ 0.005, p99 ≤ 0.02, max ≤ 0.1,
-// against the exact CPU reference (test/reference/exactVisibility.ts, itself checked against the
-// disk-sampling statement of SPEC §6 in test/unit/reference.test.ts).
+// against the exact CPU reference (test/reference/softShadowReference.ts, itself held to disk
+// sampling in test/unit/reference.test.ts, test/unit/illumination.test.ts and test/accuracy/).
 
 function renderScene(scene: ReferenceScene): Lightmap {
   const gl = createContext(scene.width, scene.height);

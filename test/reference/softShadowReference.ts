@@ -1,27 +1,27 @@
-import { ExactVisibility } from './exactVisibility';
+import { DiskVisibility } from '../../src/geometry/diskVisibility';
 import { SceneGeometry, segmentsCross } from './sceneGeometry';
 import type { ReferenceLight, ReferenceScene } from './scenes';
 
 /**
- * The ground truth of SPEC §6 on the CPU, without any of the renderer's math: each light is a
- * uniformly emitting disk, and a pixel centre receives falloff × colour × intensity × the fraction
- * of the disk whose straight segment to it crosses no hull edge; the lights add up. Pixel centres
- * inside a hull receive nothing for Solid lights (the default: without that rule a pixel inside a
- * hull that overlaps a disk would see the part of the disk inside the same hull), and the whole
- * disk for Illuminated ones (scene.shadowType; Occluded scenes have their own reference).
+ * The ground truth the renderer is tested against, on the CPU: each light is a uniformly emitting
+ * disk, and a pixel centre receives falloff × colour × intensity × the fraction of the disk whose
+ * straight segment to it crosses no hull edge; the lights add up. Pixel centres inside a hull
+ * receive nothing for Solid lights (the default: without that rule a pixel inside a hull that
+ * overlaps a disk would see the part of the disk inside the same hull), and the whole disk for
+ * Illuminated ones (scene.shadowType; Occluded scenes have their own reference).
  *
- * Three ways to get the fraction:
- * - `'exact'` (default): integrates over the directions from the pixel, in closed form piece by
- *   piece (see exactVisibility.ts). Fast and exact to rounding: what the tests compare the
- *   renderer with.
- * - `'quadrature'`: the same pieces integrated with Gauss–Legendre, to check the closed forms.
- * - `'sampled'`: tests the segments to area-uniform disk samples. The simplest statement of SPEC §6,
- *   slow and good to about 2e-3; kept to check the exact one (test/unit/reference.test.ts).
+ * Two ways to get the fraction:
+ * - `'sampled'`: tests the segments to area-uniform disk samples ({@link diskSamples}). The plainest
+ *   statement of the model, shares no code with the library, slow and good to about N^-3/4 per
+ *   straight cut across the disk for N samples.
+ * - `'exact'` (default): the CPU light query's closed-form sweep over the directions from the pixel
+ *   (`DiskVisibility`, src/geometry/diskVisibility.ts), exact to rounding and fast: what the
+ *   rendering tests compare the GPU's lightmaps with. It shares no code with the shaders, and is
+ *   held to `'sampled'` and to closed-form cases by test/unit/reference.test.ts,
+ *   test/unit/illumination.test.ts and test/accuracy/.
  */
 export interface ReferenceOptions {
-  method?: 'exact' | 'quadrature' | 'sampled';
-  /** Gauss–Legendre nodes per piece for `'quadrature'`. Default 8. */
-  nodes?: number;
+  method?: 'exact' | 'sampled';
   /** Disk samples for `'sampled'`. Default {@link DISK_SAMPLES}. */
   samples?: number;
   /** Computes only pixels whose x and y are multiples of `step` (the others count as out of range). Default 1. */
@@ -67,9 +67,7 @@ export function computeReference(scene: ReferenceScene, options: ReferenceOption
   const { width, height } = scene;
   const { method = 'exact', step = 1 } = options;
   const geometry = new SceneGeometry(scene.hulls, scene.polylines);
-  const fractionOf = method === 'sampled'
-    ? sampledFraction(geometry, options.samples ?? DISK_SAMPLES)
-    : exactFraction(geometry, method === 'quadrature' ? { method: 'quadrature', nodes: options.nodes } : {});
+  const fractionOf = visibleFraction(scene, { method, samples: options.samples });
   const pixels = width * height;
   const visibility = scene.lights.map(() => new Float32Array(pixels));
   const light = new Float32Array(pixels * 3);
@@ -89,7 +87,8 @@ export function computeReference(scene: ReferenceScene, options: ReferenceOption
         if (falloff === 0) return;
         inRange[pixel] = 1;
         if (source.radius === 0 && nearHardEdge(geometry, px, py, lx, ly)) ambiguous[pixel] = 1;
-        const fraction = insideHull ? (scene.shadowType === 'illuminated' ? 1 : 0) : fractionOf(px, py, source);
+        // As stored (float32): a disk that nothing hides is LIT though the sweep's sum may miss 1 by rounding.
+        const fraction = insideHull ? (scene.shadowType === 'illuminated' ? 1 : 0) : Math.fround(fractionOf(px, py, source));
         visibility[l][pixel] = fraction;
         if (fraction !== 1) all = false;
         if (fraction !== 0) none = false;
@@ -103,11 +102,25 @@ export function computeReference(scene: ReferenceScene, options: ReferenceOption
   return { width, height, visibility, light, inRange, ambiguous, shade };
 }
 
-type FractionOf = (px: number, py: number, light: ReferenceLight) => number;
+/** The fraction of a light's disk whose segment to (px, py) crosses no edge of the scene (see {@link ReferenceOptions}). */
+export type FractionOf = (px: number, py: number, light: ReferenceLight) => number;
 
-function exactFraction(geometry: SceneGeometry, options: ConstructorParameters<typeof ExactVisibility>[1]): FractionOf {
-  const exact = new ExactVisibility(geometry, options);
-  return (px, py, light) => exact.fraction(px, py, light.position[0], light.position[1], light.radius);
+/** The scene's visible fraction by `method` (default `'exact'`): one function for many points and lights. */
+export function visibleFraction(scene: ReferenceScene, { method = 'exact', samples = DISK_SAMPLES }: Omit<ReferenceOptions, 'step'> = {}): FractionOf {
+  return method === 'sampled' ? sampledFraction(new SceneGeometry(scene.hulls, scene.polylines), samples) : exactFraction(scene);
+}
+
+function exactFraction(scene: ReferenceScene): FractionOf {
+  const visibility = new DiskVisibility();
+  const outlines = [
+    ...scene.hulls.map((points) => ({ points: Float64Array.from(points.flat()), closed: true })),
+    ...(scene.polylines ?? []).map((points) => ({ points: Float64Array.from(points.flat()), closed: false })),
+  ];
+  return (px, py, { position: [cx, cy], radius }) => {
+    visibility.begin(px, py, cx, cy, radius);
+    for (const { points, closed } of outlines) visibility.addOutline(points, points.length / 2, closed);
+    return visibility.fraction();
+  };
 }
 
 /** Whether the pixel lies within HARD_EDGE_BAND of a ray from the light's centre through a hull point between them. */

@@ -1,19 +1,15 @@
-import { afterAll, describe, expect, it } from 'vitest';
-import { ExactVisibility } from '../reference/exactVisibility';
-import { randomScene } from '../reference/randomScenes';
-import { SceneGeometry } from '../reference/sceneGeometry';
-import { REFERENCE_SCENES, box, type Point, type ReferenceScene } from '../reference/scenes';
-import { computeReference, LIT, PENUMBRA, UMBRA, type ReferenceImage } from '../reference/softShadowReference';
+import { describe, expect, it } from 'vitest';
+import { box, type Point, type ReferenceScene } from '../reference/scenes';
+import { computeReference, LIT, PENUMBRA, UMBRA, visibleFraction, type ReferenceOptions } from '../reference/softShadowReference';
 
 /**
  * The CPU references the renderer is tested against (test/gl/reference.test.ts,
- * test/gl/randomScenes.test.ts): the exact one must be right, or those tests prove nothing.
- * Three independent checks:
- * - cases whose visible fraction has a closed form of its own (areas of circular caps);
- * - the exact closed forms against Gauss–Legendre quadrature of the same integrand, on every
- *   reference scene and some random ones;
- * - the exact reference against the disk-sampling one (SPEC §6 stated as plainly as possible) on
- *   the same scenes: this one shares no code with the exact integral but the segment tests.
+ * test/gl/randomScenes.test.ts): the exact one must be right, or those tests prove nothing. Here,
+ * cases whose visible fraction has a closed form of its own (areas of circular caps), for the exact
+ * reference and for disk sampling, and the reference image's own rules. The exact reference
+ * against disk sampling on every reference scene and random ones is test/accuracy/reference.test.ts;
+ * the exact fraction (the CPU light query's) against disk sampling at random points is
+ * test/unit/illumination.test.ts.
  */
 
 /** Area of the part of a disk of radius r beyond a line at signed distance h from its centre (h < 0: the larger part). */
@@ -55,81 +51,19 @@ const ANALYTIC_CASES: { name: string; hulls: Point[][]; pixel?: Point; centre?: 
   { name: 'hard light, post beside the segment', radius: 0, hulls: [box(8, 1, 1, 2)], expected: 1 },
 ];
 
-/** The sampling reference of one pixel: a one-pixel scene whose pixel centre is `pixel`. */
-function sampledFraction(hulls: Point[][], [px, py]: Point, centre: Point, radius: number, samples: number): number {
-  const shift = (p: Point): Point => [p[0] - px + 0.5, p[1] - py + 0.5];
-  const scene: ReferenceScene = {
-    name: 'one pixel', width: 1, height: 1, hulls: hulls.map((h) => h.map(shift)),
-    lights: [{ position: shift(centre), range: 1000, radius }],
-  };
-  return computeReference(scene, { method: 'sampled', samples }).visibility[0][0];
+/** The fraction at one pixel centre, by `method` (see ReferenceOptions). */
+function fractionAt(hulls: Point[][], pixel: Point, centre: Point, radius: number, options: Omit<ReferenceOptions, 'step'>): number {
+  const scene: ReferenceScene = { name: 'one pixel', width: 1, height: 1, hulls, lights: [{ position: centre, range: 1000, radius }] };
+  return visibleFraction(scene, options)(...pixel, scene.lights[0]);
 }
 
 describe('exact visible fraction, cases with a closed form', () => {
   for (const { name, hulls, pixel = P, centre = C, radius = R, expected } of ANALYTIC_CASES) {
     it(name, () => {
-      const geometry = new SceneGeometry(hulls);
       // Rounding only: every piece is integrated in closed form.
-      const exact = new ExactVisibility(geometry).fraction(...pixel, ...centre, radius);
-      expect(Math.abs(exact - expected)).toBeLessThan(1e-12);
-      // Gauss–Legendre on the same pieces: smooth integrands, converged to rounding at 16 nodes.
-      const quadrature = new ExactVisibility(geometry, { method: 'quadrature', nodes: 16 }).fraction(...pixel, ...centre, radius);
-      expect(Math.abs(quadrature - expected)).toBeLessThan(1e-9);
+      expect(Math.abs(fractionAt(hulls, pixel, centre, radius, { method: 'exact' }) - expected)).toBeLessThan(1e-12);
       // The sunflower pattern errs by about N^-3/4 for a disk cut by straight lines: 2.4e-4 at 65536 samples.
-      expect(Math.abs(sampledFraction(hulls, pixel, centre, radius, 65536) - expected)).toBeLessThan(1e-3);
-    });
-  }
-});
-
-/** Largest and mean |a − b| of the per-light visibilities over the pixels both computed that are not ambiguous. */
-function difference(a: ReferenceImage, b: ReferenceImage): { max: number; mean: number; pixels: number } {
-  let max = 0, sum = 0, pixels = 0;
-  a.visibility.forEach((visibility, l) => {
-    for (let i = 0; i < visibility.length; i++) {
-      if (!a.inRange[i] || !b.inRange[i] || a.ambiguous[i]) continue;
-      const d = Math.abs(visibility[i] - b.visibility[l][i]);
-      max = Math.max(max, d);
-      sum += d;
-      pixels++;
-    }
-  });
-  return { max, mean: pixels ? sum / pixels : 0, pixels };
-}
-
-/** Every fixed reference scene, and random scenes (overlapping hulls, tile rows, disks overlapping hulls). */
-const SCENES: readonly ReferenceScene[] = [
-  ...REFERENCE_SCENES,
-  ...Array.from({ length: 12 }, (_, i) => randomScene(0x5eed + i, 80, 60)),
-];
-
-describe('exact reference against quadrature and against disk sampling', () => {
-  const worst = { quadrature: 0, samplingMax: 0, samplingMean: 0 };
-  afterAll(() => {
-    console.log(`exact reference vs quadrature: max ${worst.quadrature.toExponential(1)}; `
-      + `vs disk sampling: max ${worst.samplingMax.toExponential(1)}, largest scene mean ${worst.samplingMean.toExponential(1)}`);
-  });
-
-  for (const scene of SCENES) {
-    it(scene.name, () => {
-      const exact = computeReference(scene);
-      // Quadrature of the same integrand: the pieces next to a hull edge that runs from near the
-      // pixel into the disk are sharply peaked (1 / cos² of the angle to the edge), and 64 nodes
-      // are needed there to reach rounding; the visibilities are stored as float32 (6e-8).
-      const quadrature = computeReference(scene, { method: 'quadrature', nodes: 64, step: 3 });
-      const byQuadrature = difference(exact, quadrature);
-      expect(byQuadrature.pixels).toBeGreaterThan(0);
-      expect(byQuadrature.max).toBeLessThan(1e-6);
-      // Disk sampling (16384 sunflower points, every fifth pixel each way): its own error is about
-      // N^-3/4 = 7e-4 per straight cut across the disk, up to 1.3e-3 measured where several hulls
-      // cut it; over a scene's pixels it averages at most 1.4e-4 (where a disk overlaps a hull,
-      // every pixel in range is in penumbra).
-      const sampled = computeReference(scene, { method: 'sampled', samples: 16384, step: 5 });
-      const bySampling = difference(exact, sampled);
-      worst.quadrature = Math.max(worst.quadrature, byQuadrature.max);
-      worst.samplingMax = Math.max(worst.samplingMax, bySampling.max);
-      worst.samplingMean = Math.max(worst.samplingMean, bySampling.mean);
-      expect(bySampling.max).toBeLessThan(1.5e-3);
-      expect(bySampling.mean).toBeLessThan(2e-4);
+      expect(Math.abs(fractionAt(hulls, pixel, centre, radius, { method: 'sampled', samples: 65536 }) - expected)).toBeLessThan(1e-3);
     });
   }
 });
