@@ -16,26 +16,28 @@ function checkOutlines(grid: CellGrid): number[][] {
   expect(outlines.length).toBe(count);
   const cells = new Array<number>(count).fill(0);
   for (const label of labels) if (label >= 0) cells[label]++;
+  const wrong: string[] = [];
   outlines.forEach((outline, label) => {
-    expect(isSimplePolygon(outline), `region ${label}: ${outline.join(',')}`).toBe(true);
-    expect(signedArea2(outline) / 2).toBe(cells[label]);
+    if (!isSimplePolygon(outline)) wrong.push(`region ${label} is not simple: ${outline.join(',')}`);
+    if (signedArea2(outline) / 2 !== cells[label]) wrong.push(`region ${label} has area ${signedArea2(outline) / 2}, not ${cells[label]}`);
     const n = outline.length / 2;
     for (let i = 0; i < n; i++) {
       const px = outline[2 * ((i + n - 1) % n)], py = outline[2 * ((i + n - 1) % n) + 1];
       const x = outline[2 * i], y = outline[2 * i + 1];
       const qx = outline[2 * ((i + 1) % n)], qy = outline[2 * ((i + 1) % n) + 1];
-      expect(Number.isInteger(x) && Number.isInteger(y)).toBe(true);
-      expect((x - px) * (qy - y) - (y - py) * (qx - x), `point ${i} of region ${label} is a corner`).not.toBe(0);
+      if (!Number.isInteger(x) || !Number.isInteger(y)) wrong.push(`point ${i} of region ${label} is off the lattice`);
+      if ((x - px) * (qy - y) - (y - py) * (qx - x) === 0) wrong.push(`point ${i} of region ${label} is no corner`);
     }
   });
   for (let y = 0; y < grid.height; y++) {
     for (let x = 0; x < grid.width; x++) {
       const label = labels[y * grid.width + x];
       outlines.forEach((outline, other) => {
-        expect(isInsidePolygon(outline, [x + 0.5, y + 0.5]), `cell (${x}, ${y}) in region ${other}`).toBe(label === other);
+        if (isInsidePolygon(outline, [x + 0.5, y + 0.5]) !== (label === other)) wrong.push(`cell (${x}, ${y}) ${label === other ? 'outside' : 'inside'} region ${other}`);
       });
     }
   }
+  expect(wrong, `outlines of ${grid.width} × ${grid.height} cells`).toEqual([]);
   return outlines;
 }
 
