@@ -7,7 +7,8 @@ export default defineConfig({
     environment: 'node',
     testTimeout: 120_000,
     hookTimeout: 120_000,
-    // headless-gl contexts and Chromium are heavy: one test file at a time keeps memory and timings sane.
+    // headless-gl contexts and Chromium are heavy: one test file at a time keeps memory and timings
+    // sane. The layers without GL (npm run test:unit, test:accuracy) run files in parallel instead.
     fileParallelism: false,
     // In a terminal, vitest's live summary; in a log (CI, a pipe), each test as it ends and each file
     // as it starts and ends, so a long run is never silent.

@@ -1,8 +1,8 @@
-// The test suite's own tooling, run as a contributor or CI runs it: vitest with this repository's
-// config writing to a pipe (no terminal), and the set-up check of scripts/with-display.mjs on a
-// machine without Xvfb or Chromium.
+// The test suite's own tooling, run as a contributor or CI runs it: npm test's layers, vitest with
+// this repository's config writing to a pipe (no terminal), and the set-up check of
+// scripts/with-display.mjs on a machine without Xvfb or Chromium.
 import { spawn, spawnSync } from 'node:child_process';
-import { mkdirSync, mkdtempSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { describe, expect, it } from 'vitest';
@@ -13,6 +13,21 @@ const REPO = resolve(import.meta.dirname, '../..');
 function plainEnvironment(): NodeJS.ProcessEnv {
   return Object.fromEntries(Object.entries(process.env).filter(([key]) => !key.startsWith('VITEST') && key !== 'NODE_ENV' && key !== 'TEST'));
 }
+
+describe('npm test', () => {
+  it('runs every test file: each lies in a folder that one of the layer scripts it runs gives vitest', () => {
+    const scripts = (JSON.parse(readFileSync(join(REPO, 'package.json'), 'utf8')) as { scripts: Record<string, string> }).scripts;
+    const layers = [...scripts.test.matchAll(/npm run (test:[\w-]+)/g)].map(([, name]) => name);
+    const folders = layers.flatMap((name) => scripts[name].match(/vitest run ([^&]*)/)?.[1].split(' ').filter((arg) => arg.startsWith('test/')) ?? []);
+    expect(layers).toEqual(['test:unit', 'test:accuracy', 'test:gl', 'test:browser', 'test:package']);
+    const files = (readdirSync(join(REPO, 'test'), { recursive: true }) as string[])
+      .map((file) => `test/${file.split('\\').join('/')}`)
+      .filter((file) => file.endsWith('.test.ts'));
+    expect(files.filter((file) => !folders.some((folder) => file.startsWith(`${folder.replace(/\/$/, '')}/`)))).toEqual([]);
+    // Every layer holds tests.
+    for (const folder of folders) expect(files.some((file) => file.startsWith(`${folder}/`)), folder).toBe(true);
+  });
+});
 
 describe('vitest without a terminal', () => {
   it('prints each file as it starts and as it ends, numbered, while the run goes on', async () => {
