@@ -1,4 +1,6 @@
 import { mat4, type ReadonlyMat4 } from 'gl-matrix';
+import type { FrameStats } from './FrameStats';
+import { checkClassificationBudget, RENDERER_OPTION_KEYS, type PenumbraRendererOptions } from './options';
 import { FramePlan } from './shadow/FramePlan';
 import { ShadowGeometry } from './shadow/ShadowGeometry';
 import { TILE_CLASSES } from './shadow/shadowLayout';
@@ -25,114 +27,6 @@ import { describeTexture, TexturedLight } from './scene/TexturedLight';
 import {
   ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, assertOptions, describeValue, frozenColor, type ColorLike,
 } from './util/validate';
-
-/**
- * Options of a {@link PenumbraRenderer}; every field has the default shown. A key that is not one
- * of these (a misspelt `ambient`) is a `TypeError` that names it.
- */
-export interface PenumbraRendererOptions {
-  /** Colour of unlit areas: `[r, g, b]` floats 0..1 per channel, `0xrrggbb` or a CSS string (see {@link ColorLike}). Default `[0.2, 0.2, 0.2]`. */
-  ambientColor?: ColorLike;
-  /** Draw light quads and shadow geometry as wireframe over the result. Default `false`. */
-  debug?: boolean;
-  /** World → clip transform. Default: pixel space of the drawing buffer, origin top-left, y down. */
-  viewProjection?: ReadonlyMat4 | null;
-  /** Width of the internal targets in pixels. Default: the context's drawing buffer width (on a lost context, the restored one's). */
-  width?: number;
-  /** Height of the internal targets in pixels. Default: the context's drawing buffer height (on a lost context, the restored one's). */
-  height?: number;
-  /**
-   * Resolution of the lightmap relative to `width × height`, in (0, 1]. Below 1 (e.g. 0.5) the
-   * light passes shade a quarter of the pixels, for fill-bound scenes; the composite (`draw`,
-   * `drawInPlace`) upscales the lightmap with linear filtering except across hull outlines, where
-   * each pixel takes the light of the nearest lightmap texels on its own side (through two masks of
-   * the hulls, at both resolutions), so that a hull's dark or lit inside does not bleed a rim onto
-   * the floor beside it. Default `1`.
-   */
-  lightmapScale?: number;
-  /** Time the renderer's JavaScript per frame into `stats.cpuTime`. Default `false`. */
-  measureCpuTime?: boolean;
-  /** See {@link PenumbraRenderer.onContextRestored}. Default `null`. */
-  onContextRestored?: ((renderer: PenumbraRenderer) => void) | null;
-  /** See {@link PenumbraRenderer.exposure}. Default `1`. */
-  exposure?: number;
-  /** See {@link PenumbraRenderer.toneMapping}. Default `'none'`. */
-  toneMapping?: ToneMapping;
-  /** See {@link PenumbraRenderer.dithering}. Default `'none'`. */
-  dithering?: Dithering;
-  /** See {@link PenumbraRenderer.lightmapBlur}. Default `0`. */
-  lightmapBlur?: number;
-  /**
-   * Light through the surface's normals, with Blinn-Phong highlights and emissive pixels:
-   * `beginDraw()` binds three colour attachments (colour, normal, material) for the host to write,
-   * and each light's `height` sets where it shines from (docs/normal-maps.md). Fixed for the
-   * renderer's life. Without it (the default) the renderer builds none of this and its output is as
-   * it always was. Default `false`.
-   */
-  normals?: boolean;
-  /**
-   * The most hull records (a convex hull of up to 4 points is one; see docs/shadows.md "Tiles") the
-   * renderer classifies into lit, dark and exact tiles per frame: its JavaScript's largest per-frame
-   * cost. A light whose hulls do not fit what is left of it is drawn wholly with the exact shadow
-   * program (the same picture, more GPU time) and classified in a later frame; one whose moving hulls
-   * do not fit has its lit tiles drawn exact for that frame. `stats.lightsUnclassified` counts those
-   * lights. A non-negative integer or `Infinity`. Default `1024`.
-   */
-  classificationBudget?: number;
-}
-
-/** The options a {@link PenumbraRenderer} takes; any other key is an error. */
-const RENDERER_OPTION_KEYS: readonly string[] = Object.keys({
-  ambientColor: true, debug: true, viewProjection: true, width: true, height: true, lightmapScale: true, measureCpuTime: true,
-  onContextRestored: true, exposure: true, toneMapping: true, dithering: true, lightmapBlur: true, normals: true, classificationBudget: true,
-} satisfies Record<keyof PenumbraRendererOptions, true>);
-
-/** Figures about the last frame, for overlays and benchmarks. */
-export interface FrameStats {
-  /** Lights added to the renderer. */
-  lights: number;
-  /** Lights drawn (enabled, on screen, centre not inside a hull). */
-  lightsDrawn: number;
-  /**
-   * Lights whose shadow casters were found and filed anew for the last lightmap. A light keeps the
-   * previous lightmap's filing of the hulls that stood still (and uploads none of it) while it and
-   * the list of hulls are unchanged and no hull near it started or stopped moving, or while it moves
-   * within the margin its speed gave its filing; the hulls that changed within the last 30 frames
-   * are filed for every light every frame (see docs/shadows.md). A directional light is filed every
-   * time.
-   */
-  lightsFiled: number;
-  /** Hulls added to the renderer. */
-  hulls: number;
-  /** Edges of all valid hulls. */
-  edges: number;
-  /**
-   * Renderer JavaScript time for the last lightmap, in milliseconds, while
-   * `PenumbraRenderer.measureCpuTime` is on; else 0.
-   */
-  cpuTime: number;
-  /**
-   * The tiles of the shadowed point lights, spotlights and textured lights drawn for the last
-   * lightmap, by how they were drawn (docs/shadows.md): lit (the plain light program), dark (not
-   * drawn, or the plain program in the colour the shadows keep), exact (an exact shadow program:
-   * the lean one or the general one, or for an Illuminated light's dark tiles with hulls in them
-   * the held one, lit inside hulls), and outside the light's reach (not drawn). Each such light
-   * has 1,024 tiles. This one: the lit tiles.
-   */
-  tilesLit: number;
-  /** The dark tiles of the last lightmap (see {@link FrameStats.tilesLit}). */
-  tilesDark: number;
-  /** The tiles drawn with an exact shadow program (see {@link FrameStats.tilesLit}). */
-  tilesExact: number;
-  /** Of the exact tiles, those drawn with the lean exact program: every record that hides part of the disk from a pixel lies in front of it (docs/shadows.md). */
-  tilesLean: number;
-  /** Of the exact tiles, those drawn with the held program: dark but inside hulls (docs/shadows.md). */
-  tilesHeld: number;
-  /** The tiles beyond their light's reach (see {@link FrameStats.tilesLit}). */
-  tilesOutside: number;
-  /** Shadowed point lights, spotlights and textured lights drawn wholly exact, unclassified (see `PenumbraRendererOptions.classificationBudget`). */
-  lightsUnclassified: number;
-}
 
 /** GL objects of the renderer, rebuilt together after a context loss. */
 interface Resources {
@@ -268,7 +162,7 @@ export class PenumbraRenderer {
     this.width = options.width === undefined && lost ? 0 : checkSize('PenumbraRenderer.width', options.width ?? gl.drawingBufferWidth, this.maxSize);
     this.height = options.height === undefined && lost ? 0 : checkSize('PenumbraRenderer.height', options.height ?? gl.drawingBufferHeight, this.maxSize);
     this.lightmapScale = checkScale(options.lightmapScale ?? 1);
-    if (options.classificationBudget !== undefined) this.plan.classificationBudget = checkBudget(options.classificationBudget);
+    if (options.classificationBudget !== undefined) this.plan.classificationBudget = checkClassificationBudget(options.classificationBudget);
     this._normals = options.normals === undefined ? false : assertBoolean('PenumbraRenderer.normals', options.normals);
     if (options.viewProjection) this.viewProjection = options.viewProjection;
     else this.updateDefaultViewProjection();
@@ -1106,13 +1000,6 @@ function isObject(value: unknown): value is object {
 
 function checkScale(value: number): number {
   if (typeof value !== 'number' || !(value > 0 && value <= 1)) throw new RangeError(`PenumbraRenderer.lightmapScale must be in (0, 1], got ${value}`);
-  return value;
-}
-
-function checkBudget(value: number): number {
-  if (typeof value !== 'number' || !(Number.isInteger(value) && value >= 0 || value === Infinity)) {
-    throw new RangeError(`PenumbraRenderer.classificationBudget must be a non-negative integer or Infinity, got ${describeValue(value)}`);
-  }
   return value;
 }
 

@@ -12,7 +12,9 @@
  *
  * @module penumbra-gl
  */
-export { PenumbraRenderer, type PenumbraRendererOptions, type FrameStats } from './PenumbraRenderer';
+export { PenumbraRenderer } from './PenumbraRenderer';
+export type { PenumbraRendererOptions } from './options';
+export type { FrameStats } from './FrameStats';
 export { SURFACE_GLSL } from './passes/shaders';
 export { encodeShininess, type SurfaceTextures } from './passes/surfaceLayout';
 export { ToneMapping, Dithering } from './scene/look';
