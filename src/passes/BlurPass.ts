@@ -23,7 +23,7 @@ export class BlurPass {
 
   /**
    * Blurs the first attachment of `lightmap` in place by `radius` texels (≤ {@link MAX_BLUR_RADIUS});
-   * leaves blending and scissor off. A radius below {@link MIN_BLUR_RADIUS} (the renderer's blur
+   * leaves blending off. A radius below {@link MIN_BLUR_RADIUS} (the renderer's blur
    * times a `lightmapScale` below 1 may be one) is the identity: it does nothing.
    */
   render(lightmap: RenderTarget, radius: number): void {
@@ -37,7 +37,6 @@ export class BlurPass {
     this.updateWeights(radius);
     const uniforms = program.uniforms;
     gl.disable(gl.BLEND);
-    gl.disable(gl.SCISSOR_TEST);
     gl.useProgram(program.handle);
     gl.uniform1i(uniforms.u_source, SOURCE_UNIT);
     gl.uniform1i(uniforms.u_radius, taps);

@@ -61,7 +61,6 @@ export class CompositePass {
     const gl = this.gl;
     const uniforms = this.program.uniforms;
     gl.disable(gl.BLEND);
-    gl.disable(gl.SCISSOR_TEST);
     gl.useProgram(this.program.handle);
     this.exposure[0] = look.exposure;
     gl.uniform1fv(uniforms.u_exposure, this.exposure);

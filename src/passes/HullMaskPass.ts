@@ -70,7 +70,6 @@ export class HullMaskPass {
     mat4.copy(this.drawnView, viewProjection);
     const gl = this.gl;
     gl.disable(gl.BLEND);
-    gl.disable(gl.SCISSOR_TEST);
     gl.activeTexture(gl.TEXTURE0 + SHADOW_TEXTURE_UNITS.records);
     gl.bindTexture(gl.TEXTURE_2D, records);
     gl.useProgram(this.program.handle);
