@@ -1,21 +1,18 @@
-import { mat4, type ReadonlyMat4 } from 'gl-matrix';
+import type { ReadonlyMat4 } from 'gl-matrix';
 import type { FrameStats } from './FrameStats';
+import { ContextLoss } from './frame/ContextLoss';
+import { CookieChecks } from './frame/CookieChecks';
+import { ResourceBuilder, textureUnits, type FrameResources } from './frame/FrameResources';
+import { HostFrame } from './frame/HostFrame';
+import { Sizing } from './frame/Sizing';
+import { checkSurfaces, chooseSurface } from './frame/surfaces';
 import { checkClassificationBudget, RENDERER_OPTION_KEYS, type PenumbraRendererOptions } from './options';
 import { FramePlan } from './shadow/FramePlan';
 import { ShadowGeometry } from './shadow/ShadowGeometry';
 import { TILE_CLASSES } from './shadow/shadowLayout';
-import { isWebGL2, notWebGL2Error, supportsFloatTargets, WEBGL2_CONTEXT_FIX } from './gl/capabilities';
-import { HostDrawBuffers, HostState } from './gl/HostState';
-import { RenderTarget, type TargetFormat } from './gl/RenderTarget';
-import { LightShapes } from './passes/LightShapes';
-import { BlurPass } from './passes/BlurPass';
-import { CompositePass, CompositeUnits } from './passes/CompositePass';
-import { HullMaskPass } from './passes/HullMaskPass';
+import { isWebGL2, notWebGL2Error, WEBGL2_CONTEXT_FIX } from './gl/capabilities';
 import { Dithering, MAX_BLUR_RADIUS, MIN_BLUR_RADIUS, ToneMapping } from './scene/look';
-import { DebugPass } from './passes/DebugPass';
-import { LightPass, type Surface } from './passes/LightPass';
-import { LIGHT_TEXTURE_UNITS, SHADOW_TEXTURE_UNITS } from './passes/lightLayout';
-import { ShadowTextures } from './shadow/ShadowTextures';
+import type { Surface } from './passes/LightPass';
 import { LightmapAttachments, SceneAttachments, type SurfaceTextures } from './passes/surfaceLayout';
 import { Hull } from './scene/Hull';
 import {
@@ -23,39 +20,13 @@ import {
 } from './scene/illumination';
 import { DirectionalLight } from './scene/DirectionalLight';
 import { Light, type LightOptions } from './scene/Light';
-import { describeTexture, TexturedLight } from './scene/TexturedLight';
+import { TexturedLight } from './scene/TexturedLight';
 import {
-  ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, assertOptions, describeValue, frozenColor, type ColorLike,
+  ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, assertOptions, frozenColor, type ColorLike,
 } from './util/validate';
-
-/** GL objects of the renderer, rebuilt together after a context loss. */
-interface Resources {
-  shapes: LightShapes;
-  shadows: ShadowTextures;
-  scene: RenderTarget;
-  light: LightPass;
-  composite: CompositePass;
-  /** With a lightmap smaller than the scene (see {@link PenumbraRenderer.edgeAware}); else null. */
-  hullMask: HullMaskPass | null;
-  blur: BlurPass;
-  debug: DebugPass;
-}
 
 /** Clear value of the scene target. */
 const TRANSPARENT = new Float32Array(4);
-
-/**
- * The texture units the passes bind (from 0: the light pass's, see LIGHT_TEXTURE_UNITS, and the
- * composite's scene and lightmap; with normals its surface's; upsampling aware of hull edges the
- * hull masks'), saved and restored around every draw.
- */
-function textureUnits(normals: boolean, edgeAware: boolean): number {
-  const { u_normals, u_material, ...lightUnits } = LIGHT_TEXTURE_UNITS;
-  const last = Math.max(...Object.values(lightUnits), CompositeUnits.scene, CompositeUnits.lightmap,
-    ...(normals ? [u_normals, u_material, CompositeUnits.specular, CompositeUnits.material] : []),
-    ...(edgeAware ? [CompositeUnits.hullMask, CompositeUnits.lightmapHullMask] : []));
-  return last + 1;
-}
 
 /**
  * Real-time 2D lights with soft shadows for an existing WebGL2 context.
@@ -106,39 +77,19 @@ export class PenumbraRenderer {
   private _toneMapping: ToneMapping = ToneMapping.None;
   private _dithering: Dithering = Dithering.None;
   private _lightmapBlur = 0;
-  private readonly _viewProjection = mat4.create();
-  private customViewProjection = false;
+  private readonly sizing: Sizing;
   private readonly geometry = new ShadowGeometry();
   private readonly plan = new FramePlan();
-  private readonly hostState: HostState;
-  /** Chosen with each build of the GL objects (see {@link PenumbraRenderer.chooseLightmapFormat}). */
-  private lightmapFormat: TargetFormat = 'rgba16f';
-  private resources: Resources | null = null;
-  /** The targets' size; a side is 0 while a renderer made on a lost context without it waits for the restore. */
-  private width: number;
-  private height: number;
-  /** The largest target side the context allows (MAX_TEXTURE_SIZE and MAX_RENDERBUFFER_SIZE); read again on restore. */
-  private maxSize: number;
-  private readonly lightmapScale: number;
+  private readonly host: HostFrame;
+  private readonly builder: ResourceBuilder;
+  private readonly cookies: CookieChecks;
+  private readonly loss: ContextLoss;
+  /** Null while the context is lost and after dispose. */
+  private resources: FrameResources | null = null;
   private readonly _normals: boolean;
   /** The surface the light and composite passes read this frame (with normals), refilled per frame rather than made. */
   private readonly surface: Surface = { normals: null!, material: null!, flipY: false };
-  /** Whether a frame is open: between `beginDraw()` and its `draw()`. */
-  private drawing = false;
-  private warnedAbandonedFrame = false;
-  /** The draw buffers of the framebuffer the open frame composites into. */
-  private readonly hostDrawBuffers: HostDrawBuffers;
-  /**
-   * Each textured light's cookie texture once found to be a texture of this context (see
-   * {@link PenumbraRenderer.checkCookies}): checked again only when it changes. Anew on a restored context.
-   */
-  private checkedCookies = new WeakMap<TexturedLight, WebGLTexture>();
-  private contextLost = false;
   private disposed = false;
-  private readonly compositeViewport = new Int32Array(4);
-  private compositeDrawFramebuffer: WebGLFramebuffer | null = null;
-  private compositeReadFramebuffer: WebGLFramebuffer | null = null;
-  private readonly canvas: EventTarget | null;
   /** The host's surface textures during a `drawInPlace` or `renderLightmap` that was given some. */
   private externalSurfaces: SurfaceTextures | null = null;
   /** The CPU light query behind {@link PenumbraRenderer.illuminationAt}, made on first use. */
@@ -156,25 +107,30 @@ export class PenumbraRenderer {
     if (options.toneMapping !== undefined) this.toneMapping = options.toneMapping;
     if (options.dithering !== undefined) this.dithering = options.dithering;
     if (options.lightmapBlur !== undefined) this.lightmapBlur = options.lightmapBlur;
-    this.maxSize = maxTargetSize(gl);
-    // A lost context's drawing buffer is 0 × 0: a side left to it waits for the restore (0 until then).
-    const lost = gl.isContextLost();
-    this.width = options.width === undefined && lost ? 0 : checkSize('PenumbraRenderer.width', options.width ?? gl.drawingBufferWidth, this.maxSize);
-    this.height = options.height === undefined && lost ? 0 : checkSize('PenumbraRenderer.height', options.height ?? gl.drawingBufferHeight, this.maxSize);
-    this.lightmapScale = checkScale(options.lightmapScale ?? 1);
+    this.sizing = new Sizing(gl, options.width, options.height, options.lightmapScale ?? 1);
     if (options.classificationBudget !== undefined) this.plan.classificationBudget = checkClassificationBudget(options.classificationBudget);
     this._normals = options.normals === undefined ? false : assertBoolean('PenumbraRenderer.normals', options.normals);
     if (options.viewProjection) this.viewProjection = options.viewProjection;
-    else this.updateDefaultViewProjection();
-    this.hostState = new HostState(gl, textureUnits(this._normals, this.edgeAware));
-    this.hostDrawBuffers = new HostDrawBuffers(gl);
+    this.host = new HostFrame(gl, textureUnits(this._normals, this.sizing.edgeAware));
+    this.builder = new ResourceBuilder(gl, this.host, this.sizing, this._normals);
+    this.cookies = new CookieChecks(gl);
     // Made in the loss window, it waits for the restored context to build its GL objects.
-    if (lost) this.contextLost = true;
-    else this.createResources();
-    const canvas = (gl as { canvas?: unknown }).canvas as EventTarget | undefined;
-    this.canvas = canvas && typeof canvas.addEventListener === 'function' ? canvas : null;
-    this.canvas?.addEventListener('webglcontextlost', this.onContextLost);
-    this.canvas?.addEventListener('webglcontextrestored', this.handleContextRestored);
+    if (!gl.isContextLost()) this.createResources();
+    this.loss = new ContextLoss(gl, {
+      lost: () => {
+        this.host.open = false;
+        this.resources = null;
+      },
+      rebuild: () => {
+        this.sizing.adoptRestoredContext(gl);
+        this.cookies.forget();
+        this.createResources();
+      },
+      restored: () => {
+        this.onContextRestored?.(this);
+        this.cookies.warnOfOld(this._lights);
+      },
+    });
   }
 
   /**
@@ -245,18 +201,10 @@ export class PenumbraRenderer {
    * default: pixel space of the targets, origin top-left, y down (as Canvas2D, PixiJS and Phaser).
    */
   get viewProjection(): ReadonlyMat4 {
-    return this._viewProjection;
+    return this.sizing.viewProjection;
   }
   set viewProjection(value: ReadonlyMat4 | null) {
-    if (value == null) {
-      this.customViewProjection = false;
-      this.updateDefaultViewProjection();
-      return;
-    }
-    if (value.length !== 16) throw new RangeError(`PenumbraRenderer.viewProjection must have 16 elements, got ${value.length}`);
-    for (let i = 0; i < 16; i++) assertFinite(`PenumbraRenderer.viewProjection[${i}]`, value[i]);
-    mat4.copy(this._viewProjection, value);
-    this.customViewProjection = true;
+    this.sizing.setViewProjection(value);
   }
 
   /** The lights, in drawing order. */
@@ -309,7 +257,7 @@ export class PenumbraRenderer {
 
   /** Whether the lightmap is a half-float target (overlapping lights can exceed 1). */
   get hasFloatLightmap(): boolean {
-    return this.lightmapFormat === 'rgba16f';
+    return this.builder.lightmapFormat === 'rgba16f';
   }
 
   /**
@@ -324,7 +272,7 @@ export class PenumbraRenderer {
   addLight<T extends Light>(light: T): T {
     if (!(light instanceof Light)) throw new TypeError(`penumbra: addLight expects a Light, got ${String(light)}`);
     this.refuseIfDisposed('addLight');
-    if (light instanceof TexturedLight && !this.isContextLost()) this.checkCookie(light, 'PenumbraRenderer.addLight: the TexturedLight\'s texture');
+    if (light instanceof TexturedLight && !this.loss.isLost) this.cookies.check(light, 'PenumbraRenderer.addLight: the TexturedLight\'s texture');
     if (!this._lights.includes(light)) this._lights.push(light);
     return light;
   }
@@ -344,27 +292,6 @@ export class PenumbraRenderer {
   }
   private refuseIfDisposed(method: string): void {
     if (this.disposed) throw new Error(`penumbra: PenumbraRenderer.${method}: the renderer was disposed; make a new one`);
-  }
-
-  /**
-   * Throws naming the first textured light whose cookie is not a texture of this context. Per frame:
-   * `gl.isTexture` (a round trip to the GPU process in browsers) runs only for a texture not checked before.
-   */
-  private checkCookies(): void {
-    const lights = this._lights;
-    for (let i = 0; i < lights.length; i++) {
-      const light = lights[i];
-      if (light instanceof TexturedLight && this.checkedCookies.get(light) !== light.texture) this.checkCookie(light, `PenumbraRenderer.lights[${i}] (TexturedLight).texture`);
-    }
-  }
-
-  private checkCookie(light: TexturedLight, name: string): void {
-    const texture = light.texture;
-    if (!isTextureOf(this.gl, texture)) {
-      throw new TypeError(`penumbra: ${name} must be a texture of the renderer's WebGL context (not another context's, a deleted one, ` +
-        `one never bound, or one from before a context loss), got ${describeTexture(texture)}`);
-    }
-    this.checkedCookies.set(light, texture);
   }
 
   /** Removes a hull; its shadow is gone from the next frame. Returns whether it was there. */
@@ -450,37 +377,18 @@ export class PenumbraRenderer {
    * previous size and keeps working.
    */
   resize(width: number, height: number): void {
-    checkSize('PenumbraRenderer.resize width', width, this.maxSize);
-    checkSize('PenumbraRenderer.resize height', height, this.maxSize);
-    if (width === this.width && height === this.height) return;
-    const previousWidth = this.width, previousHeight = this.height;
-    this.setSize(width, height);
+    const sizing = this.sizing;
+    sizing.checkSize('PenumbraRenderer.resize width', width);
+    sizing.checkSize('PenumbraRenderer.resize height', height);
+    if (width === sizing.width && height === sizing.height) return;
+    const previousWidth = sizing.width, previousHeight = sizing.height;
+    sizing.setSize(width, height);
     if (this.isUnavailable()) return;
-    const failure = this.allocateTargets(this.requireResources());
+    const failure = this.builder.resize(this.requireResources());
     if (failure === null) return;
-    this.setSize(previousWidth, previousHeight);
-    this.allocateTargets(this.requireResources());
+    sizing.setSize(previousWidth, previousHeight);
+    this.builder.resize(this.requireResources());
     throw new RangeError(`PenumbraRenderer.resize(${width}, ${height}) failed: ${failure}; the renderer keeps its size ${previousWidth}×${previousHeight}`);
-  }
-
-  private setSize(width: number, height: number): void {
-    this.width = width;
-    this.height = height;
-    if (!this.customViewProjection) this.updateDefaultViewProjection();
-  }
-
-  /** Reallocates the targets at the current size; returns why that failed, or null. */
-  private allocateTargets(resources: Resources): string | null {
-    try {
-      this.withHostState(() => {
-        resources.scene.resize(this.width, this.height);
-        resources.light.resize(this.lightmapWidth, this.lightmapHeight);
-        resources.hullMask?.resize(this.width, this.height, this.lightmapWidth, this.lightmapHeight);
-      });
-    } catch (error) {
-      return (error as Error).message;
-    }
-    return this.gl.getError() === this.gl.OUT_OF_MEMORY ? 'the context is out of memory (OUT_OF_MEMORY)' : null;
   }
 
   /**
@@ -521,7 +429,7 @@ export class PenumbraRenderer {
     try {
       assertLayerMask('PenumbraRenderer.draw: layers', layers);
     } catch (error) {
-      if (this.drawing && !this.isUnavailable()) this.closeFrame();
+      if (this.host.open && !this.isUnavailable()) this.host.close();
       throw error;
     }
     this.endFrame(layers | 0);
@@ -534,19 +442,15 @@ export class PenumbraRenderer {
    */
   private openFrame(inPlace: boolean): boolean {
     if (this.isUnavailable()) return false;
-    if (this.drawing) this.abandonFrame();
-    this.checkCookies();
+    const host = this.host;
+    if (host.open) host.abandon(this.requireResources().scene.framebuffer);
+    this.cookies.checkAll(this._lights);
     const gl = this.gl;
-    const resources = this.requireResources();
-    this.enterHostState();
+    const scene = this.requireResources().scene;
+    host.enter();
     try {
-      const host = this.hostState;
-      this.compositeDrawFramebuffer = host.savedDrawFramebuffer;
-      this.compositeReadFramebuffer = host.savedReadFramebuffer;
-      this.compositeViewport.set(host.savedViewport);
-      if (inPlace) this.checkInPlaceSource();
-      this.hostDrawBuffers.record(this.compositeDrawFramebuffer);
-      resources.scene.bind();
+      host.record(inPlace, this.sizing.width, this.sizing.height);
+      scene.bind();
       gl.depthMask(true);
       gl.stencilMask(0xff);
       // clearBuffer* leaves the clear values alone, so the host's need not be saved.
@@ -557,85 +461,40 @@ export class PenumbraRenderer {
       }
       gl.clearBufferfi(gl.DEPTH_STENCIL, 0, 1, 0);
     } finally {
-      this.hostState.restore();
+      host.state.restore();
     }
-    resources.scene.bind();
-    this.drawing = true;
+    scene.bind();
+    host.open = true;
     return true;
-  }
-
-  /**
-   * Closes a frame left open by the host (see {@link PenumbraRenderer.beginDraw}): its framebuffers
-   * and viewport are bound again while the scene target still is.
-   */
-  private abandonFrame(): void {
-    if (!this.warnedAbandonedFrame) {
-      this.warnedAbandonedFrame = true;
-      console.warn('penumbra: a frame was started while the previous one was still open (an exception between beginDraw() and draw()?): ' +
-        'the open frame is abandoned and the framebuffer and viewport of its beginDraw() are bound again. Warned once.');
-    }
-    const scene = this.requireResources().scene.framebuffer;
-    if (this.gl.getParameter(this.gl.DRAW_FRAMEBUFFER_BINDING) === scene) this.closeFrame();
-    else this.drawing = false;
-  }
-
-  /** Ends the open frame's redirection: binds the framebuffers and viewport of its `beginDraw()` again. */
-  private closeFrame(): void {
-    this.drawing = false;
-    this.bindCompositeTarget();
-    this.gl.bindFramebuffer(this.gl.READ_FRAMEBUFFER, this.compositeReadFramebuffer);
-  }
-
-  /**
-   * Throws, before anything is bound, unless `blitFramebuffer` can copy the viewport of the bound
-   * framebuffer into the scene target: from a multisampled framebuffer (a browser canvas's, by
-   * default) it copies only between identical rectangles and formats, so the framebuffer must have
-   * alpha (an opaque canvas's is RGB) and the viewport must be the renderer's size at the origin.
-   * Reads the viewport saved by the host state, and the samples and alpha bits of the bound draw
-   * framebuffer.
-   */
-  private checkInPlaceSource(): void {
-    const gl = this.gl, v = this.compositeViewport;
-    const samples = gl.getParameter(gl.SAMPLES) as number | null;
-    if (!samples) return;
-    // A multisampled copy needs the same format at both ends, and the scene target has alpha.
-    if (gl.getParameter(gl.ALPHA_BITS) === 0) {
-      throw new Error(`penumbra: PenumbraRenderer.drawInPlace: the bound framebuffer is multisampled (${samples} samples) and has no alpha, ` +
-        'so it cannot be copied into the renderer\'s RGBA scene target (WebGL refuses a multisampled copy between formats): make the canvas ' +
-        'with getContext(\'webgl2\', { alpha: true }) or { antialias: false }, or draw into a framebuffer with alpha or without multisampling');
-    }
-    if (v[0] === 0 && v[1] === 0 && v[2] === this.width && v[3] === this.height) return;
-    throw new Error(`penumbra: PenumbraRenderer.drawInPlace: the bound framebuffer is multisampled (${samples} samples), which can be copied ` +
-      `only to the same rectangle: its viewport [${v.join(', ')}] must be [0, 0, ${this.width}, ${this.height}], the renderer's size at the origin ` +
-      '(resize the renderer to the viewport and draw at the origin, or draw into a framebuffer without multisampling)');
   }
 
   /** What {@link PenumbraRenderer.draw} does, with the layers as an int32 (see `renderLightmapInto`). */
   private endFrame(layers: number): void {
     if (this.isUnavailable()) return;
-    if (!this.drawing) throw new Error('penumbra: draw() called without beginDraw()');
+    const host = this.host;
+    if (!host.open) throw new Error('penumbra: draw() called without beginDraw()');
     try {
-      this.checkCookies();
+      this.cookies.checkAll(this._lights);
       const resources = this.requireResources();
-      this.enterHostState();
+      const viewProjection = this.sizing.viewProjection;
+      host.enter();
       try {
         this.renderLightmapInto(resources, layers);
-        resources.hullMask?.render(resources.shadows.records, this.geometry.recordCount, this.geometry.recordsVersion, this._viewProjection);
-        this.bindCompositeTarget();
-        this.hostDrawBuffers.drawFirstOnly();
+        resources.hullMask?.render(resources.shadows.records, this.geometry.recordCount, this.geometry.recordsVersion, viewProjection);
+        host.beginComposite();
         try {
           resources.composite.render(resources.scene.texture, resources.light.lightmap.textures, this, this.surface, resources.hullMask);
           if (this.debug) {
-            resources.debug.render(this.plan.draws, this.plan.drawCount, resources.shadows.records, this.geometry.recordCount, this._viewProjection);
+            resources.debug.render(this.plan.draws, this.plan.drawCount, resources.shadows.records, this.geometry.recordCount, viewProjection);
           }
         } finally {
-          this.hostDrawBuffers.restoreDraw();
+          host.endComposite();
         }
       } finally {
-        this.hostState.restore();
+        host.state.restore();
       }
     } finally {
-      this.closeFrame();
+      host.close();
     }
   }
 
@@ -660,34 +519,15 @@ export class PenumbraRenderer {
    */
   drawInPlace(layers = ALL_LAYERS, surfaces?: SurfaceTextures): void {
     assertLayerMask('PenumbraRenderer.drawInPlace: layers', layers);
-    this.checkSurfaces('drawInPlace', surfaces);
+    checkSurfaces('drawInPlace', this._normals, surfaces);
     if (!this.openFrame(true)) return;
     try {
-      this.copyInPlaceSource(this.requireResources());
+      this.host.copyInto(this.requireResources().scene, this.sizing.width, this.sizing.height);
       this.externalSurfaces = surfaces ?? null;
       this.endFrame(layers | 0);
     } finally {
       this.externalSurfaces = null;
-      if (this.drawing) this.closeFrame();
-    }
-  }
-
-  /** Copies the colour of the host's framebuffer inside its viewport into the scene target (see `drawInPlace`). */
-  private copyInPlaceSource(resources: Resources): void {
-    const gl = this.gl, v = this.compositeViewport;
-    this.enterHostState();
-    try {
-      // The colour only: a blit writes every draw buffer.
-      resources.scene.bindFirst();
-      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.compositeDrawFramebuffer);
-      this.hostDrawBuffers.readFirst();
-      try {
-        gl.blitFramebuffer(v[0], v[1], v[0] + v[2], v[1] + v[3], 0, 0, this.width, this.height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
-      } finally {
-        this.hostDrawBuffers.restoreRead();
-      }
-    } finally {
-      this.hostState.restore();
+      if (this.host.open) this.host.close();
     }
   }
 
@@ -701,45 +541,18 @@ export class PenumbraRenderer {
    */
   renderLightmap(layers = ALL_LAYERS, surfaces?: SurfaceTextures): void {
     assertLayerMask('PenumbraRenderer.renderLightmap: layers', layers);
-    this.checkSurfaces('renderLightmap', surfaces);
+    checkSurfaces('renderLightmap', this._normals, surfaces);
     if (this.isUnavailable()) return;
-    this.checkCookies();
+    this.cookies.checkAll(this._lights);
     const resources = this.requireResources();
     this.externalSurfaces = surfaces ?? null;
-    this.enterHostState();
+    this.host.enter();
     try {
       this.renderLightmapInto(resources, layers | 0);
     } finally {
-      this.hostState.restore();
+      this.host.state.restore();
       this.externalSurfaces = null;
     }
-  }
-
-  /**
-   * Throws naming the method and field when `surfaces` is given to a renderer without normals or is
-   * malformed. Per frame: the messages are built only on failure.
-   */
-  private checkSurfaces(method: string, surfaces: SurfaceTextures | undefined): void {
-    if (surfaces === undefined) return;
-    if (this._normals && isObject(surfaces) && isObject(surfaces.normals) && (surfaces.material == null || isObject(surfaces.material))
-      && (surfaces.flipY === undefined || typeof surfaces.flipY === 'boolean')) return;
-    const name = `PenumbraRenderer.${method}: surfaces`;
-    if (!this._normals) throw new Error(`penumbra: ${name} needs a renderer made with { normals: true }`);
-    if (!isObject(surfaces)) throw new TypeError(`${name} must be an object, got ${describeValue(surfaces)}`);
-    if (!isObject(surfaces.normals)) throw new TypeError(`${name}.normals must be a WebGLTexture, got ${describeValue(surfaces.normals)}`);
-    if (surfaces.material != null && !isObject(surfaces.material)) {
-      throw new TypeError(`${name}.material must be a WebGLTexture, got ${describeValue(surfaces.material)}`);
-    }
-    assertBoolean(`${name}.flipY`, surfaces.flipY as boolean);
-  }
-
-  /** Points {@link PenumbraRenderer.surface} at the host's textures of this call, or at the scene target's. */
-  private chooseSurface(resources: Resources): void {
-    const surface = this.surface, scene = resources.scene.textures, external = this.externalSurfaces;
-    surface.normals = external?.normals ?? scene[SceneAttachments.normal];
-    // Without a material of the host's: the scene target's, which drawInPlace's beginDraw cleared.
-    surface.material = external?.material ?? scene[SceneAttachments.material];
-    surface.flipY = external?.flipY ?? false;
   }
 
   /**
@@ -749,11 +562,10 @@ export class PenumbraRenderer {
    */
   dispose(): void {
     if (this.disposed) return;
-    if (this.drawing && !this.isContextLost()) this.closeFrame();
+    if (this.host.open && !this.loss.isLost) this.host.close();
     this.disposed = true;
-    this.canvas?.removeEventListener('webglcontextlost', this.onContextLost);
-    this.canvas?.removeEventListener('webglcontextrestored', this.handleContextRestored);
-    if (!this.isContextLost()) this.destroyResources();
+    this.loss.dispose();
+    if (this.resources && !this.loss.isLost) this.builder.destroy(this.resources);
     this.resources = null;
     this._lights.length = 0;
     this._hulls.length = 0;
@@ -763,20 +575,20 @@ export class PenumbraRenderer {
    * Builds the lightmap from the lights whose `litLayers` share a bit with `layers`, an int32 (`| 0`
    * of the mask): 0xffffffff itself is a double, which V8 boxes on the heap when it passes one.
    */
-  private renderLightmapInto(resources: Resources, layers: number): void {
+  private renderLightmapInto(resources: FrameResources, layers: number): void {
     const start = this.measureCpuTime ? performance.now() : 0;
-    const plan = this.plan;
-    const viewProjection = this._viewProjection;
+    const plan = this.plan, sizing = this.sizing;
+    const viewProjection = sizing.viewProjection;
     this.geometry.update(this._hulls);
-    plan.build(this._lights, this._hulls, this.geometry, viewProjection, this.lightmapWidth, this.lightmapHeight);
+    plan.build(this._lights, this._hulls, this.geometry, viewProjection, sizing.lightmapWidth, sizing.lightmapHeight);
     resources.shadows.upload(this.geometry, plan.bins);
     resources.shapes.uploadTileRectangles(plan.tiles.dirtyRows, plan.tiles.rectangles, plan.tiles.usedIndices);
-    if (this._normals) this.chooseSurface(resources);
+    if (this._normals) chooseSurface(this.surface, resources.scene, this.externalSurfaces);
     resources.light.begin(this._ambient, viewProjection, this.surface);
     for (let i = 0; i < plan.drawCount; i++) {
       if ((plan.draws[i].light.litLayers & layers) !== 0) resources.light.render(plan.draws[i]);
     }
-    if (this._lightmapBlur > 0) resources.blur.render(resources.light.lightmap, this._lightmapBlur * this.lightmapScale);
+    if (this._lightmapBlur > 0) resources.blur.render(resources.light.lightmap, this._lightmapBlur * sizing.lightmapScale);
     this.updateStats(this.measureCpuTime ? performance.now() - start : 0);
   }
 
@@ -803,204 +615,22 @@ export class PenumbraRenderer {
     }
   }
 
-  private bindCompositeTarget(): void {
-    const gl = this.gl;
-    const v = this.compositeViewport;
-    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, this.compositeDrawFramebuffer);
-    gl.viewport(v[0], v[1], v[2], v[3]);
-  }
-
-  /**
-   * Saves the host's state and puts the renderer's neutral one; pair with `hostState.restore()` in
-   * a `finally`. The per-frame paths use this pair directly: a closure would allocate every frame.
-   */
-  private enterHostState(): void {
-    this.hostState.save();
-    try {
-      this.hostState.prepareForRenderer();
-    } catch (error) {
-      this.hostState.restore();
-      throw error;
-    }
-  }
-
-  /** Runs `run` between {@link PenumbraRenderer.enterHostState} and a restore (for calls that are not per frame). */
-  private withHostState(run: () => void): void {
-    this.enterHostState();
-    try {
-      run();
-    } finally {
-      this.hostState.restore();
-    }
-  }
-
-  /**
-   * Whether GL calls must be skipped: disposed, or the context lost. `gl.isContextLost()` is read
-   * too because the browser dispatches `webglcontextlost` only after the loss: a frame in between
-   * would meet the null answers of a lost context.
-   */
+  /** Whether GL calls must be skipped: disposed, or the context lost (see {@link ContextLoss.isLost}). */
   private isUnavailable(): boolean {
-    return this.disposed || this.isContextLost();
-  }
-  private isContextLost(): boolean {
-    return this.contextLost || this.gl.isContextLost();
+    return this.disposed || this.loss.isLost;
   }
 
-  /**
-   * Whether the composite upsamples the lightmap aware of hull outlines: when it is smaller than
-   * the scene (`lightmapScale` below 1), through the hull masks.
-   */
-  private get edgeAware(): boolean {
-    return this.lightmapScale < 1;
-  }
-
-  private get lightmapWidth(): number {
-    return Math.max(1, Math.round(this.width * this.lightmapScale));
-  }
-  private get lightmapHeight(): number {
-    return Math.max(1, Math.round(this.height * this.lightmapScale));
-  }
-
-  private updateDefaultViewProjection(): void {
-    // Without a size yet (made on a lost context) the identity stands in until the restore gives one.
-    if (this.width === 0 || this.height === 0) return;
-    mat4.ortho(this._viewProjection, 0, this.width, this.height, 0, -1, 1);
-  }
-
-  private requireResources(): Resources {
+  private requireResources(): FrameResources {
     if (this.disposed) throw new Error('penumbra: the renderer was disposed');
     if (!this.resources) throw new Error('penumbra: the WebGL context is lost; the renderer resumes when it is restored');
     return this.resources;
   }
 
-  /**
-   * Builds the GL objects. If one fails, those already made are freed before the error goes on (a
-   * pass that fails part-way frees its own).
-   */
+  /** Builds the GL objects (see {@link ResourceBuilder.build}). */
   private createResources(): void {
-    const gl = this.gl;
-    this.chooseLightmapFormat();
-    const made: { dispose(): void }[] = [];
-    const keep = <T extends { dispose(): void }>(resource: T): T => {
-      made.push(resource);
-      return resource;
-    };
-    try {
-      this.withHostState(() => {
-        const shapes = keep(new LightShapes(gl));
-        this.resources = {
-          shapes,
-          shadows: keep(new ShadowTextures(gl, SHADOW_TEXTURE_UNITS)),
-          scene: keep(new RenderTarget(gl, { format: 'rgba8', depthStencil: true, colorAttachments: this._normals ? 3 : 1 }, this.width, this.height)),
-          light: keep(new LightPass(gl, shapes, this.lightmapFormat, this.lightmapWidth, this.lightmapHeight, this._normals)),
-          composite: keep(new CompositePass(gl, this._normals, this.edgeAware)),
-          hullMask: this.edgeAware ? keep(new HullMaskPass(gl, this.width, this.height, this.lightmapWidth, this.lightmapHeight)) : null,
-          blur: keep(new BlurPass(gl, this.lightmapFormat)),
-          debug: keep(new DebugPass(gl, shapes)),
-        };
-      });
-    } catch (error) {
-      this.withHostState(() => {
-        for (const resource of made) resource.dispose();
-      });
-      throw error;
-    }
+    this.resources = this.builder.build();
     this.geometry.invalidate();
   }
-
-  private destroyResources(): void {
-    const resources = this.resources;
-    if (!resources) return;
-    this.withHostState(() => {
-      for (const resource of Object.values(resources)) resource?.dispose();
-    });
-    this.resources = null;
-  }
-
-  private readonly onContextLost = (event: Event): void => {
-    // Without preventDefault the browser never restores the context.
-    event.preventDefault();
-    this.contextLost = true;
-    this.drawing = false;
-    this.resources = null;
-  };
-
-  /**
-   * Half-float where the context can render to it (which enables the extension: a restored context
-   * starts with none). Warns when it falls back to RGBA8, once until the format changes again.
-   */
-  private chooseLightmapFormat(): void {
-    const format = supportsFloatTargets(this.gl) ? 'rgba16f' : 'rgba8';
-    if (format === 'rgba8' && this.lightmapFormat !== 'rgba8') {
-      console.warn('penumbra: EXT_color_buffer_float is missing; the lightmap falls back to RGBA8, so light sums clamp at 1.');
-    }
-    this.lightmapFormat = format;
-  }
-
-  /**
-   * Rebuilds after a loss. Ignored without a loss before it (nothing to rebuild), and when the
-   * context is lost again before this handler runs: the next restored event rebuilds.
-   */
-  private readonly handleContextRestored = (): void => {
-    if (!this.contextLost || this.disposed || this.gl.isContextLost()) return;
-    this.maxSize = maxTargetSize(this.gl);
-    this.takeDrawingBufferSize();
-    this.checkedCookies = new WeakMap();
-    this.createResources();
-    this.contextLost = false;
-    this.onContextRestored?.(this);
-    this.warnOfOldCookies();
-  };
-
-  /** Gives a side still 0 (the renderer was made on a lost context without it) the drawing buffer's. */
-  private takeDrawingBufferSize(): void {
-    if (this.width !== 0 && this.height !== 0) return;
-    const gl = this.gl;
-    this.setSize(this.width || checkSize('PenumbraRenderer.width', gl.drawingBufferWidth, this.maxSize),
-      this.height || checkSize('PenumbraRenderer.height', gl.drawingBufferHeight, this.maxSize));
-  }
-
-  /** Names each textured light whose cookie texture is not one of the restored context's. */
-  private warnOfOldCookies(): void {
-    this._lights.forEach((light, index) => {
-      if (light instanceof TexturedLight && !this.gl.isTexture(light.texture)) {
-        console.warn(`penumbra: lights[${index}] (TexturedLight) still has its cookie texture from before the context loss; give it a new one in PenumbraRenderer.onContextRestored`);
-      }
-    });
-  }
-}
-
-/** The largest side of a target the context can allocate: its texture and its depth/stencil renderbuffer. */
-function maxTargetSize(gl: WebGL2RenderingContext): number {
-  // A lost context answers null: no limit is known until it is back.
-  const textureSize = (gl.getParameter(gl.MAX_TEXTURE_SIZE) as number | null) ?? Infinity;
-  const renderbufferSize = (gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) as number | null) ?? Infinity;
-  return Math.min(textureSize, renderbufferSize);
-}
-
-function checkSize(name: string, value: number, max: number): number {
-  if (!Number.isInteger(value) || value <= 0) throw new RangeError(`${name} must be a positive integer, got ${describeValue(value)}`);
-  if (value > max) throw new RangeError(`${name} ${value} exceeds this context's largest texture size ${max} (MAX_TEXTURE_SIZE / MAX_RENDERBUFFER_SIZE)`);
-  return value;
-}
-
-/** Whether `texture` is a live texture of `gl` (`isTexture` throws for an object that is no WebGLTexture). */
-function isTextureOf(gl: WebGL2RenderingContext, texture: WebGLTexture): boolean {
-  try {
-    return gl.isTexture(texture);
-  } catch {
-    return false;
-  }
-}
-
-/** Whether `value` is a non-null object (a WebGL texture is an opaque one). */
-function isObject(value: unknown): value is object {
-  return typeof value === 'object' && value !== null;
-}
-
-function checkScale(value: number): number {
-  if (typeof value !== 'number' || !(value > 0 && value <= 1)) throw new RangeError(`PenumbraRenderer.lightmapScale must be in (0, 1], got ${value}`);
-  return value;
 }
 
 function removeFrom<T>(list: T[], item: T): boolean {
@@ -1009,3 +639,4 @@ function removeFrom<T>(list: T[], item: T): boolean {
   list.splice(index, 1);
   return true;
 }
+

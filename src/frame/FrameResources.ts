@@ -1,0 +1,121 @@
+import { supportsFloatTargets } from '../gl/capabilities';
+import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
+import { BlurPass } from '../passes/BlurPass';
+import { CompositePass, CompositeUnits } from '../passes/CompositePass';
+import { DebugPass } from '../passes/DebugPass';
+import { HullMaskPass } from '../passes/HullMaskPass';
+import { LightPass } from '../passes/LightPass';
+import { LightShapes } from '../passes/LightShapes';
+import { LIGHT_TEXTURE_UNITS, SHADOW_TEXTURE_UNITS } from '../passes/lightLayout';
+import { ShadowTextures } from '../shadow/ShadowTextures';
+import type { HostFrame } from './HostFrame';
+import type { Sizing } from './Sizing';
+
+/** The renderer's GL objects: its targets and passes, made and freed together. */
+export interface FrameResources {
+  shapes: LightShapes;
+  shadows: ShadowTextures;
+  scene: RenderTarget;
+  light: LightPass;
+  composite: CompositePass;
+  /** With a lightmap smaller than the scene (see {@link Sizing.edgeAware}); else null. */
+  hullMask: HullMaskPass | null;
+  blur: BlurPass;
+  debug: DebugPass;
+}
+
+/**
+ * The texture units the passes bind (from 0: the light pass's, see LIGHT_TEXTURE_UNITS, and the
+ * composite's scene and lightmap; with normals its surface's; upsampling aware of hull edges the
+ * hull masks'), saved and restored around every call.
+ */
+export function textureUnits(normals: boolean, edgeAware: boolean): number {
+  const { u_normals, u_material, ...lightUnits } = LIGHT_TEXTURE_UNITS;
+  const last = Math.max(...Object.values(lightUnits), CompositeUnits.scene, CompositeUnits.lightmap,
+    ...(normals ? [u_normals, u_material, CompositeUnits.specular, CompositeUnits.material] : []),
+    ...(edgeAware ? [CompositeUnits.hullMask, CompositeUnits.lightmapHullMask] : []));
+  return last + 1;
+}
+
+/**
+ * Makes, resizes and frees the {@link FrameResources}, each time with the host's state saved around
+ * the GL calls, and chooses the lightmap's format for each context.
+ */
+export class ResourceBuilder {
+  /** Chosen with each build (see {@link ResourceBuilder.chooseLightmapFormat}). */
+  lightmapFormat: TargetFormat = 'rgba16f';
+
+  constructor(
+    private readonly gl: WebGL2RenderingContext, private readonly host: HostFrame, private readonly sizing: Sizing,
+    private readonly normals: boolean,
+  ) {}
+
+  /**
+   * Builds the GL objects. If one fails, those already made are freed before the error goes on (a
+   * pass that fails part-way frees its own).
+   */
+  build(): FrameResources {
+    const gl = this.gl, sizing = this.sizing;
+    this.chooseLightmapFormat();
+    const made: { dispose(): void }[] = [];
+    const keep = <T extends { dispose(): void }>(resource: T): T => {
+      made.push(resource);
+      return resource;
+    };
+    try {
+      return this.host.run(() => {
+        const shapes = keep(new LightShapes(gl));
+        const { width, height, lightmapWidth, lightmapHeight, edgeAware } = sizing;
+        return {
+          shapes,
+          shadows: keep(new ShadowTextures(gl, SHADOW_TEXTURE_UNITS)),
+          scene: keep(new RenderTarget(gl, { format: 'rgba8', depthStencil: true, colorAttachments: this.normals ? 3 : 1 }, width, height)),
+          light: keep(new LightPass(gl, shapes, this.lightmapFormat, lightmapWidth, lightmapHeight, this.normals)),
+          composite: keep(new CompositePass(gl, this.normals, edgeAware)),
+          hullMask: edgeAware ? keep(new HullMaskPass(gl, width, height, lightmapWidth, lightmapHeight)) : null,
+          blur: keep(new BlurPass(gl, this.lightmapFormat)),
+          debug: keep(new DebugPass(gl, shapes)),
+        };
+      });
+    } catch (error) {
+      this.host.run(() => {
+        for (const resource of made) resource.dispose();
+      });
+      throw error;
+    }
+  }
+
+  /** Frees every GL object of `resources`. */
+  destroy(resources: FrameResources): void {
+    this.host.run(() => {
+      for (const resource of Object.values(resources)) resource?.dispose();
+    });
+  }
+
+  /** Reallocates the targets at the sizing's size; returns why that failed, or null. */
+  resize(resources: FrameResources): string | null {
+    const { width, height, lightmapWidth, lightmapHeight } = this.sizing;
+    try {
+      this.host.run(() => {
+        resources.scene.resize(width, height);
+        resources.light.resize(lightmapWidth, lightmapHeight);
+        resources.hullMask?.resize(width, height, lightmapWidth, lightmapHeight);
+      });
+    } catch (error) {
+      return (error as Error).message;
+    }
+    return this.gl.getError() === this.gl.OUT_OF_MEMORY ? 'the context is out of memory (OUT_OF_MEMORY)' : null;
+  }
+
+  /**
+   * Half-float where the context can render to it (which enables the extension: a restored context
+   * starts with none). Warns when it falls back to RGBA8, once until the format changes again.
+   */
+  private chooseLightmapFormat(): void {
+    const format = supportsFloatTargets(this.gl) ? 'rgba16f' : 'rgba8';
+    if (format === 'rgba8' && this.lightmapFormat !== 'rgba8') {
+      console.warn('penumbra: EXT_color_buffer_float is missing; the lightmap falls back to RGBA8, so light sums clamp at 1.');
+    }
+    this.lightmapFormat = format;
+  }
+}
