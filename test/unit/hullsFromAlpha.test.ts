@@ -211,10 +211,14 @@ function expectHausdorff(img: AlphaImage, hulls: readonly Hull[], tolerance: num
   expect(far).toEqual([]);
 }
 
-/** Distance from (px, py) to the nearest of `segments` (Infinity for none). */
+/** Distance from (px, py) to the nearest of `segments` (Infinity for none); a segment whose bounding box is no nearer is skipped. */
 function nearestSegment(px: number, py: number, segments: readonly (readonly number[])[]): number {
   let nearest = Infinity;
-  for (const segment of segments) nearest = Math.min(nearest, distanceToSegment(px, py, segment));
+  for (const segment of segments) {
+    const [ax, ay, bx, by] = segment;
+    const dx = Math.max(Math.min(ax, bx) - px, 0, px - Math.max(ax, bx)), dy = Math.max(Math.min(ay, by) - py, 0, py - Math.max(ay, by));
+    if (dx * dx + dy * dy < nearest * nearest) nearest = Math.min(nearest, distanceToSegment(px, py, segment));
+  }
   return nearest;
 }
 
