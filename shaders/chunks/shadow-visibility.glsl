@@ -416,7 +416,7 @@ float coveredBetween(float low, float high) {
   return covered;
 }
 
-// Pseudo-angle of a direction, in [0, 4), as `pseudoAngle` in src/shadow/shadowLayout.ts (0 for
+// Pseudo-angle of a direction, in [0, 4), as src/shadow/shadowLayout.ts defines it for the bins (0 for
 // the zero vector: a pixel at the bins' origin lies inside the filed disk, where every bin lists
 // every hull that can shade it).
 float pseudoAngle(vec2 d) {

@@ -1,4 +1,4 @@
-import { ROW_INDICES, TILE_GRID } from '../shadow/shadowLayout';
+import { ROW_INDICES, TILE_COLUMNS, TILE_ROWS } from '../shadow/shadowLayout';
 
 /**
  * Sides of the polygon drawn for a light's range disk. It is circumscribed, so it covers the whole
@@ -12,7 +12,7 @@ const DISK_SIDES = 16;
  * - in the unit square 0..1 of the light's quad (see `Light.writeQuad`), on attribute 0 of one
  *   vertex array: the quad as a TRIANGLE_STRIP and as a LINE_LOOP, and a polygon circumscribing
  *   the disk inscribed in the quad as TRIANGLES: where a light confined to its range adds anything;
- * - the tile grid's corner points `(i, j)` (TILE_GRID + 1 per side, see `tileCorner`) on
+ * - the tile grid's corner points `(i, j)` ((TILE_COLUMNS + 1) × (TILE_ROWS + 1), see `tileCorner`) on
  *   attribute 0 of another, with the lights' rectangles of tiles as indices (`LightTiles`
  *   `rectangles`: one slot of ROW_INDICES per filing row, uploaded by the rows that changed). The
  *   light vertex stage built with TILED places the points on the light's grid.
@@ -128,9 +128,9 @@ const GRANULES_PER_ROW = ROW_INDICES / UPLOAD_GRANULE;
 
 /** The tile grid's corner points, row by row (see `tileCorner`). */
 function tileCorners(): Float32Array {
-  const points = new Float32Array(2 * (TILE_GRID + 1) * (TILE_GRID + 1));
-  for (let j = 0, k = 0; j <= TILE_GRID; j++) {
-    for (let i = 0; i <= TILE_GRID; i++) {
+  const points = new Float32Array(2 * (TILE_COLUMNS + 1) * (TILE_ROWS + 1));
+  for (let j = 0, k = 0; j <= TILE_ROWS; j++) {
+    for (let i = 0; i <= TILE_COLUMNS; i++) {
       points[k++] = i;
       points[k++] = j;
     }

@@ -141,7 +141,7 @@ export class ShadowBins {
       const halfWidth = hullSine + ASIN_CUBIC * hullSine * hullSine * hullSine + diskSine + ASIN_CUBIC * diskSine * diskSine * diskSine + ANGLE_MARGIN;
       if (halfWidth < MAX_TURNED_HALF_WIDTH) {
         // The directions within halfWidth of (dx, dy) lie between it turned by ± atan(t) ≥ halfWidth:
-        // their pseudo-angles (pseudoAngle in shadowLayout), which grow with the angle, bound the bins.
+        // their pseudo-angles (see shadowLayout's bins), which grow with the angle, bound the bins.
         // (Adding halfWidth to the pseudo-angle would do too, as it grows at most 1 per radian, but
         // half as fast diagonally.) t ≥ tan(halfWidth) by Becker–Stark: π²x / (π² − 4x²).
         const t = (PI_SQUARED * halfWidth) / (PI_SQUARED - 4 * halfWidth * halfWidth);

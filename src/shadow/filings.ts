@@ -3,7 +3,7 @@ import { DirectionalLight } from '../scene/DirectionalLight';
 import type { Light, ShadowType } from '../scene/Light';
 import type { LightDraw } from './lightPlacement';
 import { type BinSpan, bucketWidthOf, type FiledDisk, type ShadowBins } from './ShadowBins';
-import { MOVING_LIST, STILL_LIST, TILE_GRID } from './shadowLayout';
+import { MOVING_LIST, STILL_LIST, TILE_COLUMNS, TILE_ROWS } from './shadowLayout';
 
 /** A filing's `movingCount` when its moving list in the bins is not known to be written. */
 export const UNWRITTEN = -1;
@@ -219,13 +219,13 @@ export class LightFiling {
     out[3] = this.bucketWidth;
   }
 
-  /** Writes the tile grid's corner (least x and y) and a tile's width and height (the light pass's `u_tiles`): the filed bounds cut into TILE_GRID² tiles. */
+  /** Writes the tile grid's corner (least x and y) and a tile's width and height (the light pass's `u_tiles`): the filed bounds cut into TILE_COLUMNS × TILE_ROWS tiles. */
   writeTiles(out: Float32Array): void {
     const b = this.filedBounds;
     out[0] = b[0];
     out[1] = b[1];
-    out[2] = (b[2] - b[0]) / TILE_GRID;
-    out[3] = (b[3] - b[1]) / TILE_GRID;
+    out[2] = (b[2] - b[0]) / TILE_COLUMNS;
+    out[3] = (b[3] - b[1]) / TILE_ROWS;
   }
 
   /** Whether `light.ignoredHulls` holds the hulls it held when filed: as many, and each of those. */

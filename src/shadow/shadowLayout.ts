@@ -17,9 +17,12 @@ import type { ShadowType } from '../scene/Light';
  *   whether the hull can be between the pixel and the disk. A hull of more than
  *   {@link ENTRY_MAX_RECORDS} records takes several entries.
  * - **Bins** (per frame): one row per shadowed light, {@link BIN_COUNT} texels; bin `k` holds the
- *   directions from the light's centre whose pseudo-angle (see `pseudoAngle`) lies in
- *   `[4k / N, 4(k + 1) / N)`: two lists of entries, each ordered nearest first, as
- *   `(first entry, entry count)` at {@link STILL_LIST} and at {@link MOVING_LIST}: the hulls that
+ *   directions from the light's centre whose pseudo-angle lies in `[4k / N, 4(k + 1) / N)`
+ *   (the pseudo-angle of (x, y) is p = y / (|x| + |y|), then 2 − p for x < 0, else 4 + p for
+ *   y < 0, else p: in [0, 4), 0 along +x, 1 along +y, increasing counter-clockwise in x-right,
+ *   y-up axes, and growing at most 1 per radian, within a factor 2 of the angle; `pseudoAngle` in
+ *   the chunk shadow-visibility, written inline by the filing, ShadowBins): two lists of entries,
+ *   each ordered nearest first, as `(first entry, entry count)` at {@link STILL_LIST} and at {@link MOVING_LIST}: the hulls that
  *   stood still (kept with the light's filing) and those that moved lately (filed every frame). The
  *   width of the distance buckets is the light's uniform `u_binning.w`.
  *
@@ -81,33 +84,24 @@ export const STILL_LIST = 0;
 export const MOVING_LIST = 2;
 
 /**
- * The pseudo-angle of the direction (x, y), in [0, 4): 0 along +x, 1 along +y, 2 along −x, 3 along −y,
- * increasing counter-clockwise (in x-right, y-up axes) and within a factor 2 of proportional to the
- * angle: it grows at most 1 per radian. One division, and the same in GLSL (shadow-visibility),
- * which also gives 0 for (0, 0) (here NaN: the filing, which calls this twice per light and hull, never asks).
+ * A shadowed point light's grid (see `LightTiles`): its filed bounds cut into TILE_COLUMNS ×
+ * TILE_ROWS tiles, drawn as rectangles of tiles of one class whose corners are points of the grid
+ * ({@link tileCorner}). A tile row is one int32 mask, so TILE_COLUMNS ≤ 32; rows cost a word each,
+ * and more of them fit the tiles closer to the penumbrae's slanted edges.
  */
-export function pseudoAngle(x: number, y: number): number {
-  const p = y / (Math.abs(x) + Math.abs(y));
-  return x < 0 ? 2 - p : y < 0 ? 4 + p : p;
-}
+export const TILE_COLUMNS = 32;
+export const TILE_ROWS = 64;
 
 /**
- * Tiles per side of a shadowed point light's grid (see `LightTiles`): its filed bounds cut into
- * TILE_GRID² tiles, drawn as rectangles of tiles of one class whose corners are points of the grid
- * ({@link tileCorner}).
- */
-export const TILE_GRID = 32;
-
-/**
- * The index of the grid's corner point (i, j), 0 ≤ i, j ≤ TILE_GRID, in the tile grid's vertex
- * buffer (`LightShapes`), which holds the points row by row as (i, j).
+ * The index of the grid's corner point (i, j), 0 ≤ i ≤ TILE_COLUMNS, 0 ≤ j ≤ TILE_ROWS, in the
+ * tile grid's vertex buffer (`LightShapes`), which holds the points row by row as (i, j).
  */
 export function tileCorner(i: number, j: number): number {
-  return j * (TILE_GRID + 1) + i;
+  return j * (TILE_COLUMNS + 1) + i;
 }
 
 /** Indices per light in the tile rectangles' index buffer: two triangles for each of its tiles, the most rectangles it can have. */
-export const ROW_INDICES = 6 * TILE_GRID * TILE_GRID;
+export const ROW_INDICES = 6 * TILE_COLUMNS * TILE_ROWS;
 
 /**
  * A tile's class, what the light pass draws it with: nothing (outside the light's reach, or dark

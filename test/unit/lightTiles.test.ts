@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { LightTiles } from '../../src/shadow/LightTiles';
-import { SHADOW_TYPE_CODES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_GRID } from '../../src/shadow/shadowLayout';
+import { SHADOW_TYPE_CODES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_COLUMNS, TILE_ROWS } from '../../src/shadow/shadowLayout';
 import { ShadowGeometry } from '../../src/shadow/ShadowGeometry';
 import { Hull } from '../../src/index';
 import { createRandom } from '../reference/randomScenes';
@@ -39,7 +39,7 @@ function classify({ hulls, centre, radius, reach, solid, occluded }: Case): { cl
   tiles.beginLight(bounds, Float64Array.of(centre[0], centre[1], radius, reach), true, shadowType);
   tiles.addStillHulls(geometry, indices, indices.length);
   tiles.endLight(0);
-  return { classes: Uint8Array.from({ length: TILE_GRID * TILE_GRID }, (_, tile) => tiles.tileClass(0, tile)), bounds };
+  return { classes: Uint8Array.from({ length: TILE_COLUMNS * TILE_ROWS }, (_, tile) => tiles.tileClass(0, tile)), bounds };
 }
 
 function samplesWithRim(centre: Point, radius: number, inner = 512, onRim = 256): Float64Array {
@@ -97,12 +97,12 @@ function check(c: Case): { wrong: string[]; counts: number[] } {
   const samples = samplesWithRim(c.centre, Math.max(c.radius, 1e-3));
   const fewSamples = samplesWithRim(c.centre, Math.max(c.radius, 1e-3), 128, 64);
   const edges = edgesOf(c.hulls);
-  const tw = (bounds[2] - bounds[0]) / TILE_GRID, th = (bounds[3] - bounds[1]) / TILE_GRID;
+  const tw = (bounds[2] - bounds[0]) / TILE_COLUMNS, th = (bounds[3] - bounds[1]) / TILE_ROWS;
   const wrong: string[] = [];
   const counts = new Array<number>(TILE_CLASS_COUNT).fill(0);
-  for (let j = 0; j < TILE_GRID; j++) {
-    for (let i = 0; i < TILE_GRID; i++) {
-      const value = classes[j * TILE_GRID + i];
+  for (let j = 0; j < TILE_ROWS; j++) {
+    for (let i = 0; i < TILE_COLUMNS; i++) {
+      const value = classes[j * TILE_COLUMNS + i];
       counts[value]++;
       if (value === TILE_CLASSES.outside || value === TILE_CLASSES.exact) continue;
       for (let a = 0; a < SAMPLES_PER_SIDE; a++) {
@@ -198,9 +198,10 @@ describe('LightTiles', () => {
     const hulls = [box(120, 80, 10, 40), box(160, 95, 8, 8)];
     const solid = classify({ hulls, centre: [100, 100], radius: 3, reach: 90, solid: true }).classes;
     const lit = classify({ hulls, centre: [100, 100], radius: 3, reach: 90, solid: false }).classes;
-    // The crate's tile behind the wall: dark for a Solid light, held (lit inside the crate) for an Illuminated one.
+    // A tile across the crate's lower edge, behind the wall: dark for a Solid light, held (lit
+    // inside the crate) for an Illuminated one (a tile wholly inside the crate is lit).
     const bounds = [10, 10];
-    const tile = Math.floor((99 - bounds[1]) / (180 / TILE_GRID)) * TILE_GRID + Math.floor((164 - bounds[0]) / (180 / TILE_GRID));
+    const tile = Math.floor((95.5 - bounds[1]) / (180 / TILE_ROWS)) * TILE_COLUMNS + Math.floor((164 - bounds[0]) / (180 / TILE_COLUMNS));
     expect(solid[tile]).toBe(TILE_CLASSES.dark);
     expect(lit[tile]).toBe(TILE_CLASSES.held);
   });
@@ -212,13 +213,13 @@ describe('LightTiles', () => {
     const { wrong, counts } = check(c);
     expect(wrong).toEqual([]);
     const { classes, bounds } = classify(c);
-    const tw = (bounds[2] - bounds[0]) / TILE_GRID;
-    const tileAt = (x: number, y: number) => classes[Math.floor((y - bounds[1]) / tw) * TILE_GRID + Math.floor((x - bounds[0]) / tw)];
+    const tw = (bounds[2] - bounds[0]) / TILE_COLUMNS, th = (bounds[3] - bounds[1]) / TILE_ROWS;
+    const tileAt = (x: number, y: number) => classes[Math.floor((y - bounds[1]) / th) * TILE_COLUMNS + Math.floor((x - bounds[0]) / tw)];
     // Well inside each block: lit; a Solid light's are dark and exact there.
     expect(tileAt(170, 100)).toBe(TILE_CLASSES.lit);
     expect(tileAt(160, 155)).toBe(TILE_CLASSES.lit);
     const solid = classify({ ...c, solid: true }).classes;
-    expect(solid[Math.floor((100 - bounds[1]) / tw) * TILE_GRID + Math.floor((170 - bounds[0]) / tw)]).toBe(TILE_CLASSES.dark);
+    expect(solid[Math.floor((100 - bounds[1]) / th) * TILE_COLUMNS + Math.floor((170 - bounds[0]) / tw)]).toBe(TILE_CLASSES.dark);
     expect(counts[TILE_CLASSES.lit]).toBeGreaterThan(0);
   });
 });
@@ -226,18 +227,18 @@ describe('LightTiles', () => {
 describe('LightTiles rectangles', () => {
   /** The class each tile of `row` is drawn in by the row's rectangles (−1 where none, −2 where several). */
   function drawnClasses(tiles: LightTiles, row: number): Int8Array {
-    const drawn = new Int8Array(TILE_GRID * TILE_GRID).fill(-1);
+    const drawn = new Int8Array(TILE_COLUMNS * TILE_ROWS).fill(-1);
     const lists = new Int32Array(2 * TILE_CLASS_COUNT);
     tiles.writeLists(row, lists);
     for (let c = 0; c < TILE_CLASS_COUNT; c++) {
       for (let k = lists[2 * c]; k < lists[2 * c] + lists[2 * c + 1]; k += 3) {
-        const corners = [0, 1, 2].map((v) => tiles.rectangles[k + v]).map((index) => [index % (TILE_GRID + 1), Math.floor(index / (TILE_GRID + 1))]);
+        const corners = [0, 1, 2].map((v) => tiles.rectangles[k + v]).map((index) => [index % (TILE_COLUMNS + 1), Math.floor(index / (TILE_COLUMNS + 1))]);
         // Each triangle is half a rectangle: its tiles are those whose centre lies inside it, moved
         // off the diagonals by an irrational step.
-        for (let j = 0; j < TILE_GRID; j++) {
-          for (let i = 0; i < TILE_GRID; i++) {
+        for (let j = 0; j < TILE_ROWS; j++) {
+          for (let i = 0; i < TILE_COLUMNS; i++) {
             if (!insideTriangle(corners, i + 0.5, j + 0.5 + 0.01 * Math.SQRT2)) continue;
-            const tile = j * TILE_GRID + i;
+            const tile = j * TILE_COLUMNS + i;
             drawn[tile] = drawn[tile] === -1 ? c : -2;
           }
         }
@@ -271,7 +272,7 @@ describe('LightTiles rectangles', () => {
     for (let row = 0; row < 3; row++) {
       const drawn = drawnClasses(tiles, row);
       const wrong: string[] = [];
-      for (let tile = 0; tile < TILE_GRID * TILE_GRID; tile++) {
+      for (let tile = 0; tile < TILE_COLUMNS * TILE_ROWS; tile++) {
         const value = tiles.tileClass(row, tile), expected = value === TILE_CLASSES.outside ? -1 : value;
         if (drawn[tile] !== expected) wrong.push(`row ${row} tile ${tile}: class ${value}, drawn ${drawn[tile]}`);
       }
