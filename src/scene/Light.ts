@@ -340,8 +340,7 @@ export abstract class Light {
    * @internal
    */
   writeEmittedColor(out: Float32Array): void {
-    // The bounds are written out as numbers here and in writeInverseSquareCore: read from module
-    // constants, they would cost a boxed number per light and frame.
+    // The bounds are literals here and in writeInverseSquareCore (see Hot-path rules in docs/architecture.md).
     for (let c = 0; c < 3; c++) out[c] = Math.min(this._color[c] * this._intensity, 3.4028234663852886e38 /* FLOAT32_MAX */);
   }
 
@@ -383,7 +382,6 @@ export abstract class Light {
   writeQuad(out: Float32Array): void {
     const width = this.quadWidth(), height = this.quadHeight();
     const cos = Math.cos(this._rotation), sin = Math.sin(this._rotation);
-    // Indexed, not destructured: array destructuring goes through the iterator protocol and allocates.
     const pivot = this.quadPivot();
     const ox = pivot[0], oy = pivot[1];
     out[2] = cos * width;

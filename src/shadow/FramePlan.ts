@@ -258,8 +258,8 @@ export class FramePlan {
    * and whose circle reaches within its filed reach of its centre (see `LightFiling`), transforming
    * each candidate the grid finds by its coarse bounds first (see `ShadowGeometry.prepare`), so every
    * change reaches the light this frame; returns how many. Reads the geometry's flat arrays, not the hulls: this runs for every hull in every
-   * light's range. (The bins file them in a loop of their own, `ShadowBins.addHulls`: inlined here,
-   * their arithmetic would pass doubles to helpers V8 no longer inlines, boxing them for every hull.)
+   * light's range. (The bins file them in a loop of their own, `ShadowBins.addHulls`: see Hot-path
+   * rules in docs/architecture.md.)
    */
   private findHullsInRange(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry, grid: HullGrid): number {
     const light = draw.light, filing = draw.filing;

@@ -15,7 +15,7 @@ const ASIN_CUBIC = Math.PI / 2 - 1;
 
 /**
  * A light's disk and reach as its bins and tiles are filed for: `[x, y, radius, reach, bucketWidth]`.
- * An array, not arguments: a double passed to a call V8 does not inline is boxed, every light and frame.
+ * An array, not arguments (see Hot-path rules in docs/architecture.md).
  */
 export type FiledDisk = Float64Array;
 
@@ -132,9 +132,7 @@ export class ShadowBins {
     let bucket = 0, firstBin = 0, binCount = BIN_COUNT;
     if (nearest > radius) {
       bucket = Math.min(DISTANCE_BUCKETS - 1, Math.floor(nearest / this.bucketWidth));
-      // No helper calls here, only arithmetic: V8 boxes the doubles passed to (and returned by) a
-      // call it does not inline, which it stops doing once a function's inlining budget is spent;
-      // this runs for every light and hull.
+      // No helper calls here, only arithmetic (see Hot-path rules in docs/architecture.md).
       // asin(x) ≤ x + ASIN_CUBIC · x³ on [0, 1] (the series' coefficients are positive and sum to
       // π/2 at 1): within 0.6% below x = 0.3, no trigonometry per hull.
       const hullSine = Math.min(hullRadius / distance, 1), diskSine = Math.min(radius / nearest, 1);

@@ -310,7 +310,7 @@ function isOutlineEdge(a: number, b: number, count: number): boolean {
   return step === 1 || step === count - 1;
 }
 
-/** Whether the triangle of points a, b, c has negative area (a boolean: a double returned from a call V8 does not inline is boxed). */
+/** Whether the triangle of points a, b, c has negative area (a boolean, not the signed area: see Hot-path rules in docs/architecture.md). */
 function isClockwise(world: Float32Array, a: number, b: number, c: number): boolean {
   const ax = world[2 * a], ay = world[2 * a + 1];
   return (world[2 * b] - ax) * (world[2 * c + 1] - ay) - (world[2 * b + 1] - ay) * (world[2 * c] - ax) < 0;

@@ -74,7 +74,7 @@ function writeUpstreamBox(draw: LightDraw, box: Float64Array): Float64Array {
  * Sets a directional light's strips over the view quad of `draw`, with the first distance bucket
  * at the least coordinate along the travel of the view and of `hulls`, the box of the hulls searched
  * (a hull's circle may reach a little further: it goes in the first bucket). Doubles go through
- * objects, not arguments: V8 boxes a double passed to a function it does not inline.
+ * objects, not arguments (see Hot-path rules in docs/architecture.md).
  */
 function writeStrips(draw: LightDraw, light: DirectionalLight, hulls: Float64Array, strips: DirectionalStrips): void {
   const travelX = Math.cos(light.rotation), travelY = Math.sin(light.rotation), q = draw.quad;
@@ -93,7 +93,7 @@ function writeStrips(draw: LightDraw, light: DirectionalLight, hulls: Float64Arr
   strips.perpBase = perpMin;
   strips.width = Math.max(perpMax - perpMin, 1e-9) / BIN_COUNT;
   strips.alongEnd = alongMax;
-  // HullGrid.leastAlong inline: its arguments would be boxed.
+  // HullGrid.leastAlong written out (see Hot-path rules in docs/architecture.md).
   const hullsFrom = hulls[0] > hulls[2] ? Infinity
     : (travelX < 0 ? hulls[2] : hulls[0]) * travelX + (travelY < 0 ? hulls[3] : hulls[1]) * travelY;
   strips.alongBase = Math.min(alongMin, hullsFrom);
