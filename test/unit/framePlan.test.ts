@@ -92,10 +92,11 @@ function binEntries(framePlan: FramePlan, bin: number): number[][] {
 }
 
 /**
- * The bins' pseudo-angle of the direction (x, y), not zero, in [0, 4): where the ray meets the
- * diamond |x| + |y| = 1, as the distance walked along its sides counter-clockwise from (1, 0), one
- * per side (0 along +x, 1 along +y, 2 along −x, 3 along −y). The quarter comes from atan2, the
- * place along that quarter's side from the direction turned back into the first quarter.
+ * The bins' pseudo-angle of the direction (x, y), not zero, in [0, 4) (shadowLayout.ts defines it):
+ * where the ray meets the diamond |x| + |y| = 1, as the distance walked along its sides
+ * counter-clockwise from (1, 0), one per side (0 along +x, 1 along +y, 2 along −x, 3 along −y).
+ * Here the quarter comes from atan2, the place along that quarter's side from the direction turned
+ * back into the first quarter.
  */
 function diamondAngle(x: number, y: number): number {
   const quarter = Math.floor((((Math.atan2(y, x) / (Math.PI / 2)) % 4) + 4) % 4);
