@@ -1,32 +1,21 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
 import type { FrameStats } from './FrameStats';
-import { ContextLoss } from './frame/ContextLoss';
-import { CookieChecks } from './frame/CookieChecks';
-import { ResourceBuilder, textureUnits, type FrameResources } from './frame/FrameResources';
-import { HostFrame } from './frame/HostFrame';
+import { FramePipeline, type FrameLook } from './frame/FramePipeline';
 import { Sizing } from './frame/Sizing';
-import { checkSurfaces, chooseSurface } from './frame/surfaces';
+import { checkSurfaces } from './frame/surfaces';
 import { checkClassificationBudget, RENDERER_OPTION_KEYS, type PenumbraRendererOptions } from './options';
-import { FramePlan } from './shadow/FramePlan';
-import { ShadowGeometry } from './shadow/ShadowGeometry';
-import { TILE_CLASSES } from './shadow/shadowLayout';
 import { isWebGL2, notWebGL2Error, WEBGL2_CONTEXT_FIX } from './gl/capabilities';
-import { Dithering, MAX_BLUR_RADIUS, MIN_BLUR_RADIUS, ToneMapping } from './scene/look';
-import type { Surface } from './passes/LightPass';
 import { LightmapAttachments, SceneAttachments, type SurfaceTextures } from './passes/surfaceLayout';
+import { Dithering, MAX_BLUR_RADIUS, MIN_BLUR_RADIUS, ToneMapping } from './scene/look';
 import { Hull } from './scene/Hull';
 import {
   checkIlluminationQuery, ILLUMINATION_OPTION_KEYS, IlluminationQuery, IS_LIT_OPTION_KEYS, type Illumination, type IlluminationOptions,
 } from './scene/illumination';
-import { DirectionalLight } from './scene/DirectionalLight';
 import { Light, type LightOptions } from './scene/Light';
 import { TexturedLight } from './scene/TexturedLight';
 import {
   ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, assertOptions, frozenColor, type ColorLike,
 } from './util/validate';
-
-/** Clear value of the scene target. */
-const TRANSPARENT = new Float32Array(4);
 
 /**
  * Real-time 2D lights with soft shadows for an existing WebGL2 context.
@@ -69,36 +58,21 @@ export class PenumbraRenderer {
   /** Figures about the last frame. */
   readonly stats: FrameStats = { lights: 0, lightsDrawn: 0, lightsFiled: 0, hulls: 0, edges: 0, cpuTime: 0, tilesLit: 0, tilesDark: 0, tilesExact: 0, tilesLean: 0, tilesHeld: 0, tilesOutside: 0, lightsUnclassified: 0 };
 
-  private readonly gl: WebGL2RenderingContext;
   private readonly _lights: Light[] = [];
   private readonly _hulls: Hull[] = [];
-  private _ambient: readonly [number, number, number] = Object.freeze([0.2, 0.2, 0.2] as const);
-  private _exposure = 1;
-  private _toneMapping: ToneMapping = ToneMapping.None;
-  private _dithering: Dithering = Dithering.None;
-  private _lightmapBlur = 0;
+  /** The look the frames read; the accessors below check what is assigned. */
+  private readonly look: FrameLook = {
+    ambient: Object.freeze([0.2, 0.2, 0.2] as const), exposure: 1, toneMapping: ToneMapping.None, dithering: Dithering.None, lightmapBlur: 0,
+  };
   private readonly sizing: Sizing;
-  private readonly geometry = new ShadowGeometry();
-  private readonly plan = new FramePlan();
-  private readonly host: HostFrame;
-  private readonly builder: ResourceBuilder;
-  private readonly cookies: CookieChecks;
-  private readonly loss: ContextLoss;
-  /** Null while the context is lost and after dispose. */
-  private resources: FrameResources | null = null;
   private readonly _normals: boolean;
-  /** The surface the light and composite passes read this frame (with normals), refilled per frame rather than made. */
-  private readonly surface: Surface = { normals: null!, material: null!, flipY: false };
-  private disposed = false;
-  /** The host's surface textures during a `drawInPlace` or `renderLightmap` that was given some. */
-  private externalSurfaces: SurfaceTextures | null = null;
+  private readonly pipeline: FramePipeline;
   /** The CPU light query behind {@link PenumbraRenderer.illuminationAt}, made on first use. */
   private illumination: IlluminationQuery | null = null;
 
   constructor(gl: WebGL2RenderingContext, options: PenumbraRendererOptions = {}) {
     if (!isWebGL2(gl)) throw notWebGL2Error('PenumbraRenderer', gl, WEBGL2_CONTEXT_FIX);
     assertOptions('PenumbraRenderer', options, RENDERER_OPTION_KEYS);
-    this.gl = gl;
     this.debug = options.debug ?? false;
     this.measureCpuTime = options.measureCpuTime ?? false;
     this.onContextRestored = options.onContextRestored ?? null;
@@ -108,28 +82,11 @@ export class PenumbraRenderer {
     if (options.dithering !== undefined) this.dithering = options.dithering;
     if (options.lightmapBlur !== undefined) this.lightmapBlur = options.lightmapBlur;
     this.sizing = new Sizing(gl, options.width, options.height, options.lightmapScale ?? 1);
-    if (options.classificationBudget !== undefined) this.plan.classificationBudget = checkClassificationBudget(options.classificationBudget);
+    const classificationBudget = options.classificationBudget === undefined ? undefined : checkClassificationBudget(options.classificationBudget);
     this._normals = options.normals === undefined ? false : assertBoolean('PenumbraRenderer.normals', options.normals);
     if (options.viewProjection) this.viewProjection = options.viewProjection;
-    this.host = new HostFrame(gl, textureUnits(this._normals, this.sizing.edgeAware));
-    this.builder = new ResourceBuilder(gl, this.host, this.sizing, this._normals);
-    this.cookies = new CookieChecks(gl);
-    // Made in the loss window, it waits for the restored context to build its GL objects.
-    if (!gl.isContextLost()) this.createResources();
-    this.loss = new ContextLoss(gl, {
-      lost: () => {
-        this.host.open = false;
-        this.resources = null;
-      },
-      rebuild: () => {
-        this.sizing.adoptRestoredContext(gl);
-        this.cookies.forget();
-        this.createResources();
-      },
-      restored: () => {
-        this.onContextRestored?.(this);
-        this.cookies.warnOfOld(this._lights);
-      },
+    this.pipeline = new FramePipeline(gl, { lights: this._lights, hulls: this._hulls, look: this.look }, this.sizing, {
+      normals: this._normals, classificationBudget, stats: this.stats, onRestored: () => this.onContextRestored?.(this),
     });
   }
 
@@ -138,10 +95,10 @@ export class PenumbraRenderer {
    * vectors; assign any {@link ColorLike} form (`[r, g, b]`, `0x333344`, `'#334'`) to change it.
    */
   get ambientColor(): readonly [number, number, number] {
-    return this._ambient;
+    return this.look.ambient;
   }
   set ambientColor(value: ColorLike) {
-    this._ambient = frozenColor('PenumbraRenderer.ambientColor', value);
+    this.look.ambient = frozenColor('PenumbraRenderer.ambientColor', value);
   }
 
   /**
@@ -150,10 +107,10 @@ export class PenumbraRenderer {
    * to `lightmapTexture`.
    */
   get exposure(): number {
-    return this._exposure;
+    return this.look.exposure;
   }
   set exposure(value: number) {
-    this._exposure = assertNonNegative('PenumbraRenderer.exposure', value);
+    this.look.exposure = assertNonNegative('PenumbraRenderer.exposure', value);
   }
 
   /**
@@ -161,10 +118,10 @@ export class PenumbraRenderer {
    * `'none'` (clipped at 1, as before), `'reinhard'`, `'aces'`. Applies where the renderer composites.
    */
   get toneMapping(): ToneMapping {
-    return this._toneMapping;
+    return this.look.toneMapping;
   }
   set toneMapping(value: ToneMapping) {
-    this._toneMapping = assertOneOf('PenumbraRenderer.toneMapping', value, Object.values(ToneMapping));
+    this.look.toneMapping = assertOneOf('PenumbraRenderer.toneMapping', value, Object.values(ToneMapping));
   }
 
   /**
@@ -173,10 +130,10 @@ export class PenumbraRenderer {
    * one step and removes the bands of dark gradients; meant for 8-bit targets.
    */
   get dithering(): Dithering {
-    return this._dithering;
+    return this.look.dithering;
   }
   set dithering(value: Dithering) {
-    this._dithering = assertOneOf('PenumbraRenderer.dithering', value, Object.values(Dithering));
+    this.look.dithering = assertOneOf('PenumbraRenderer.dithering', value, Object.values(Dithering));
   }
 
   /**
@@ -188,12 +145,12 @@ export class PenumbraRenderer {
    * weights are below the smallest float) and is off: it reads back as 0.
    */
   get lightmapBlur(): number {
-    return this._lightmapBlur;
+    return this.look.lightmapBlur;
   }
   set lightmapBlur(value: number) {
     assertNonNegative('PenumbraRenderer.lightmapBlur', value);
     if (value > MAX_BLUR_RADIUS) throw new RangeError(`PenumbraRenderer.lightmapBlur must be at most ${MAX_BLUR_RADIUS}, got ${value}`);
-    this._lightmapBlur = value < MIN_BLUR_RADIUS ? 0 : value;
+    this.look.lightmapBlur = value < MIN_BLUR_RADIUS ? 0 : value;
   }
 
   /**
@@ -218,11 +175,11 @@ export class PenumbraRenderer {
 
   /** The lightmap texture (RGBA16F, or RGBA8 without EXT_color_buffer_float; `lightmapScale` × the renderer size), for hosts that composite themselves. */
   get lightmapTexture(): WebGLTexture {
-    return this.requireResources().light.lightmap.texture;
+    return this.pipeline.requireResources().light.lightmap.texture;
   }
   /** The texture `beginDraw()` redirects drawing into. */
   get sceneTexture(): WebGLTexture {
-    return this.requireResources().scene.texture;
+    return this.pipeline.requireResources().scene.texture;
   }
   /** Whether the renderer lights through normals (the `normals` option; docs/normal-maps.md). */
   get normals(): boolean {
@@ -234,11 +191,11 @@ export class PenumbraRenderer {
    * @throws Error when the renderer has no normals.
    */
   get normalTexture(): WebGLTexture {
-    return this.requireResources().scene.textures[this.requireNormals('normalTexture', SceneAttachments.normal)];
+    return this.pipeline.requireResources().scene.textures[this.requireNormals('normalTexture', SceneAttachments.normal)];
   }
   /** With `normals`, the scene target's material attachment (location 2). @throws Error when the renderer has no normals. */
   get materialTexture(): WebGLTexture {
-    return this.requireResources().scene.textures[this.requireNormals('materialTexture', SceneAttachments.material)];
+    return this.pipeline.requireResources().scene.textures[this.requireNormals('materialTexture', SceneAttachments.material)];
   }
   /**
    * With `normals`, the lights' highlights (the lightmap's second attachment, the lightmap's size
@@ -246,7 +203,7 @@ export class PenumbraRenderer {
    * @throws Error when the renderer has no normals.
    */
   get specularTexture(): WebGLTexture {
-    return this.requireResources().light.lightmap.textures[this.requireNormals('specularTexture', LightmapAttachments.specular)];
+    return this.pipeline.requireResources().light.lightmap.textures[this.requireNormals('specularTexture', LightmapAttachments.specular)];
   }
 
   /** `attachment` when the renderer has normals; else throws naming `property`. */
@@ -257,7 +214,7 @@ export class PenumbraRenderer {
 
   /** Whether the lightmap is a half-float target (overlapping lights can exceed 1). */
   get hasFloatLightmap(): boolean {
-    return this.builder.lightmapFormat === 'rgba16f';
+    return this.pipeline.hasFloatLightmap;
   }
 
   /**
@@ -271,8 +228,8 @@ export class PenumbraRenderer {
    */
   addLight<T extends Light>(light: T): T {
     if (!(light instanceof Light)) throw new TypeError(`penumbra: addLight expects a Light, got ${String(light)}`);
-    this.refuseIfDisposed('addLight');
-    if (light instanceof TexturedLight && !this.loss.isLost) this.cookies.check(light, 'PenumbraRenderer.addLight: the TexturedLight\'s texture');
+    this.pipeline.refuseIfDisposed('addLight');
+    if (light instanceof TexturedLight) this.pipeline.checkCookie(light, 'PenumbraRenderer.addLight: the TexturedLight\'s texture');
     if (!this._lights.includes(light)) this._lights.push(light);
     return light;
   }
@@ -286,12 +243,9 @@ export class PenumbraRenderer {
    */
   addHull(hull: Hull): Hull {
     if (!(hull instanceof Hull)) throw new TypeError(`penumbra: addHull expects a Hull, got ${String(hull)}`);
-    this.refuseIfDisposed('addHull');
+    this.pipeline.refuseIfDisposed('addHull');
     if (!this._hulls.includes(hull)) this._hulls.push(hull);
     return hull;
-  }
-  private refuseIfDisposed(method: string): void {
-    if (this.disposed) throw new Error(`penumbra: PenumbraRenderer.${method}: the renderer was disposed; make a new one`);
   }
 
   /** Removes a hull; its shadow is gone from the next frame. Returns whether it was there. */
@@ -344,7 +298,7 @@ export class PenumbraRenderer {
     assertFinite('PenumbraRenderer.illuminationAt x', x);
     assertFinite('PenumbraRenderer.illuminationAt y', y);
     checkIlluminationQuery('PenumbraRenderer.illuminationAt', options, ILLUMINATION_OPTION_KEYS, out);
-    return (this.illumination ??= new IlluminationQuery()).at(this._lights, this._hulls, this._ambient, x, y, options, out);
+    return (this.illumination ??= new IlluminationQuery()).at(this._lights, this._hulls, this.look.ambient, x, y, options, out);
   }
 
   /**
@@ -377,18 +331,7 @@ export class PenumbraRenderer {
    * previous size and keeps working.
    */
   resize(width: number, height: number): void {
-    const sizing = this.sizing;
-    sizing.checkSize('PenumbraRenderer.resize width', width);
-    sizing.checkSize('PenumbraRenderer.resize height', height);
-    if (width === sizing.width && height === sizing.height) return;
-    const previousWidth = sizing.width, previousHeight = sizing.height;
-    sizing.setSize(width, height);
-    if (this.isUnavailable()) return;
-    const failure = this.builder.resize(this.requireResources());
-    if (failure === null) return;
-    sizing.setSize(previousWidth, previousHeight);
-    this.builder.resize(this.requireResources());
-    throw new RangeError(`PenumbraRenderer.resize(${width}, ${height}) failed: ${failure}; the renderer keeps its size ${previousWidth}×${previousHeight}`);
+    this.pipeline.resize(width, height);
   }
 
   /**
@@ -410,7 +353,7 @@ export class PenumbraRenderer {
    *   texture of this context (see {@link PenumbraRenderer.addLight}).
    */
   beginDraw(): void {
-    this.openFrame(false);
+    this.pipeline.openFrame(false);
   }
 
   /**
@@ -429,73 +372,10 @@ export class PenumbraRenderer {
     try {
       assertLayerMask('PenumbraRenderer.draw: layers', layers);
     } catch (error) {
-      if (this.host.open && !this.isUnavailable()) this.host.close();
+      this.pipeline.closeOpenFrame();
       throw error;
     }
-    this.endFrame(layers | 0);
-  }
-
-  /**
-   * Opens a frame (see {@link PenumbraRenderer.beginDraw}); for `drawInPlace` (`inPlace`), after
-   * checking that the bound framebuffer's viewport can be copied. Every check runs before the
-   * scene target is bound. Returns whether a frame was opened (none while unavailable).
-   */
-  private openFrame(inPlace: boolean): boolean {
-    if (this.isUnavailable()) return false;
-    const host = this.host;
-    if (host.open) host.abandon(this.requireResources().scene.framebuffer);
-    this.cookies.checkAll(this._lights);
-    const gl = this.gl;
-    const scene = this.requireResources().scene;
-    host.enter();
-    try {
-      host.record(inPlace, this.sizing.width, this.sizing.height);
-      scene.bind();
-      gl.depthMask(true);
-      gl.stencilMask(0xff);
-      // clearBuffer* leaves the clear values alone, so the host's need not be saved.
-      gl.clearBufferfv(gl.COLOR, SceneAttachments.color, TRANSPARENT);
-      if (this._normals) {
-        gl.clearBufferfv(gl.COLOR, SceneAttachments.normal, TRANSPARENT);
-        gl.clearBufferfv(gl.COLOR, SceneAttachments.material, TRANSPARENT);
-      }
-      gl.clearBufferfi(gl.DEPTH_STENCIL, 0, 1, 0);
-    } finally {
-      host.state.restore();
-    }
-    scene.bind();
-    host.open = true;
-    return true;
-  }
-
-  /** What {@link PenumbraRenderer.draw} does, with the layers as an int32 (see `renderLightmapInto`). */
-  private endFrame(layers: number): void {
-    if (this.isUnavailable()) return;
-    const host = this.host;
-    if (!host.open) throw new Error('penumbra: draw() called without beginDraw()');
-    try {
-      this.cookies.checkAll(this._lights);
-      const resources = this.requireResources();
-      const viewProjection = this.sizing.viewProjection;
-      host.enter();
-      try {
-        this.renderLightmapInto(resources, layers);
-        resources.hullMask?.render(resources.shadows.records, this.geometry.recordCount, this.geometry.recordsVersion, viewProjection);
-        host.beginComposite();
-        try {
-          resources.composite.render(resources.scene.texture, resources.light.lightmap.textures, this, this.surface, resources.hullMask);
-          if (this.debug) {
-            resources.debug.render(this.plan.draws, this.plan.drawCount, resources.shadows.records, this.geometry.recordCount, viewProjection);
-          }
-        } finally {
-          host.endComposite();
-        }
-      } finally {
-        host.state.restore();
-      }
-    } finally {
-      host.close();
-    }
+    this.pipeline.endFrame(layers | 0, null, this.debug, this.measureCpuTime);
   }
 
   /**
@@ -520,15 +400,7 @@ export class PenumbraRenderer {
   drawInPlace(layers = ALL_LAYERS, surfaces?: SurfaceTextures): void {
     assertLayerMask('PenumbraRenderer.drawInPlace: layers', layers);
     checkSurfaces('drawInPlace', this._normals, surfaces);
-    if (!this.openFrame(true)) return;
-    try {
-      this.host.copyInto(this.requireResources().scene, this.sizing.width, this.sizing.height);
-      this.externalSurfaces = surfaces ?? null;
-      this.endFrame(layers | 0);
-    } finally {
-      this.externalSurfaces = null;
-      if (this.host.open) this.host.close();
-    }
+    this.pipeline.drawInPlace(layers | 0, surfaces ?? null, this.debug, this.measureCpuTime);
   }
 
   /**
@@ -542,17 +414,7 @@ export class PenumbraRenderer {
   renderLightmap(layers = ALL_LAYERS, surfaces?: SurfaceTextures): void {
     assertLayerMask('PenumbraRenderer.renderLightmap: layers', layers);
     checkSurfaces('renderLightmap', this._normals, surfaces);
-    if (this.isUnavailable()) return;
-    this.cookies.checkAll(this._lights);
-    const resources = this.requireResources();
-    this.externalSurfaces = surfaces ?? null;
-    this.host.enter();
-    try {
-      this.renderLightmapInto(resources, layers | 0);
-    } finally {
-      this.host.state.restore();
-      this.externalSurfaces = null;
-    }
+    this.pipeline.renderLightmap(layers | 0, surfaces ?? null, this.measureCpuTime);
   }
 
   /**
@@ -561,75 +423,9 @@ export class PenumbraRenderer {
    * frame calls do nothing, and `addLight` and `addHull` throw.
    */
   dispose(): void {
-    if (this.disposed) return;
-    if (this.host.open && !this.loss.isLost) this.host.close();
-    this.disposed = true;
-    this.loss.dispose();
-    if (this.resources && !this.loss.isLost) this.builder.destroy(this.resources);
-    this.resources = null;
+    this.pipeline.dispose();
     this._lights.length = 0;
     this._hulls.length = 0;
-  }
-
-  /**
-   * Builds the lightmap from the lights whose `litLayers` share a bit with `layers`, an int32 (`| 0`
-   * of the mask): 0xffffffff itself is a double, which V8 boxes on the heap when it passes one.
-   */
-  private renderLightmapInto(resources: FrameResources, layers: number): void {
-    const start = this.measureCpuTime ? performance.now() : 0;
-    const plan = this.plan, sizing = this.sizing;
-    const viewProjection = sizing.viewProjection;
-    this.geometry.update(this._hulls);
-    plan.build(this._lights, this._hulls, this.geometry, viewProjection, sizing.lightmapWidth, sizing.lightmapHeight);
-    resources.shadows.upload(this.geometry, plan.bins);
-    resources.shapes.uploadTileRectangles(plan.tiles.dirtyRows, plan.tiles.rectangles, plan.tiles.usedIndices);
-    if (this._normals) chooseSurface(this.surface, resources.scene, this.externalSurfaces);
-    resources.light.begin(this._ambient, viewProjection, this.surface);
-    for (let i = 0; i < plan.drawCount; i++) {
-      if ((plan.draws[i].light.litLayers & layers) !== 0) resources.light.render(plan.draws[i]);
-    }
-    if (this._lightmapBlur > 0) resources.blur.render(resources.light.lightmap, this._lightmapBlur * sizing.lightmapScale);
-    this.updateStats(this.measureCpuTime ? performance.now() - start : 0);
-  }
-
-  private updateStats(cpuTime: number): void {
-    const stats = this.stats;
-    stats.lights = this._lights.length;
-    stats.lightsDrawn = this.plan.drawCount;
-    stats.lightsFiled = this.plan.filedCount;
-    stats.hulls = this._hulls.length;
-    stats.edges = this.geometry.validEdgeCount;
-    stats.cpuTime = cpuTime;
-    stats.tilesLit = stats.tilesDark = stats.tilesExact = stats.tilesLean = stats.tilesHeld = stats.tilesOutside = 0;
-    stats.lightsUnclassified = this.plan.unclassifiedCount;
-    for (let i = 0; i < this.plan.drawCount; i++) {
-      const draw = this.plan.draws[i];
-      if (draw.hullCount === 0 || draw.light instanceof DirectionalLight) continue;
-      const counts = draw.tileCounts;
-      stats.tilesLit += counts[TILE_CLASSES.lit];
-      stats.tilesDark += counts[TILE_CLASSES.dark];
-      stats.tilesExact += counts[TILE_CLASSES.lean] + counts[TILE_CLASSES.exact] + counts[TILE_CLASSES.held];
-      stats.tilesLean += counts[TILE_CLASSES.lean];
-      stats.tilesHeld += counts[TILE_CLASSES.held];
-      stats.tilesOutside += counts[TILE_CLASSES.outside];
-    }
-  }
-
-  /** Whether GL calls must be skipped: disposed, or the context lost (see {@link ContextLoss.isLost}). */
-  private isUnavailable(): boolean {
-    return this.disposed || this.loss.isLost;
-  }
-
-  private requireResources(): FrameResources {
-    if (this.disposed) throw new Error('penumbra: the renderer was disposed');
-    if (!this.resources) throw new Error('penumbra: the WebGL context is lost; the renderer resumes when it is restored');
-    return this.resources;
-  }
-
-  /** Builds the GL objects (see {@link ResourceBuilder.build}). */
-  private createResources(): void {
-    this.resources = this.builder.build();
-    this.geometry.invalidate();
   }
 }
 
@@ -639,4 +435,3 @@ function removeFrom<T>(list: T[], item: T): boolean {
   list.splice(index, 1);
   return true;
 }
-
