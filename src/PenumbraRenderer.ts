@@ -11,7 +11,7 @@ import { Hull } from './scene/Hull';
 import {
   checkIlluminationQuery, ILLUMINATION_OPTION_KEYS, IlluminationQuery, IS_LIT_OPTION_KEYS, type Illumination, type IlluminationOptions,
 } from './scene/illumination';
-import { Light, type LightOptions } from './scene/Light';
+import { Light } from './scene/Light';
 import { TexturedLight } from './scene/TexturedLight';
 import {
   ALL_LAYERS, assertBoolean, assertFinite, assertLayerMask, assertNonNegative, assertOneOf, assertOptions, frozenColor, type ColorLike,

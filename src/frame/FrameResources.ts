@@ -87,8 +87,9 @@ export class ResourceBuilder {
 
   /** Frees every GL object of `resources`. */
   destroy(resources: FrameResources): void {
+    const parts: Record<keyof FrameResources, { dispose(): void } | null> = resources;
     this.host.run(() => {
-      for (const resource of Object.values(resources)) resource?.dispose();
+      for (const part of Object.values(parts)) part?.dispose();
     });
   }
 

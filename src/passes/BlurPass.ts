@@ -31,7 +31,7 @@ export class BlurPass {
     const gl = this.gl;
     const taps = Math.min(MAX_BLUR_RADIUS, Math.ceil(radius));
     const program = (this.program ??= createProgram(gl, 'lightmap blur', shaderSources.fullscreenVertex, shaderSources.blurFragment));
-    this.emptyVertexArray ??= gl.createVertexArray()!;
+    this.emptyVertexArray ??= gl.createVertexArray();
     this.scratch ??= new RenderTarget(gl, { format: this.format }, lightmap.width, lightmap.height);
     this.scratch.resize(lightmap.width, lightmap.height);
     this.updateWeights(radius);
