@@ -53,7 +53,7 @@ uniform highp sampler2D u_bins;
 uniform vec4 u_shadow; // position xy, disk radius, row of the light's shadow bins
 uniform float u_shadowType; // how the light treats the inside of hulls: SHADOW_SOLID, … (src/shadow/shadowLayout.ts)
 // A light's bins were filed for a disk of radius u_binning.z ≥ r around u_binning.xy, which holds
-// the light's disk (a moving light keeps its filing while its disk stays inside, see FramePlan): bins
+// the light's disk (a moving light keeps its filing while its disk stays inside, see ShadowCache): bins
 // and distance buckets (u_binning.w wide) are taken from that centre, the shadows from the light's
 // own disk.
 uniform vec4 u_binning;

@@ -7,7 +7,7 @@ import { DirectionalLight } from '../scene/DirectionalLight';
 import type { Light } from '../scene/Light';
 import type { TexturedLight } from '../scene/TexturedLight';
 import type { Dithering, ToneMapping } from '../scene/look';
-import { FramePlan } from '../shadow/FramePlan';
+import { ShadowCache } from '../shadow/ShadowCache';
 import { ShadowGeometry } from '../shadow/ShadowGeometry';
 import { TILE_CLASSES } from '../shadow/shadowLayout';
 import { ContextLoss } from './ContextLoss';
@@ -38,7 +38,7 @@ export interface FrameScene {
 export interface PipelineSettings {
   /** Whether the renderer lights through normals. */
   readonly normals: boolean;
-  /** See `PenumbraRendererOptions.classificationBudget`; the plan's default when undefined. */
+  /** See `PenumbraRendererOptions.classificationBudget`; the shadow cache's default when undefined. */
   readonly classificationBudget: number | undefined;
   /** Where each lightmap's figures go. */
   readonly stats: FrameStats;
@@ -52,7 +52,7 @@ const TRANSPARENT = new Float32Array(4);
 /**
  * The renderer's frames: owns the GL objects through context loss and restore and resizes them,
  * opens the host's frame and closes it (also when something throws), and runs the passes in order,
- * the host's state saved around each call: the frame plan (which lights, which hulls shadow each),
+ * the host's state saved around each call: the shadow cache (which lights, which hulls shadow each),
  * the shadow uploads, the light pass, the blur, then for a composited frame the hull masks, the
  * composite into the host's framebuffer and the debug wireframes. Every frame call does nothing
  * while the context is lost or after {@link FramePipeline.dispose}.
@@ -65,7 +65,7 @@ export class FramePipeline {
   private readonly cookies: CookieChecks;
   private readonly loss: ContextLoss;
   private readonly geometry = new ShadowGeometry();
-  private readonly plan = new FramePlan();
+  private readonly shadowCache = new ShadowCache();
   /** The surface the light and composite passes read this frame (with normals), refilled per frame rather than made. */
   private readonly surface: Surface = { normals: null!, material: null!, flipY: false };
   /** Null while the context is lost and after dispose. */
@@ -76,7 +76,7 @@ export class FramePipeline {
   constructor(private readonly gl: WebGL2RenderingContext, private readonly scene: FrameScene, private readonly sizing: Sizing, settings: PipelineSettings) {
     this.normals = settings.normals;
     this.stats = settings.stats;
-    if (settings.classificationBudget !== undefined) this.plan.classificationBudget = settings.classificationBudget;
+    if (settings.classificationBudget !== undefined) this.shadowCache.classificationBudget = settings.classificationBudget;
     this.host = new HostFrame(gl, textureUnits(this.normals, sizing.edgeAware));
     this.builder = new ResourceBuilder(gl, this.host, sizing, this.normals);
     this.cookies = new CookieChecks(gl);
@@ -258,15 +258,15 @@ export class FramePipeline {
    */
   private renderLightmapInto(resources: FrameResources, layers: number, surfaces: SurfaceTextures | null, measureCpuTime: boolean): void {
     const start = measureCpuTime ? performance.now() : 0;
-    const plan = this.plan, geometry = this.geometry, sizing = this.sizing, scene = this.scene;
+    const cache = this.shadowCache, geometry = this.geometry, sizing = this.sizing, scene = this.scene;
     geometry.update(scene.hulls);
-    plan.build(scene.lights, scene.hulls, geometry, sizing.viewProjection, sizing.lightmapWidth, sizing.lightmapHeight);
-    resources.shadows.upload(geometry, plan.bins);
-    resources.shapes.uploadTileRectangles(plan.tiles.dirtyRows, plan.tiles.rectangles, plan.tiles.usedIndices);
+    cache.build(scene.lights, scene.hulls, geometry, sizing.viewProjection, sizing.lightmapWidth, sizing.lightmapHeight);
+    resources.shadows.upload(geometry, cache.bins);
+    resources.shapes.uploadTileRectangles(cache.tiles.dirtyRows, cache.tiles.rectangles, cache.tiles.usedIndices);
     if (this.normals) chooseSurface(this.surface, resources.scene, surfaces);
     resources.light.begin(scene.look.ambient, sizing.viewProjection, this.surface);
-    for (let i = 0; i < plan.drawCount; i++) {
-      if ((plan.draws[i].light.litLayers & layers) !== 0) resources.light.render(plan.draws[i]);
+    for (let i = 0; i < cache.drawCount; i++) {
+      if ((cache.draws[i].light.litLayers & layers) !== 0) resources.light.render(cache.draws[i]);
     }
     const blur = scene.look.lightmapBlur;
     if (blur > 0) resources.blur.render(resources.light.lightmap, blur * sizing.lightmapScale);
@@ -280,24 +280,24 @@ export class FramePipeline {
     this.host.beginComposite();
     try {
       resources.composite.render(resources.scene.texture, resources.light.lightmap.textures, this.scene.look, this.surface, resources.hullMask);
-      if (debug) resources.debug.render(this.plan.draws, this.plan.drawCount, records, recordCount, viewProjection);
+      if (debug) resources.debug.render(this.shadowCache.draws, this.shadowCache.drawCount, records, recordCount, viewProjection);
     } finally {
       this.host.endComposite();
     }
   }
 
   private updateStats(cpuTime: number): void {
-    const stats = this.stats, plan = this.plan;
+    const stats = this.stats, cache = this.shadowCache;
     stats.lights = this.scene.lights.length;
-    stats.lightsDrawn = plan.drawCount;
-    stats.lightsFiled = plan.filedCount;
+    stats.lightsDrawn = cache.drawCount;
+    stats.lightsFiled = cache.filedCount;
     stats.hulls = this.scene.hulls.length;
     stats.edges = this.geometry.validEdgeCount;
     stats.cpuTime = cpuTime;
     stats.tilesLit = stats.tilesDark = stats.tilesExact = stats.tilesLean = stats.tilesHeld = stats.tilesOutside = 0;
-    stats.lightsUnclassified = plan.unclassifiedCount;
-    for (let i = 0; i < plan.drawCount; i++) {
-      const draw = plan.draws[i];
+    stats.lightsUnclassified = cache.unclassifiedCount;
+    for (let i = 0; i < cache.drawCount; i++) {
+      const draw = cache.draws[i];
       if (draw.hullCount === 0 || draw.light instanceof DirectionalLight) continue;
       const counts = draw.tileCounts;
       stats.tilesLit += counts[TILE_CLASSES.lit];

@@ -1,5 +1,5 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
-import type { LightDraw } from '../shadow/FramePlan';
+import type { LightDraw } from '../shadow/ShadowCache';
 import { RECORD_POINTS } from '../shadow/shadowLayout';
 import { createPrograms, deletePrograms, type Program } from '../gl/program';
 import type { LightShapes } from './LightShapes';

@@ -1,5 +1,5 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
-import type { LightDraw } from '../shadow/FramePlan';
+import type { LightDraw } from '../shadow/ShadowCache';
 import { createPrograms, deletePrograms, type Program, type ProgramSources } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import type { LightShapes } from './LightShapes';

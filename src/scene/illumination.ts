@@ -530,7 +530,7 @@ export class IlluminationQuery {
     this.flags[index] = (hull.closed ? CLOSED : 0) | (hull.convex ? CONVEX : 0);
   }
 
-  /** The light's bounds as the renderer's frame plan has them: its quad and its centre. */
+  /** The light's bounds as the renderer's shadow cache has them: its quad and its centre. */
   private writeLightBounds(light: Light): void {
     const q = this.quad, b = this.lightBounds;
     light.writeQuad(q);

@@ -12,7 +12,7 @@ const NEVER = -(2 ** 30);
 
 /**
  * Which hulls move and which stand still, frame to frame (see {@link MOVING_FRAMES}): the two
- * kinds of shadow caster the plan's two hull grids file, and the boxes of the hulls that started or
+ * kinds of shadow caster the shadow cache's two hull grids file, and the boxes of the hulls that started or
  * stopped moving this frame, which end the filings they overlap.
  */
 export class HullMotion {

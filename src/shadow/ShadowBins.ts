@@ -333,7 +333,7 @@ export interface BinSpan {
 }
 
 /**
- * The strips of a directional light over the view, set by the frame plan (see
+ * The strips of a directional light over the view, set by the shadow cache (see
  * {@link ShadowBins.beginDirectional}); `alongBase`, `perpBase`, `width` and `bucketWidth` reach the
  * shader as a uniform.
  */

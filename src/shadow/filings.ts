@@ -100,7 +100,7 @@ function byFirstEntry(a: BinSpan, b: BinSpan): number {
 }
 
 /**
- * A light's filing as of the frame it was made (see `FramePlan`): what it depends on, and what
+ * A light's filing as of the frame it was made (see `ShadowCache`): what it depends on, and what
  * it gave: the still hulls' count, its row of bins and the spans of
  * its two lists' entries.
  *
@@ -121,7 +121,7 @@ export class LightFiling {
   current = false;
   /** Hulls in the still hulls' list, and in the moving list as last written ({@link UNWRITTEN}: not known). */
   hullCount = 0;
-  /** The still hulls' records, and whether they were left unclassified (the budget spent, see `FramePlan.classificationBudget`). */
+  /** The still hulls' records, and whether they were left unclassified (the budget spent, see `ShadowCache.classificationBudget`). */
   stillRecords = 0;
   unclassified = false;
   movingCount = UNWRITTEN;
@@ -141,7 +141,7 @@ export class LightFiling {
   readonly filedBounds = new Float64Array(4);
   /** Whether a hull near the light changed while the last filing held (it ended it, or would have). */
   private endedByHulls = false;
-  /** The frame the filing was last recorded (0: never): the plan files it in that frame. */
+  /** The frame the filing was last recorded (0: never): the shadow cache files it in that frame. */
   filedFrame = 0;
   private castsShadows = false;
   private shadowLayers = 0;

@@ -6,7 +6,7 @@ import { DirectionalStrips } from './ShadowBins';
 import { TILE_CLASS_COUNT } from './shadowLayout';
 
 /**
- * What the passes need to draw one light, as the plan leaves it: its quad, the hulls that shadow
+ * What the passes need to draw one light, as the shadow cache leaves it: its quad, the hulls that shadow
  * it, its row of shadow bins and how they were filed, and its tiles of each class.
  */
 export class LightDraw {
@@ -19,7 +19,7 @@ export class LightDraw {
   reach = 0;
   /** Number of hulls in range that shadow this light (in both its lists). */
   hullCount = 0;
-  /** The light's row in the plan's `bins` and its `tiles`, when `hullCount > 0`. */
+  /** The light's row in the shadow cache's `bins` and its `tiles`, when `hullCount > 0`. */
   binRow = 0;
   /**
    * How a light with a centre was filed, when `hullCount > 0` (the shader's `u_binning`): the bins'
@@ -33,11 +33,11 @@ export class LightDraw {
   readonly tileFrame = new Float32Array(4);
   /** A shadowed point light's tiles of each class (indexed by TILE_CLASSES), when `hullCount > 0`. */
   readonly tileCounts = new Int32Array(TILE_CLASS_COUNT);
-  /** Per class of its tiles, where its rectangles' indices start in the plan's `tiles.rectangles` and how many (`LightTiles.writeLists`), when `hullCount > 0`. */
+  /** Per class of its tiles, where its rectangles' indices start in the shadow cache's `tiles.rectangles` and how many (`LightTiles.writeLists`), when `hullCount > 0`. */
   readonly tileLists = new Int32Array(2 * TILE_CLASS_COUNT);
   /** A directional light's strips over the view (its bins). */
   readonly strips = new DirectionalStrips();
-  /** The light's filing, kept from frame to frame: the plan's own. */
+  /** The light's filing, kept from frame to frame: the shadow cache's own. */
   filing!: LightFiling;
 }
 

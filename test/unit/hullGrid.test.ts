@@ -14,7 +14,7 @@ function square(x: number, y: number, size: number): Hull {
   return hull;
 }
 
-/** Builds `grid` over the coarse bounds of the enabled, valid hulls, as the frame plan does. */
+/** Builds `grid` over the coarse bounds of the enabled, valid hulls, as the shadow cache does. */
 function build(grid: HullGrid, hulls: readonly Hull[], clip = [-Infinity, -Infinity, Infinity, Infinity]): void {
   const bounds = new Float64Array(4 * hulls.length);
   hulls.forEach((hull, i) => bounds.set(hull.coarseBounds, 4 * i));

@@ -1,6 +1,6 @@
 import { mat4 } from 'gl-matrix';
 import { describe, expect, it, vi } from 'vitest';
-import { FramePlan } from '../../src/shadow/FramePlan';
+import { ShadowCache } from '../../src/shadow/ShadowCache';
 import { ShadowGeometry } from '../../src/shadow/ShadowGeometry';
 import { RECORD_FLOATS, RECORDS_PER_ROW } from '../../src/shadow/shadowLayout';
 import { Hull, PointLight, type Light } from '../../src/index';
@@ -9,7 +9,7 @@ const WIDTH = 400, HEIGHT = 200;
 const pixelSpace = mat4.ortho(mat4.create(), 0, WIDTH, HEIGHT, 0, -1, 1);
 
 /** A renderer's per-frame CPU work: geometry update, then the plan. */
-function frame(geometry: ShadowGeometry, plan: FramePlan, lights: Light[], hulls: Hull[]): void {
+function frame(geometry: ShadowGeometry, plan: ShadowCache, lights: Light[], hulls: Hull[]): void {
   geometry.update(hulls);
   plan.build(lights, hulls, geometry, pixelSpace, WIDTH, HEIGHT);
 }
@@ -34,7 +34,7 @@ describe('Lazy hull geometry', () => {
     const light = new PointLight({ position: [50, 100], range: 40 });
     const near = square(60, 100), far = square(350, 100);
     const hulls = [near, far];
-    const geometry = new ShadowGeometry(), plan = new FramePlan();
+    const geometry = new ShadowGeometry(), plan = new ShadowCache();
     const transform = vi.spyOn(far, 'updateWorld');
     for (let f = 0; f < 3; f++) {
       far.setPosition(350, 100 + f);
@@ -53,7 +53,7 @@ describe('Lazy hull geometry', () => {
     // Enough hulls to fill several rows; the light reaches only the first.
     const hulls = Array.from({ length: 3 * RECORDS_PER_ROW }, (_, i) => square(i === 0 ? 60 : 10_000 + i * 20, 100));
     const light = new PointLight({ position: [50, 100], range: 40 });
-    const geometry = new ShadowGeometry(), plan = new FramePlan();
+    const geometry = new ShadowGeometry(), plan = new ShadowCache();
     frame(geometry, plan, [light], hulls);
     expect(Array.from(geometry.dirtyRows)).toEqual([1, 0, 0]);
     frame(geometry, plan, [light], hulls);
@@ -68,7 +68,7 @@ describe('Lazy hull geometry', () => {
     const inside = new PointLight({ position: [300, 100], range: 40 });
     const outside = new PointLight({ position: [50, 100], range: 40 });
     const hulls = [housing];
-    const geometry = new ShadowGeometry(), plan = new FramePlan();
+    const geometry = new ShadowGeometry(), plan = new ShadowCache();
     frame(geometry, plan, [inside, outside], hulls);
     expect(plan.draws.slice(0, plan.drawCount).map((d) => [d.light, d.hullCount])).toEqual([[inside, 1], [outside, 0]]);
     // The hull moves out from over the first light into the other light's range.

@@ -1,6 +1,6 @@
 import { mat4 } from 'gl-matrix';
 import { describe, expect, it } from 'vitest';
-import { FramePlan } from '../../src/shadow/FramePlan';
+import { ShadowCache } from '../../src/shadow/ShadowCache';
 import { ShadowGeometry } from '../../src/shadow/ShadowGeometry';
 import { RECORD_FLOATS, RECORD_POINTS } from '../../src/shadow/shadowLayout';
 import { Hull, PointLight } from '../../src/index';
@@ -92,7 +92,7 @@ describe('open hulls (polylines)', () => {
     const projection = mat4.ortho(mat4.create(), 0, 200, 200, 0, -1, 1);
     const light = new PointLight({ position: [100, 100], range: 50, radius: 5 });
     const drawn = (hull: Hull) => {
-      const geometry = new ShadowGeometry(), plan = new FramePlan();
+      const geometry = new ShadowGeometry(), plan = new ShadowCache();
       geometry.update([hull]);
       plan.build([light], [hull], geometry, projection, 200, 200);
       return plan.draws.slice(0, plan.drawCount).map((draw) => draw.hullCount);

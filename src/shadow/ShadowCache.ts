@@ -17,7 +17,9 @@ import type { ShadowGeometry } from './ShadowGeometry';
 export { LightDraw } from './lightPlacement';
 
 /**
- * Decides each frame which lights are drawn and, per light, which hulls shadow it: a light is
+ * The shadow state kept from frame to frame (each light's filing, tile classes and bins, the hulls'
+ * motion), brought up to date by {@link ShadowCache.build} once per frame, which redoes only what
+ * changed. It decides which lights are drawn and, per light, which hulls shadow it: a light is
  * skipped when disabled, black or off screen. A light whose centre is inside a hull is drawn like
  * any other: the part of its disk inside hulls is hidden from every pixel outside them, as the
  * exact program computes (a disk wholly inside one is dark outside it). The shadow bins of all
@@ -36,23 +38,23 @@ export { LightDraw } from './lightPlacement';
  * Directional lights are filed every frame, every hull in the first list: their strips follow the
  * view.
  */
-export class FramePlan {
+export class ShadowCache {
   /** The records in range of each shadowed light, filed into angular bins. */
   readonly bins = new ShadowBins();
   /**
-   * The most hull records the plan classifies into tiles per frame (see {@link LightTiles}): a light
+   * The most hull records the cache classifies into tiles per frame (see {@link LightTiles}): a light
    * whose still hulls do not fit what is left is drawn with every tile exact and classified in a later
    * frame; a classified light whose moving hulls do not fit has every lit tile exact for the frame.
    */
   classificationBudget = DEFAULT_CLASSIFICATION_BUDGET;
-  /** Shadowed point lights of the last {@link FramePlan.build} drawn unclassified, the budget spent. */
+  /** Shadowed point lights of the last {@link ShadowCache.build} drawn unclassified, the budget spent. */
   unclassifiedCount = 0;
   /** The tile classes of each shadowed light but the directional ones, in the rows of its bins. */
   readonly tiles = new LightTiles();
   /** The lights to draw, the first `drawCount` of them, in the lights' order. */
   readonly draws: LightDraw[] = [];
   drawCount = 0;
-  /** Lights filed anew by the last {@link FramePlan.build} (the others drawn kept their filing). */
+  /** Lights filed anew by the last {@link ShadowCache.build} (the others drawn kept their filing). */
   filedCount = 0;
   /** The still hulls, those that cast shadows and stood still for {@link MOVING_FRAMES} frames. */
   private readonly grid = new HullGrid();
@@ -131,7 +133,7 @@ export class FramePlan {
 
   /**
    * Gives each placed light its filing, marks the filings whose light or whose hulls changed (see
-   * {@link FramePlan}) as not current and records them anew (to be filed), and puts the bounds of
+   * {@link ShadowCache}) as not current and records them anew (to be filed), and puts the bounds of
    * the lights to be filed (and of those left unclassified) together in `reach`, and those of every
    * placed light that casts shadows in `movingReach`; returns how many are to be filed.
    */
@@ -240,7 +242,7 @@ export class FramePlan {
     filing.movingCount = count;
   }
 
-  /** Adds the `count` moving hulls the moving grid found to a classified light's tiles, when they fit the budget (see {@link FramePlan.classificationBudget}). */
+  /** Adds the `count` moving hulls the moving grid found to a classified light's tiles, when they fit the budget (see {@link ShadowCache.classificationBudget}). */
   private classifyMovingHulls(filing: LightFiling, geometry: ShadowGeometry, count: number): void {
     if (filing.unclassified) return;
     const found = this.movingGrid.found, records = recordsOf(geometry, found, count);

@@ -1,6 +1,6 @@
 import { mat4 } from 'gl-matrix';
 import { describe, expect, it, vi } from 'vitest';
-import { FramePlan } from '../../src/shadow/FramePlan';
+import { ShadowCache } from '../../src/shadow/ShadowCache';
 import { signedArea2 } from '../../src/geometry/polygon';
 import { BIN_COUNT, BIN_FLOATS, ENTRY_FLOATS, ENTRY_MAX_RECORDS, MOVING_LIST, RECORD_FLOATS, STILL_LIST } from '../../src/shadow/shadowLayout';
 import { ShadowGeometry } from '../../src/shadow/ShadowGeometry';
@@ -9,17 +9,17 @@ import { Hull, PointLight, TexturedLight, type Light } from '../../src/index';
 const WIDTH = 200, HEIGHT = 100;
 const pixelSpace = mat4.ortho(mat4.create(), 0, WIDTH, HEIGHT, 0, -1, 1);
 
-function plan(lights: Light[], hulls: Hull[]): FramePlan {
+function plan(lights: Light[], hulls: Hull[]): ShadowCache {
   const geometry = new ShadowGeometry();
   geometry.update(hulls);
-  const framePlan = new FramePlan();
-  framePlan.build(lights, hulls, geometry, pixelSpace, WIDTH, HEIGHT);
-  return framePlan;
+  const shadowCache = new ShadowCache();
+  shadowCache.build(lights, hulls, geometry, pixelSpace, WIDTH, HEIGHT);
+  return shadowCache;
 }
 
-const drawnLights = (framePlan: FramePlan) => framePlan.draws.slice(0, framePlan.drawCount).map((d) => d.light);
+const drawnLights = (shadowCache: ShadowCache) => shadowCache.draws.slice(0, shadowCache.drawCount).map((d) => d.light);
 
-describe('FramePlan culling', () => {
+describe('ShadowCache culling', () => {
   it('draws a light whose quad reaches into the target by any part of a pixel, and only such a light', () => {
     const light = new PointLight({ position: [50, 50], range: 20 });
     expect(drawnLights(plan([light], []))).toEqual([light]);
@@ -48,9 +48,9 @@ describe('FramePlan culling', () => {
     expect(drawnLights(held)).toEqual([inside]);
     expect(held.draws[0].hullCount).toBe(1);
     inside.ignoredHulls.add(housing);
-    const framePlan = plan([inside], [housing]);
-    expect(drawnLights(framePlan)).toEqual([inside]);
-    expect(framePlan.draws[0].hullCount).toBe(0);
+    const shadowCache = plan([inside], [housing]);
+    expect(drawnLights(shadowCache)).toEqual([inside]);
+    expect(shadowCache.draws[0].hullCount).toBe(0);
   });
 
   it('does not skip a light in a concave hull’s notch or inside a disabled or invalid hull', () => {
@@ -73,18 +73,18 @@ describe('FramePlan culling', () => {
 });
 
 /** The entries of bin `bin` of the draw's light, its still hulls' list then its moving list's, each nearest first (as the shader walks them). */
-function entriesOfBin(framePlan: FramePlan, draw: FramePlan['draws'][number], bin: number): number[] {
-  const bins = framePlan.bins.bins, b = (draw.binRow * BIN_COUNT + bin) * BIN_FLOATS;
+function entriesOfBin(shadowCache: ShadowCache, draw: ShadowCache['draws'][number], bin: number): number[] {
+  const bins = shadowCache.bins.bins, b = (draw.binRow * BIN_COUNT + bin) * BIN_FLOATS;
   const out: number[] = [];
   for (const list of [STILL_LIST, MOVING_LIST]) for (let e = bins[b + list]; e < bins[b + list] + bins[b + list + 1]; e++) out.push(e);
   return out;
 }
 
 /** The entries of bin `bin` of the first draw's light: `[first record, record count, circle x, y, radius, fan (1 or 0)]` each. */
-function binEntries(framePlan: FramePlan, bin: number): number[][] {
-  const entries = framePlan.bins.entries;
+function binEntries(shadowCache: ShadowCache, bin: number): number[][] {
+  const entries = shadowCache.bins.entries;
   const out: number[][] = [];
-  for (const e of entriesOfBin(framePlan, framePlan.draws[0], bin)) {
+  for (const e of entriesOfBin(shadowCache, shadowCache.draws[0], bin)) {
     const code = entries[e * ENTRY_FLOATS], records = Math.floor(code / 2);
     out.push([Math.floor(records / ENTRY_MAX_RECORDS), (records % ENTRY_MAX_RECORDS) + 1, ...entries.subarray(e * ENTRY_FLOATS + 1, e * ENTRY_FLOATS + 4), code % 2]);
   }
@@ -116,22 +116,22 @@ function binAt(centre: readonly [number, number], degrees: number): number {
   return binOf(centre, [centre[0] + Math.cos((degrees * Math.PI) / 180), centre[1] + Math.sin((degrees * Math.PI) / 180)]);
 }
 
-describe('FramePlan shadow bins', () => {
+describe('ShadowCache shadow bins', () => {
   const box = (x: number, y: number, w = 10, h = 10) => new Hull([[x, y], [x + w, y], [x + w, y + h], [x, y + h]]);
   const light = (position: [number, number], radius: number) => new PointLight({ position, range: 160, radius });
 
   it('files a hull in the bins of its direction only', () => {
     const centre: [number, number] = [30, 45];
-    const framePlan = plan([light(centre, 2)], [box(80, 40)]);
-    expect(binEntries(framePlan, binAt(centre, 0)).map(([record, count]) => [record, count])).toEqual([[0, 1]]);
-    for (const degrees of [60, 90, 180, 270]) expect(binEntries(framePlan, binAt(centre, degrees))).toEqual([]);
+    const shadowCache = plan([light(centre, 2)], [box(80, 40)]);
+    expect(binEntries(shadowCache, binAt(centre, 0)).map(([record, count]) => [record, count])).toEqual([[0, 1]]);
+    for (const degrees of [60, 90, 180, 270]) expect(binEntries(shadowCache, binAt(centre, degrees))).toEqual([]);
   });
 
   it('widens a hull\'s bins by the angle the disk subtends from it (its penumbrae), and no further than twice that', () => {
     const centre: [number, number] = [0, 50];
     // The hull's circle (radius 7.1 at 55) spans ±7.4°; a disk of radius 20 at 47.9 adds 24.7°.
-    const framePlan = plan([light(centre, 20)], [box(50, 45)]);
-    const filedAt = (degrees: number) => binEntries(framePlan, binAt(centre, degrees)).length;
+    const shadowCache = plan([light(centre, 20)], [box(50, 45)]);
+    const filedAt = (degrees: number) => binEntries(shadowCache, binAt(centre, degrees)).length;
     for (const degrees of [0, 30, -30]) expect(filedAt(degrees)).toBe(1);
     for (const degrees of [80, -80, 180]) expect(filedAt(degrees)).toBe(0);
   });
@@ -149,8 +149,8 @@ describe('FramePlan shadow bins', () => {
       const angle = random() * 2 * Math.PI, distance = 25 + random() * 50, size = 2 + random() * 6;
       const x = centre[0] + distance * Math.cos(angle) - size / 2, y = centre[1] + distance * Math.sin(angle) - size / 2;
       const radius = random() * 10;
-      const framePlan = plan([light(centre, radius)], [box(x, y, size, size)]);
-      const bins = Array.from({ length: BIN_COUNT }, (_, bin) => binEntries(framePlan, bin));
+      const shadowCache = plan([light(centre, radius)], [box(x, y, size, size)]);
+      const bins = Array.from({ length: BIN_COUNT }, (_, bin) => binEntries(shadowCache, bin));
       const [, , hx, hy, hullRadius] = bins.find((entries) => entries.length > 0)![0];
       const d = Math.hypot(hx - centre[0], hy - centre[1]), direction = Math.atan2(hy - centre[1], hx - centre[0]);
       const halfWidth = Math.asin(hullRadius / d) + Math.asin(radius / (d - hullRadius));
@@ -173,13 +173,13 @@ describe('FramePlan shadow bins', () => {
 
   it('lists each bin nearest first with a circle around each hull, and files a hull that reaches into the disk in every bin, first', () => {
     const centre: [number, number] = [50, 50];
-    const framePlan = plan([light(centre, 5)], [box(120, 45), box(90, 45), box(53, 40, 10, 20)]);
-    const listed = binEntries(framePlan, binAt(centre, 0));
+    const shadowCache = plan([light(centre, 5)], [box(120, 45), box(90, 45), box(53, 40, 10, 20)]);
+    const listed = binEntries(shadowCache, binAt(centre, 0));
     expect(listed.map(([record]) => record)).toEqual([2, 1, 0]);
     expect(listed[1].slice(2, 5)).toEqual([95, 50, Math.fround(Math.hypot(5, 5))]);
     // Distance buckets of 160 / 32 = 5 units.
-    expect(framePlan.draws[0].binning[3]).toBe(5);
-    for (let bin = 0; bin < BIN_COUNT; bin++) expect(binEntries(framePlan, bin)[0].slice(0, 2)).toEqual([2, 1]);
+    expect(shadowCache.draws[0].binning[3]).toBe(5);
+    for (let bin = 0; bin < BIN_COUNT; bin++) expect(binEntries(shadowCache, bin)[0].slice(0, 2)).toEqual([2, 1]);
   });
 
   it('makes a concave hull its triangles and a convex hull of more than 4 points a fan of records', () => {
@@ -199,30 +199,30 @@ describe('FramePlan shadow bins', () => {
     }
     // Only the convex hull's entry is marked a fan (the shader then drops its inner diagonals).
     const centre: [number, number] = [120, 45];
-    const framePlan = plan([light(centre, 2)], [u, round]);
-    expect(binEntries(framePlan, binAt(centre, 180)).map(([record, count, , , , fan]) => [record, count, fan])).toEqual([[0, 6, 0]]);
-    expect(binEntries(framePlan, binAt(centre, 0)).map(([record, count, , , , fan]) => [record, count, fan])).toEqual([[6, 7, 1]]);
+    const shadowCache = plan([light(centre, 2)], [u, round]);
+    expect(binEntries(shadowCache, binAt(centre, 180)).map(([record, count, , , , fan]) => [record, count, fan])).toEqual([[0, 6, 0]]);
+    expect(binEntries(shadowCache, binAt(centre, 0)).map(([record, count, , , , fan]) => [record, count, fan])).toEqual([[6, 7, 1]]);
   });
 
   it('writes each light its reach: the range, or the farthest corner of a textured quad', () => {
-    const framePlan = plan([new PointLight({ position: [50, 50], range: 40 })], []);
-    expect(framePlan.draws[0].reach).toBe(40);
+    const shadowCache = plan([new PointLight({ position: [50, 50], range: 40 })], []);
+    expect(shadowCache.draws[0].reach).toBe(40);
     // The plan never reads the cookie texture itself.
     const cookie = new TexturedLight({ position: [50, 50], range: 10, size: [40, 20], origin: [0, 0.5], texture: {} as WebGLTexture });
     expect(plan([cookie], []).draws[0].reach).toBeCloseTo(Math.sqrt(40 * 40 + 10 * 10), 9);
   });
 });
 
-describe('FramePlan filings kept from frame to frame', () => {
+describe('ShadowCache filings kept from frame to frame', () => {
   /** Per drawn light: its hull count, bucket width and, per bin, its entries in both lists sorted (a kept filing may order a distance bucket differently). */
-  function filings(framePlan: FramePlan): Map<Light, string> {
-    const entries = framePlan.bins.entries;
+  function filings(shadowCache: ShadowCache): Map<Light, string> {
+    const entries = shadowCache.bins.entries;
     const out = new Map<Light, string>();
-    for (let d = 0; d < framePlan.drawCount; d++) {
-      const draw = framePlan.draws[d];
+    for (let d = 0; d < shadowCache.drawCount; d++) {
+      const draw = shadowCache.draws[d];
       const perBin: string[] = [`hulls ${draw.hullCount}, buckets ${draw.binning[3]}`];
       for (let bin = 0; draw.hullCount > 0 && bin < BIN_COUNT; bin++) {
-        const listed = entriesOfBin(framePlan, draw, bin).map((e) => entries.subarray(e * ENTRY_FLOATS, (e + 1) * ENTRY_FLOATS).join(' '));
+        const listed = entriesOfBin(shadowCache, draw, bin).map((e) => entries.subarray(e * ENTRY_FLOATS, (e + 1) * ENTRY_FLOATS).join(' '));
         perBin.push(listed.sort().join(', '));
       }
       out.set(draw.light, perBin.join('\n'));
@@ -293,8 +293,8 @@ describe('FramePlan filings kept from frame to frame', () => {
    * two lists from the bins' origin, until the first entry a distance bucket farther than the pixel
    * (as the chunk shadow-visibility walks them). `hullOfRecord` maps a hull's first record to it.
    */
-  function hullsVisited(framePlan: FramePlan, hullOfRecord: ReadonlyMap<number, number>, draw: FramePlan['draws'][number], x: number, y: number): Set<number> {
-    const { bins, entries } = framePlan.bins, [originX, originY, filedRadius, bucketWidth] = draw.binning, visited = new Set<number>();
+  function hullsVisited(shadowCache: ShadowCache, hullOfRecord: ReadonlyMap<number, number>, draw: ShadowCache['draws'][number], x: number, y: number): Set<number> {
+    const { bins, entries } = shadowCache.bins, [originX, originY, filedRadius, bucketWidth] = draw.binning, visited = new Set<number>();
     const dx = x - originX, dy = y - originY, distance = Math.hypot(dx, dy);
     // The shader's pseudo-angle of the zero vector is 0.
     const bin = distance === 0 ? 0 : Math.min(Math.floor(diamondAngle(dx, dy) * (BIN_COUNT / 4)), BIN_COUNT - 1);
@@ -314,14 +314,14 @@ describe('FramePlan filings kept from frame to frame', () => {
    * Expects every drawn light's bins to lead the shader, at pixels `step` apart within its reach, to
    * every hull that can shade them.
    */
-  function expectShadingHullsVisited(framePlan: FramePlan, geometry: ShadowGeometry, hulls: Hull[], label: string, step = 3): void {
+  function expectShadingHullsVisited(shadowCache: ShadowCache, geometry: ShadowGeometry, hulls: Hull[], label: string, step = 3): void {
     const hullOfRecord = new Map<number, number>();
     geometry.firstRecords.forEach((record, index) => {
       if (geometry.recordCounts[index] > 0 && !hullOfRecord.has(record)) hullOfRecord.set(record, index);
     });
     const missed: string[] = [];
-    for (let d = 0; d < framePlan.drawCount; d++) {
-      const draw = framePlan.draws[d], light = draw.light;
+    for (let d = 0; d < shadowCache.drawCount; d++) {
+      const draw = shadowCache.draws[d], light = draw.light;
       if (draw.hullCount === 0) continue;
       const [cx, cy] = light.position, circles = shadingCircles(light, hulls), disk = diskPoints(light);
       for (let x = cx - draw.reach; x <= cx + draw.reach; x += step) {
@@ -329,7 +329,7 @@ describe('FramePlan filings kept from frame to frame', () => {
           if (Math.hypot(x - cx, y - cy) > draw.reach) continue;
           const shading = hullsShading(light, circles, disk, x, y);
           if (shading.length === 0) continue;
-          const visited = hullsVisited(framePlan, hullOfRecord, draw, x, y);
+          const visited = hullsVisited(shadowCache, hullOfRecord, draw, x, y);
           for (const index of shading) if (!visited.has(index)) missed.push(`light ${d}, pixel (${x}, ${y}), hull ${index}`);
         }
       }
@@ -342,11 +342,11 @@ describe('FramePlan filings kept from frame to frame', () => {
     const right = new PointLight({ position: [160, 50], range: 40, radius: 3 });
     const nearLeft = square(60, 45, 8), nearRight = square(130, 45, 8);
     const hulls = [nearLeft, nearRight];
-    const geometry = new ShadowGeometry(), framePlan = new FramePlan();
+    const geometry = new ShadowGeometry(), shadowCache = new ShadowCache();
     const filed = () => {
       geometry.update(hulls);
-      framePlan.build([left, right], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
-      return framePlan.filedCount;
+      shadowCache.build([left, right], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
+      return shadowCache.filedCount;
     };
     expect(filed()).toBe(2);
     expect(filed()).toBe(0);
@@ -376,25 +376,25 @@ describe('FramePlan filings kept from frame to frame', () => {
     const hulls: Hull[] = [];
     for (let x = 5; x < WIDTH; x += 12) for (let y = 5; y < HEIGHT; y += 12) hulls.push(square(x, y, 3));
     const light = new PointLight({ position: [40, 50], range: 48, radius: 12 });
-    const geometry = new ShadowGeometry(), framePlan = new FramePlan();
+    const geometry = new ShadowGeometry(), shadowCache = new ShadowCache();
     geometry.update(hulls);
     let filed = 0;
     for (let frame = 0; frame < 60; frame++) {
       light.setPosition(40 + 0.5 * frame, 50 + 0.25 * frame);
-      framePlan.build([light], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
-      filed += framePlan.filedCount;
-      expectShadingHullsVisited(framePlan, geometry, hulls, `frame ${frame}`);
+      shadowCache.build([light], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
+      filed += shadowCache.filedCount;
+      expectShadingHullsVisited(shadowCache, geometry, hulls, `frame ${frame}`);
     }
     // Half a pixel a frame and a margin of 8 frames' travel (at most 48 / 16 = 12 / 4 = 3): filed every 5 or 6 frames.
     expect(filed).toBeGreaterThan(60 / 8);
     expect(filed).toBeLessThan(60 / 4);
     // A still light is filed with no margin again after its next filing.
     light.radius = 16;
-    framePlan.build([light], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
-    expect(framePlan.draws[0].binning[2]).toBeGreaterThan(16);
+    shadowCache.build([light], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
+    expect(shadowCache.draws[0].binning[2]).toBeGreaterThan(16);
     light.radius = 20;
-    framePlan.build([light], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
-    expect(framePlan.draws[0].binning[2]).toBe(20);
+    shadowCache.build([light], hulls, geometry, pixelSpace, WIDTH, HEIGHT);
+    expect(shadowCache.draws[0].binning[2]).toBe(20);
   });
 
   it('packs the kept filings’ entries when released spans pile up, and they still equal a new plan’s', () => {
@@ -402,7 +402,7 @@ describe('FramePlan filings kept from frame to frame', () => {
     for (let x = 5; x < WIDTH; x += 10) for (let y = 5; y < HEIGHT; y += 10) hulls.push(square(x, y, 3));
     const still = new PointLight({ position: [30, 50], range: 40, radius: 2 });
     const growing = new PointLight({ position: [150, 50], range: 50, radius: 0.5 });
-    const geometry = new ShadowGeometry(), kept = new FramePlan();
+    const geometry = new ShadowGeometry(), kept = new ShadowCache();
     const pack = vi.spyOn(kept.bins, 'pack');
     geometry.update(hulls);
     for (let frame = 0; frame < 60; frame++) {
@@ -444,7 +444,7 @@ describe('FramePlan filings kept from frame to frame', () => {
       () => hulls.push(square(between(0, WIDTH), between(0, HEIGHT), between(2, 8))),
       () => hulls.splice(Math.floor(random() * hulls.length), 1),
     ];
-    const geometry = new ShadowGeometry(), kept = new FramePlan();
+    const geometry = new ShadowGeometry(), kept = new ShadowCache();
     let filedTotal = 0, drawnTotal = 0;
     for (let frame = 0; frame < 400; frame++) {
       pick(changes)();
