@@ -11,21 +11,25 @@ import { createRandom } from '../reference/randomScenes';
 function checkRegions(grid: CellGrid): { count: number; labels: Int32Array } {
   const { labels, count } = holeFreeRegions(grid);
   expect(labels.length).toBe(grid.width * grid.height);
+  const wrong: string[] = [];
   for (let y = 0; y < grid.height; y++) {
     for (let x = 0; x < grid.width; x++) {
       const label = labels[y * grid.width + x];
-      if (grid.solid(x, y)) expect(label >= 0 && label < count, `cell (${x}, ${y}) labelled ${label}`).toBe(true);
-      else expect(label, `empty cell (${x}, ${y})`).toBe(-1);
+      if (grid.solid(x, y) ? !(label >= 0 && label < count) : label !== -1) wrong.push(`${grid.solid(x, y) ? 'solid' : 'empty'} cell (${x}, ${y}) labelled ${label}`);
     }
   }
   const regions = cellsByLabel(labels, grid.width, count);
-  regions.forEach((cells, i) => expect(isDisk(cells), `region ${i}: ${JSON.stringify(cells.slice(0, 8))}`).toBe(true));
+  regions.forEach((cells, i) => {
+    if (!isDisk(cells)) wrong.push(`region ${i} is no disk: ${JSON.stringify(cells.slice(0, 8))}`);
+  });
   for (const component of components4(grid)) {
     if (!isDisk(component)) continue;
     const label = labels[component[0][1] * grid.width + component[0][0]];
-    expect(component.every(([x, y]) => labels[y * grid.width + x] === label), 'a disk is one region').toBe(true);
-    expect(regions[label].length).toBe(component.length);
+    if (!component.every(([x, y]) => labels[y * grid.width + x] === label) || regions[label].length !== component.length) {
+      wrong.push(`the disk at (${component[0].join(', ')}) is not one region`);
+    }
   }
+  expect(wrong, `regions of ${grid.width} × ${grid.height} cells`).toEqual([]);
   return { count, labels };
 }
 

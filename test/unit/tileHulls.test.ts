@@ -14,16 +14,18 @@ const flat = (hull: Hull) => hull.points.flat();
 function expectCovers(hulls: readonly Hull[], solid: (x: number, y: number) => boolean, width: number, height: number,
   tileSize: [number, number] = [1, 1], position: [number, number] = [0, 0]): void {
   const coords = hulls.map(flat);
-  hulls.forEach((hull, i) => expect(hull.valid, `hull ${i}: ${coords[i].join(',')}`).toBe(true));
+  expect(hulls.flatMap((hull, i) => (hull.valid ? [] : [`hull ${i}: ${coords[i].join(',')}`])), 'invalid hulls').toEqual([]);
   let solidCount = 0;
+  const wrong: string[] = [];
   for (let y = 0; y < height; y++) {
     for (let x = 0; x < width; x++) {
       const centre = [position[0] + (x + 0.5) * tileSize[0], position[1] + (y + 0.5) * tileSize[1]];
       const inside = coords.filter((c) => isInsidePolygon(c, centre)).length;
-      expect(inside, `tile (${x}, ${y})`).toBe(solid(x, y) ? 1 : 0);
+      if (inside !== (solid(x, y) ? 1 : 0)) wrong.push(`${solid(x, y) ? 'solid' : 'empty'} tile (${x}, ${y}) in ${inside} hulls`);
       if (solid(x, y)) solidCount++;
     }
   }
+  expect(wrong).toEqual([]);
   const area = coords.reduce((sum, c) => sum + Math.abs(signedArea2(c)) / 2, 0);
   expect(area).toBeCloseTo(solidCount * tileSize[0] * tileSize[1], 6);
 }
