@@ -262,7 +262,7 @@ export class PenumbraRenderer {
    * Per light: colour × intensity × its distance `falloff` curve (× the cone factor of a
    * {@link Spotlight}; × the cookie of a {@link TexturedLight}, which lives on the GPU: see
    * {@link IlluminationOptions.cookie}) × what its shadows let through: the exact fraction of its
-   * disk visible from the point past every hull that shadows it (SPEC §6; disks may overlap hulls,
+   * disk visible from the point past every hull that shadows it (see docs/shadows.md; disks may overlap hulls,
    * radius 0 gives hard shadows), mixed with its `shadowColor` and `shadowStrength`. It follows
    * `castsShadows`, `ignoredHulls`, `shadowLayers` against `Hull.layers`, `ShadowType` for points
    * inside a hull (Solid: dark, Illuminated: lit), open hulls, and disabled lights and hulls; a
@@ -276,9 +276,8 @@ export class PenumbraRenderer {
    * Cost: for each light that reaches the point, the hulls between the point and its disk, found
    * through a grid of the hulls' bounds (rebuilt by the first query after a hull changed); hulls in
    * front of the disk are taken whole, so a point deep in shadow costs little, and only a penumbra
-   * needs the exact sweep. Every query also reads each hull's version once (about 13 ns a hull). 300
-   * queries take about 1 ms in a scene of 10 lights and 50 hulls, 6 ms with 32 lights and 200
-   * hulls (`node bench/illumination.mjs`).
+   * needs the exact sweep. Every query also reads each hull's version once. `node
+   * bench/illumination.mjs` times queries in scenes of several sizes.
    *
    * Allocation: without `out`, the result (an object, its colour array, the `lights` array and one
    * entry with a colour array per light listed). Pass a previous result as `out` to reuse it: then

@@ -253,7 +253,7 @@ export class FramePipeline {
 
   /**
    * Builds the lightmap from the lights whose `litLayers` share a bit with `layers`, an int32 (`| 0`
-   * of the mask): 0xffffffff itself is a double, which V8 boxes on the heap when it passes one.
+   * of the mask; see Hot-path rules in docs/architecture.md).
    * With normals it lights through `surfaces`, or the scene target's when null.
    */
   private renderLightmapInto(resources: FrameResources, layers: number, surfaces: SurfaceTextures | null, measureCpuTime: boolean): void {
