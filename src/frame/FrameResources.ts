@@ -1,12 +1,12 @@
 import { supportsFloatTargets } from '../gl/capabilities';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import { BlurPass } from '../passes/BlurPass';
-import { CompositePass, CompositeUnits } from '../passes/CompositePass';
+import { CompositePass } from '../passes/CompositePass';
 import { DebugPass } from '../passes/DebugPass';
 import { HullMaskPass } from '../passes/HullMaskPass';
 import { LightPass } from '../passes/LightPass';
 import { LightShapes } from '../passes/LightShapes';
-import { LIGHT_TEXTURE_UNITS, SHADOW_TEXTURE_UNITS } from '../passes/lightLayout';
+import { SHADOW_TEXTURE_UNITS, TEXTURE_UNITS, unitsSpanned } from '../passes/textureUnits';
 import { ShadowTextures } from '../shadow/ShadowTextures';
 import type { HostFrame } from './HostFrame';
 import type { Sizing } from './Sizing';
@@ -25,16 +25,18 @@ export interface FrameResources {
 }
 
 /**
- * The texture units the passes bind (from 0: the light pass's, see LIGHT_TEXTURE_UNITS, and the
- * composite's scene and lightmap; with normals its surface's; upsampling aware of hull edges the
- * hull masks'), saved and restored around every call.
+ * How many texture units (from 0) the renderer's passes bind, saved and restored around every call:
+ * those of the light pass, the blur, the composite and the debug pass, with normals those of the
+ * light pass's and the composite's surface, upsampling aware of hull edges those of the hull mask
+ * and the composite's masks (see {@link TEXTURE_UNITS}).
  */
 export function textureUnits(normals: boolean, edgeAware: boolean): number {
-  const { u_normals, u_material, ...lightUnits } = LIGHT_TEXTURE_UNITS;
-  const last = Math.max(...Object.values(lightUnits), CompositeUnits.scene, CompositeUnits.lightmap,
-    ...(normals ? [u_normals, u_material, CompositeUnits.specular, CompositeUnits.material] : []),
-    ...(edgeAware ? [CompositeUnits.hullMask, CompositeUnits.lightmapHullMask] : []));
-  return last + 1;
+  const units = TEXTURE_UNITS;
+  return unitsSpanned([
+    units.light, units.blur, units.composite, units.debug,
+    ...(normals ? [units.lightWithNormals, units.compositeWithNormals] : []),
+    ...(edgeAware ? [units.hullMask, units.compositeEdgeAware] : []),
+  ]);
 }
 
 /**

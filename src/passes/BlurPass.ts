@@ -2,8 +2,9 @@ import { createProgram, type Program } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import { MAX_BLUR_RADIUS, MIN_BLUR_RADIUS } from '../scene/look';
 import { shaderSources } from './shaders';
+import { TEXTURE_UNITS } from './textureUnits';
 
-const SOURCE_UNIT = 0;
+const SOURCE_UNIT = TEXTURE_UNITS.blur.u_source;
 
 /**
  * Lightmap blur: a Gaussian of standard deviation radius / 2, cut at ±radius texels and

@@ -4,12 +4,9 @@ import type { Dithering, ToneMapping } from '../scene/look';
 import type { Surface } from './LightPass';
 import type { HullMaskPass } from './HullMaskPass';
 import { compositeStage, shaderSources } from './shaders';
+import { TEXTURE_UNITS } from './textureUnits';
 
-/**
- * The texture units the composite reads on: the scene and the lightmap; with normals the highlights
- * and the material (for the emission); upsampling aware of hull edges, the two hull masks.
- */
-export const CompositeUnits = { scene: 0, lightmap: 1, specular: 2, material: 3, hullMask: 4, lightmapHullMask: 5 } as const;
+const { composite: units, compositeWithNormals: normalsUnits, compositeEdgeAware: edgeAwareUnits } = TEXTURE_UNITS;
 
 /** How the composite turns scene × lightmap into output colour: see `PenumbraRenderer.exposure` and the next two. */
 export interface CompositeLook {
@@ -40,15 +37,15 @@ export class CompositePass {
     this.emptyVertexArray = gl.createVertexArray()!;
     gl.useProgram(this.program.handle);
     const uniforms = this.program.uniforms;
-    gl.uniform1i(uniforms.u_scene, CompositeUnits.scene);
-    gl.uniform1i(uniforms.u_lightmap, CompositeUnits.lightmap);
+    gl.uniform1i(uniforms.u_scene, units.u_scene);
+    gl.uniform1i(uniforms.u_lightmap, units.u_lightmap);
     if (normals) {
-      gl.uniform1i(uniforms.u_specular, CompositeUnits.specular);
-      gl.uniform1i(uniforms.u_material, CompositeUnits.material);
+      gl.uniform1i(uniforms.u_specular, normalsUnits.u_specular);
+      gl.uniform1i(uniforms.u_material, normalsUnits.u_material);
     }
     if (edgeAware) {
-      gl.uniform1i(uniforms.u_hullMask, CompositeUnits.hullMask);
-      gl.uniform1i(uniforms.u_lightmapHullMask, CompositeUnits.lightmapHullMask);
+      gl.uniform1i(uniforms.u_hullMask, edgeAwareUnits.u_hullMask);
+      gl.uniform1i(uniforms.u_lightmapHullMask, edgeAwareUnits.u_lightmapHullMask);
     }
   }
 
@@ -66,16 +63,16 @@ export class CompositePass {
     gl.uniform1fv(uniforms.u_exposure, this.exposure);
     gl.uniform1i(uniforms.u_toneMapping, TONE_MAPPING_CODES[look.toneMapping]);
     gl.uniform1i(uniforms.u_dithering, DITHERING_CODES[look.dithering]);
-    this.bind(CompositeUnits.scene, scene);
-    this.bind(CompositeUnits.lightmap, lightmap[0]);
+    this.bind(units.u_scene, scene);
+    this.bind(units.u_lightmap, lightmap[0]);
     if (this.normals) {
       gl.uniform1i(uniforms.u_flipSurface, surface.flipY ? 1 : 0);
-      this.bind(CompositeUnits.specular, lightmap[1]);
-      this.bind(CompositeUnits.material, surface.material);
+      this.bind(normalsUnits.u_specular, lightmap[1]);
+      this.bind(normalsUnits.u_material, surface.material);
     }
     if (hullMasks) {
-      this.bind(CompositeUnits.hullMask, hullMasks.scene.texture);
-      this.bind(CompositeUnits.lightmapHullMask, hullMasks.lightmap.texture);
+      this.bind(edgeAwareUnits.u_hullMask, hullMasks.scene.texture);
+      this.bind(edgeAwareUnits.u_lightmapHullMask, hullMasks.lightmap.texture);
     }
     gl.bindVertexArray(this.emptyVertexArray);
     gl.drawArrays(gl.TRIANGLES, 0, 3);

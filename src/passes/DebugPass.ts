@@ -4,7 +4,7 @@ import { RECORD_POINTS } from '../shadow/shadowLayout';
 import { createPrograms, deletePrograms, type Program } from '../gl/program';
 import type { LightShapes } from './LightShapes';
 import { shaderSources } from './shaders';
-import { SHADOW_TEXTURE_UNITS } from './lightLayout';
+import { TEXTURE_UNITS } from './textureUnits';
 
 /** Vertices per record in the wireframe: each of its point slots starts a side drawn as a line. */
 const RECORD_VERTICES = 2 * RECORD_POINTS;
@@ -29,14 +29,14 @@ export class DebugPass {
     // Made after the programs, which may fail: creating a vertex array cannot.
     this.emptyVertexArray = gl.createVertexArray()!;
     gl.useProgram(this.recordsProgram.handle);
-    gl.uniform1i(this.recordsProgram.uniforms.u_records, SHADOW_TEXTURE_UNITS.records);
+    gl.uniform1i(this.recordsProgram.uniforms.u_records, TEXTURE_UNITS.debug.u_records);
   }
 
   /** Draws the outlines of the first `recordCount` records of the `records` texture and of the lights' quads. */
   render(draws: readonly LightDraw[], drawCount: number, records: WebGLTexture, recordCount: number, viewProjection: ReadonlyMat4): void {
     const gl = this.gl;
     gl.disable(gl.BLEND);
-    gl.activeTexture(gl.TEXTURE0 + SHADOW_TEXTURE_UNITS.records);
+    gl.activeTexture(gl.TEXTURE0 + TEXTURE_UNITS.debug.u_records);
     gl.bindTexture(gl.TEXTURE_2D, records);
     gl.useProgram(this.recordsProgram.handle);
     gl.uniformMatrix4fv(this.recordsProgram.uniforms.u_viewProjection, false, viewProjection);

@@ -2,7 +2,7 @@ import { mat4, type ReadonlyMat4 } from 'gl-matrix';
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget } from '../gl/RenderTarget';
 import { shaderSources } from './shaders';
-import { SHADOW_TEXTURE_UNITS } from './lightLayout';
+import { TEXTURE_UNITS } from './textureUnits';
 
 /** Vertices per record: its convex quad as two triangles. */
 const RECORD_VERTICES = 6;
@@ -49,7 +49,7 @@ export class HullMaskPass {
     }
     this.emptyVertexArray = gl.createVertexArray()!;
     gl.useProgram(this.program.handle);
-    gl.uniform1i(this.program.uniforms.u_records, SHADOW_TEXTURE_UNITS.records);
+    gl.uniform1i(this.program.uniforms.u_records, TEXTURE_UNITS.hullMask.u_records);
     gl.uniform4f(this.program.uniforms.u_color, 1, 1, 1, 1);
   }
 
@@ -70,7 +70,7 @@ export class HullMaskPass {
     mat4.copy(this.drawnView, viewProjection);
     const gl = this.gl;
     gl.disable(gl.BLEND);
-    gl.activeTexture(gl.TEXTURE0 + SHADOW_TEXTURE_UNITS.records);
+    gl.activeTexture(gl.TEXTURE0 + TEXTURE_UNITS.hullMask.u_records);
     gl.bindTexture(gl.TEXTURE_2D, records);
     gl.useProgram(this.program.handle);
     gl.uniformMatrix4fv(this.program.uniforms.u_viewProjection, false, viewProjection);

@@ -4,14 +4,16 @@ import { createPrograms, deletePrograms, type Program, type ProgramSources } fro
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import type { LightShapes } from './LightShapes';
 import { SHADOW_TYPE_CODES, TILE_CLASSES } from '../shadow/shadowLayout';
-import { FALLOFF_CODES, LIGHT_TEXTURE_UNITS, type LightSampler } from './lightLayout';
+import { FALLOFF_CODES } from './lightLayout';
 import { DirectionalLight } from '../scene/DirectionalLight';
 import type { LightKind } from '../scene/Light';
 import { Spotlight } from '../scene/Spotlight';
 import { TexturedLight } from '../scene/TexturedLight';
 import { lightStages, shaderSources, type LightStages } from './shaders';
+import { TEXTURE_UNITS } from './textureUnits';
 
-const LIGHT_SAMPLERS = Object.keys(LIGHT_TEXTURE_UNITS) as LightSampler[];
+/** The samplers a light program may have, and their units. */
+const LIGHT_SAMPLERS: Readonly<Record<string, number>> = { ...TEXTURE_UNITS.light, ...TEXTURE_UNITS.lightWithNormals };
 
 /** The textures a light pass with normals reads the surface from (see `PenumbraRenderer.drawInPlace`). */
 export interface Surface {
@@ -93,9 +95,9 @@ export class LightPass {
     this.programList = Object.values(this.programs).flatMap((programs) => Object.values(programs).filter((program): program is Program => program !== null));
     for (const program of this.programList) {
       gl.useProgram(program.handle);
-      for (const sampler of LIGHT_SAMPLERS) {
+      for (const [sampler, unit] of Object.entries(LIGHT_SAMPLERS)) {
         const location = program.uniforms[sampler];
-        if (location) gl.uniform1i(location, LIGHT_TEXTURE_UNITS[sampler]);
+        if (location) gl.uniform1i(location, unit);
       }
     }
   }
@@ -137,9 +139,9 @@ export class LightPass {
   /** Binds the surface's textures on their units and fills the surface frame uniform's array. */
   private bindSurface(surface: Surface): void {
     const gl = this.gl;
-    gl.activeTexture(gl.TEXTURE0 + LIGHT_TEXTURE_UNITS.u_normals);
+    gl.activeTexture(gl.TEXTURE0 + TEXTURE_UNITS.lightWithNormals.u_normals);
     gl.bindTexture(gl.TEXTURE_2D, surface.normals);
-    gl.activeTexture(gl.TEXTURE0 + LIGHT_TEXTURE_UNITS.u_material);
+    gl.activeTexture(gl.TEXTURE0 + TEXTURE_UNITS.lightWithNormals.u_material);
     gl.bindTexture(gl.TEXTURE_2D, surface.material);
     gl.activeTexture(gl.TEXTURE0);
     this.surfaceFrame[0] = 1 / this.lightmap.width;
@@ -154,7 +156,7 @@ export class LightPass {
     const programs = this.programs[light.kind];
     this.writeLightUniforms(draw);
     if (light instanceof TexturedLight) {
-      gl.activeTexture(gl.TEXTURE0 + LIGHT_TEXTURE_UNITS.u_cookie);
+      gl.activeTexture(gl.TEXTURE0 + TEXTURE_UNITS.light.u_cookie);
       gl.bindTexture(gl.TEXTURE_2D, light.texture);
     }
     if (draw.hullCount === 0) {

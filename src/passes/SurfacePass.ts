@@ -3,6 +3,7 @@ import type { SurfaceTextures } from './surfaceLayout';
 import { HostState } from '../gl/HostState';
 import { createProgram, type Program } from '../gl/program';
 import { RenderTarget } from '../gl/RenderTarget';
+import { TEXTURE_UNITS, unitsSpanned } from './textureUnits';
 
 /**
  * One sprite of an engine's display list for the surface pass: a quad, the textures it is drawn
@@ -68,9 +69,7 @@ const STRIDE = 25;
 /** Sizes of the attributes at locations 0, 1, …, and their offsets (floats) in an instance. */
 const ATTRIBUTE_SIZES = Int32Array.of(4, 4, 4, 4, 4, 4, 1);
 const ATTRIBUTE_OFFSETS = Int32Array.of(0, 4, 8, 12, 16, 20, 24);
-/** Texture units of the pass: the colour (coverage) and the normal map. */
-const COLOR_UNIT = 0;
-const NORMAL_UNIT = 1;
+const { u_color: COLOR_UNIT, u_normals: NORMAL_UNIT } = TEXTURE_UNITS.surface;
 
 const VERTEX = `#version 300 es
 layout(location = 0) in vec4 a_corners01;
@@ -164,7 +163,7 @@ export class SurfacePass {
   private readonly canvas: EventTarget | null;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
-    this.hostState = new HostState(gl, NORMAL_UNIT + 1);
+    this.hostState = new HostState(gl, unitsSpanned([TEXTURE_UNITS.surface]));
     const canvas = (gl as { canvas?: unknown }).canvas as EventTarget | undefined;
     this.canvas = canvas && typeof canvas.addEventListener === 'function' ? canvas : null;
     this.canvas?.addEventListener('webglcontextlost', this.onContextLost);

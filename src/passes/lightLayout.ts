@@ -13,23 +13,6 @@ export const LIGHT_DEFINES: Readonly<Record<string, number>> = {
 };
 
 /**
- * The texture unit of every sampler a light program may have: the shadow textures (also read by
- * the hull mask and debug passes, on the same units), a textured light's cookie, and with normals
- * the surface's normals and material. Each program's samplers are set from this table once, at
- * link time; the units are distinct, and from 0 up.
- */
-export const LIGHT_TEXTURE_UNITS = { u_records: 0, u_bins: 1, u_cookie: 2, u_entries: 3, u_recordTags: 4, u_normals: 5, u_material: 6 } as const;
-
-/** The samplers of {@link LIGHT_TEXTURE_UNITS}. */
-export type LightSampler = keyof typeof LIGHT_TEXTURE_UNITS;
-
-/** The shadow textures' units, as `ShadowTextures` binds them. */
-export const SHADOW_TEXTURE_UNITS = {
-  records: LIGHT_TEXTURE_UNITS.u_records, bins: LIGHT_TEXTURE_UNITS.u_bins,
-  entries: LIGHT_TEXTURE_UNITS.u_entries, recordTags: LIGHT_TEXTURE_UNITS.u_recordTags,
-} as const;
-
-/**
  * Every uniform of the light programs but the samplers, with what it holds; which a program has
  * depends on its light kind and build (shadowed or not, tiled, with normals).
  */

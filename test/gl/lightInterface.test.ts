@@ -1,5 +1,6 @@
 import { afterEach, describe, expect, it } from 'vitest';
-import { LIGHT_TEXTURE_UNITS, LIGHT_UNIFORMS } from '../../src/passes/lightLayout';
+import { LIGHT_UNIFORMS } from '../../src/passes/lightLayout';
+import { TEXTURE_UNITS } from '../../src/passes/textureUnits';
 import { PenumbraRenderer } from '../../src/index';
 import { createContext, destroyContext } from './context';
 
@@ -29,6 +30,8 @@ function recordPrograms(gl: WebGL2RenderingContext): { context: WebGL2RenderingC
   });
   return { context, programs };
 }
+
+const LIGHT_TEXTURE_UNITS = { ...TEXTURE_UNITS.light, ...TEXTURE_UNITS.lightWithNormals };
 
 const SAMPLER_TYPES = (gl: WebGL2RenderingContext) => new Set<number>([gl.SAMPLER_2D, gl.INT_SAMPLER_2D, gl.UNSIGNED_INT_SAMPLER_2D]);
 
