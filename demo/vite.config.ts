@@ -24,6 +24,6 @@ export default defineConfig({
   build: {
     outDir: resolve(root, '../demo-dist'),
     emptyOutDir: true,
-    rollupOptions: { input: pages },
+    rolldownOptions: { input: pages },
   },
 });

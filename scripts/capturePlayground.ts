@@ -21,7 +21,7 @@ const wait = (ms: number) => new Promise((done) => setTimeout(done, ms));
  * Flames and torches flicker for a while first.
  */
 async function captureShowcase(page: Page): Promise<void> {
-  await page.evaluate(async (value) => {
+  await page.evaluate((value) => {
     const { playground } = window;
     playground.selectPreset('Showcase');
     // The panel collapsed (the view then centres on the whole canvas), then hidden with the rest of the editor.
@@ -50,7 +50,7 @@ async function captureShowcase(page: Page): Promise<void> {
 try {
   const page = await browser.newPage();
   page.on('console', (message) => { if (message.type() === 'error' || message.type() === 'warn') console.log(`page: ${message.text()}`); });
-  page.on('pageerror', (error) => console.log(`page error: ${error}`));
+  page.on('pageerror', (error) => console.log(`page error: ${String(error)}`));
   await page.setViewport({ width: 1280, height: 720 });
   await page.goto(server.url);
   const start = Date.now();

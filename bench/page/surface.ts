@@ -98,7 +98,7 @@ function bumps(): Uint8Array {
 }
 
 function link(gl: WebGL2RenderingContext, vertex: string, fragmentSource: string): WebGLProgram {
-  const program = gl.createProgram()!;
+  const program = gl.createProgram();
   for (const [type, source] of [[gl.VERTEX_SHADER, vertex], [gl.FRAGMENT_SHADER, fragmentSource]] as const) {
     const shader = gl.createShader(type)!;
     gl.shaderSource(shader, source);

@@ -382,7 +382,7 @@ export class Panel {
     this.field(m, 'rotation°', () => hull.rotation * DEGREES, (v: number) => { hull.rotation = v / DEGREES; });
     this.field(m, 'scaleX', () => hull.scale[0], (v: number) => { hull.scale = [v, hull.scale[1]]; });
     this.field(m, 'scaleY', () => hull.scale[1], (v: number) => { hull.scale = [hull.scale[0], v]; });
-    this.field(m, 'points', () => JSON.stringify(hull.points), (v: string) => { hull.points = JSON.parse(v); });
+    this.field(m, 'points', () => JSON.stringify(hull.points), (v: string) => { hull.points = JSON.parse(v) as typeof hull.points; });
     // Off: an open polyline. Fixed when a hull is built: a rebuilt hull takes its place and the
     // selection, so this folder is replaced by the new hull's.
     bind(m, 'closed', () => hull.closed, (v: boolean) => this.playground.setHullClosed(hull, v));

@@ -30,7 +30,7 @@ export interface RgbaPixels {
 
 /** Uploads a canvas (or raw RGBA pixels) as a mipmapped, repeating or clamped texture. */
 export function createTexture(gl: WebGL2RenderingContext, source: TexImageSource | RgbaPixels, repeat: boolean): WebGLTexture {
-  const texture = gl.createTexture()!;
+  const texture = gl.createTexture();
   gl.bindTexture(gl.TEXTURE_2D, texture);
   if ('pixels' in source) {
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
@@ -50,7 +50,7 @@ export function createTexture(gl: WebGL2RenderingContext, source: TexImageSource
 
 /** Compiles and links a program of the playground's art; throws naming `name` and the log when that fails. */
 export function linkProgram(gl: WebGL2RenderingContext, name: string, vertexSource: string, fragmentSource: string): WebGLProgram {
-  const program = gl.createProgram()!;
+  const program = gl.createProgram();
   for (const [type, source] of [[gl.VERTEX_SHADER, vertexSource], [gl.FRAGMENT_SHADER, fragmentSource]] as const) {
     const shader = gl.createShader(type)!;
     gl.shaderSource(shader, source);

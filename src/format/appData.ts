@@ -24,7 +24,7 @@ export function readAppData(value: unknown, path: string): SceneAppData {
   for (const name of Object.keys(apps)) {
     if (name === '') throw new SceneFormatError(childPath(path, name), 'expected a non-empty application name, got ""');
   }
-  return apps as SceneAppData;
+  return apps;
 }
 
 /** A JSON value at `depth` arrays and objects below the application names (the `app` object is 0). */
@@ -65,7 +65,7 @@ function readJsonArray(value: unknown[], path: string, depth: number, budget: Si
 
 function readJsonObject(value: unknown, path: string, budget: SizeBudget, ancestors: Set<object>, depth = 0): { [key: string]: JsonValue } {
   if (typeof value === 'object' && value !== null && !Array.isArray(value)) {
-    const prototype = Object.getPrototypeOf(value);
+    const prototype = Object.getPrototypeOf(value) as object | null;
     if (prototype !== Object.prototype && prototype !== null) {
       throw new SceneFormatError(path, `expected JSON data (${JSON_KINDS}), got an object of class ${describeClass(prototype)}`);
     }
@@ -96,6 +96,7 @@ function spend(budget: SizeBudget, characters: number, path: string): void {
 }
 
 function describeClass(prototype: object): string {
-  const name: unknown = Object.getOwnPropertyDescriptor(prototype, 'constructor')?.value?.name;
+  const constructor: unknown = Object.getOwnPropertyDescriptor(prototype, 'constructor')?.value;
+  const name = typeof constructor === 'function' ? constructor.name : undefined;
   return typeof name === 'string' && name !== '' ? name : 'unknown';
 }

@@ -21,7 +21,7 @@ export function readObject(value: unknown, path: string, allowed?: readonly stri
   if (typeof value !== 'object' || value === null || Array.isArray(value)) {
     throw new SceneFormatError(path || '(root)', `expected an object, got ${describeValue(value)}`);
   }
-  const fields: Record<string, unknown> = Object.create(null);
+  const fields = Object.create(null) as Record<string, unknown>;
   for (const key of Object.keys(value)) {
     if (allowed && !allowed.includes(key)) throw new SceneFormatError(childPath(path, key), `unknown field (allowed: ${allowed.join(', ')})`);
     fields[key] = ownValue(value, key, childPath(path, key));

@@ -71,7 +71,7 @@ type SharedLightFields = Omit<SceneDirectionalLight, 'kind' | 'angularSize' | 'e
  *   in an array, or a hull of more than {@link SCENE_MAX_HULL_POINTS} points. Bad values are shown
  *   cut to about 80 characters and 3 levels deep.
  */
-export function readScene(input: string | unknown): SceneDocument {
+export function readScene(input: unknown): SceneDocument {
   try {
     return readDocument(typeof input === 'string' ? parseJson(input) : input);
   } catch (error) {

@@ -151,8 +151,8 @@ export class RangeHulls {
   /** Merges the chains of blocks 2·block and 2·block + 1 (if any) of `chains` into `out` by (x, y); returns the count. */
   private mergeChains(chains: Int32Array, starts: Int32Array, block: number, out: Int32Array): number {
     const halves = starts.length - 1;
-    let i = starts[2 * block], iEnd = starts[2 * block + 1];
-    let j = 2 * block + 1 < halves ? starts[2 * block + 1] : 0, jEnd = 2 * block + 1 < halves ? starts[2 * block + 2] : 0;
+    const paired = 2 * block + 1 < halves, iEnd = starts[2 * block + 1], jEnd = paired ? starts[2 * block + 2] : 0;
+    let i = starts[2 * block], j = paired ? starts[2 * block + 1] : 0;
     let count = 0;
     while (i < iEnd && j < jEnd) out[count++] = this.before(chains[j], chains[i]) ? chains[j++] : chains[i++];
     while (i < iEnd) out[count++] = chains[i++];

@@ -25,7 +25,7 @@ const RIGHT_X = [0, 0, -1, -1], RIGHT_Y = [-1, 0, 0, -1];
  * from there walks the outline once, keeping the region on its left.
  */
 export function traceOutlines(labels: Int32Array, width: number, height: number, count: number): number[][] {
-  const outlines: number[][] = new Array(count);
+  const outlines = new Array<number[]>(count);
   const traced = new Uint8Array(count);
   for (let i = 0; i < width * height; i++) {
     const label = labels[i];

@@ -105,7 +105,7 @@ export class HostState {
     // like GL's, says true until it is freed, and DELETE_STATUS says it is going.)
     this.program = program && gl.isProgram(program) && !gl.getProgramParameter(program, gl.DELETE_STATUS) ? program : null;
     const vertexArray: unknown = gl.getParameter(gl.VERTEX_ARRAY_BINDING);
-    if (typeof vertexArray === 'object') this.vertexArray = vertexArray as WebGLVertexArrayObject | null;
+    if (typeof vertexArray === 'object') this.vertexArray = vertexArray;
     else this.unrestorableVertexArray(vertexArray);
     this.arrayBuffer = gl.getParameter(gl.ARRAY_BUFFER_BINDING);
     // Touched only when the host has one bound (headless-gl rejects the target altogether).

@@ -31,7 +31,7 @@ export class RenderTarget {
   /** Frees what it made before throwing when the target cannot be completed. */
   constructor(private readonly gl: WebGL2RenderingContext, private readonly options: RenderTargetOptions, width: number, height: number) {
     const count = options.colorAttachments ?? 1;
-    this.textures = Array.from({ length: count }, () => gl.createTexture()!);
+    this.textures = Array.from({ length: count }, () => gl.createTexture());
     this.allBuffers = this.textures.map((_, i) => gl.COLOR_ATTACHMENT0 + i);
     this.firstBuffer = [gl.COLOR_ATTACHMENT0];
     this.framebuffer = gl.createFramebuffer()!;

@@ -307,9 +307,9 @@ function readGrid(name: string, grid: unknown, options: TileHullsOptions<unknown
     }
     const width = size('width', options.width), height = size('height', options.height);
     assertTileCount(name, 'options.width', 'options.height', width, height);
-    const cells = new Uint8Array(width * height);
+    const cells = new Uint8Array(width * height), tileAt = grid as (x: number, y: number) => unknown;
     for (let y = 0; y < height; y++) {
-      for (let x = 0; x < width; x++) cells[y * width + x] = isSolid(grid(x, y), x, y, () => `grid(${x}, ${y})`) ? 1 : 0;
+      for (let x = 0; x < width; x++) cells[y * width + x] = isSolid(tileAt(x, y), x, y, () => `grid(${x}, ${y})`) ? 1 : 0;
     }
     return { width, height, cells };
   }

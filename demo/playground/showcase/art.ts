@@ -112,7 +112,7 @@ export function wallImage(): SurfaceImage {
     const lx = rx - index * blockWidth, ly = y - r * rowHeight;
     const edge = Math.min(lx, blockWidth - lx, ly, rowHeight - ly);
     const seed = r * 7 + index;
-    const grain = fbm(x / 12, y / 12, 128 / 12 | 0 || 1, 21);
+    const grain = fbm(x / 12, y / 12, 128 / 12 | 0, 21);
     const fine = noise(x / 2.5, y / 2.5, 51, 23);
     if (edge < 2) {
       t.height = -2;

@@ -47,7 +47,7 @@ export class SurfaceImage {
    * edges read the heights across the opposite edge (floors and walls; `'x'`: across the left and
    * right edges only); otherwise the edges clamp. `bump` scales the slopes.
    */
-  paint(x0: number, y0: number, w: number, h: number, painter: Painter, { wrap = false as boolean | 'x', bump = 1 } = {}): this {
+  paint(x0: number, y0: number, w: number, h: number, painter: Painter, { wrap = false, bump = 1 }: { wrap?: boolean | 'x'; bump?: number } = {}): this {
     const texel: Texel = { height: 0, r: 0, g: 0, b: 0, alpha: 1, specular: 0, shininess: 1, emissive: 0 };
     for (let y = 0; y < h; y++) {
       for (let x = 0; x < w; x++) {

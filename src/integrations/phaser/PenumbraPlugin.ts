@@ -175,7 +175,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
    * ```
    * @throws TypeError for an object without a transform, or an option of the wrong type.
    */
-  follow<T extends Light>(object: Phaser.GameObjects.GameObject, light: T, options: LightFollowOptions = {}): LightFollower<Placed> {
+  follow(object: Phaser.GameObjects.GameObject, light: Light, options: LightFollowOptions = {}): LightFollower<Placed> {
     if (!(object instanceof Phaser.GameObjects.GameObject) || typeof (object as Partial<Placed>).scaleX !== 'number') {
       throw new TypeError(`penumbra: PenumbraPlugin.follow takes a game object with a transform (a Sprite, an Image, a Container…), got ${describe(object)}`);
     }
@@ -316,7 +316,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   }
 
   private ownSurfaces(): PhaserSurfaces {
-    return (this.surfaces ??= new PhaserSurfaces((this.game!.renderer as Phaser.Renderer.WebGL.WebGLRenderer).gl as WebGL2RenderingContext));
+    return (this.surfaces ??= new PhaserSurfaces((this.game.renderer as Phaser.Renderer.WebGL.WebGLRenderer).gl as WebGL2RenderingContext));
   }
 
   private track<T extends TilemapLayerHulls | SpriteHulls>(object: Phaser.GameObjects.GameObject, occluder: T): T {
@@ -374,7 +374,7 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
   }
 
   private createLighting(options: PenumbraPluginOptions): InPlaceLighting {
-    const renderer = this.game!.renderer as Partial<Phaser.Renderer.WebGL.WebGLRenderer>;
+    const renderer = this.game.renderer as Partial<Phaser.Renderer.WebGL.WebGLRenderer>;
     if (!renderer.gl) throw new TypeError('penumbra: PenumbraPlugin needs Phaser\'s WebGL renderer (type: Phaser.WEBGL)');
     const gl: unknown = renderer.gl;
     if (!isWebGL2(gl)) throw notWebGL2Error('PenumbraPlugin', gl, PHASER_WEBGL2_FIX);
@@ -394,14 +394,14 @@ export class PenumbraPlugin extends Phaser.Plugins.ScenePlugin {
 
   /** The `data` of this plugin's entry in the game config's `plugins.scene` (Phaser passes it to global plugins only). */
   private entryData(): PenumbraPluginOptions {
-    const entries = (this.game!.config.installScenePlugins ?? []) as Phaser.Types.Core.PluginObjectItem[];
+    const entries = (this.game.config.installScenePlugins ?? []) as Phaser.Types.Core.PluginObjectItem[];
     const own = entries.filter((entry) => entry.plugin === this.constructor);
     const entry = own.find((e) => e.mapping === this.pluginKey) ?? own[0];
     const data: unknown = entry?.data ?? {};
     if (typeof data !== 'object' || data === null) {
       throw new TypeError(`penumbra: the PenumbraPlugin entry's data must be an object of renderer options, got ${typeof data}`);
     }
-    return data as PenumbraPluginOptions;
+    return data;
   }
 
   private onStart(): void {

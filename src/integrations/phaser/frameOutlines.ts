@@ -24,7 +24,7 @@ const cache = new WeakMap<Phaser.Textures.Frame, Map<string, readonly Outline[]>
 export function frameOutlines(frame: Phaser.Textures.Frame, options: TraceOptions): readonly Outline[] {
   const key = `${options.threshold}/${options.tolerance}/${options.maxPoints}/${options.minArea}`;
   let byOptions = cache.get(frame);
-  if (!byOptions) cache.set(frame, byOptions = new Map());
+  if (!byOptions) cache.set(frame, byOptions = new Map<string, readonly Outline[]>());
   let outlines = byOptions.get(key);
   if (!outlines) byOptions.set(key, outlines = traceImage(readFramePixels(frame), options));
   return outlines;
@@ -69,6 +69,6 @@ function readFramePixels(frame: Phaser.Textures.Frame): AlphaImage {
   try {
     return context.getImageData(0, 0, width, height);
   } catch (error) {
-    throw new TypeError(`penumbra: the pixels of ${named} cannot be read (${String(error)}; a cross-origin image needs CORS): give options.image`);
+    throw new TypeError(`penumbra: the pixels of ${named} cannot be read (${String(error)}; a cross-origin image needs CORS): give options.image`, { cause: error });
   }
 }

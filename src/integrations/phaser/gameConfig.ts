@@ -67,7 +67,7 @@ export function penumbraGameConfig(config: Phaser.Types.Core.GameConfig = {}): P
     callbacks: {
       ...config.callbacks,
       preBoot: (game: Phaser.Game) => {
-        giveWebGL2Context(game.config as unknown as BootConfig);
+        giveWebGL2Context(game.config);
         ownPreBoot?.(game);
       },
     },

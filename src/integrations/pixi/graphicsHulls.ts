@@ -248,7 +248,7 @@ function simplePieces(outline: readonly number[], holes: readonly (readonly numb
         const u = piece[k], v = piece[(k + 1) % piece.length];
         const other = owner.get(v * n + u);
         if (other === undefined || other === id || !pieces[other]) continue;
-        const joined = join(piece, k, pieces[other]!, u);
+        const joined = join(piece, k, pieces[other], u);
         if (!joined) continue;
         pieces[id] = joined;
         pieces[other] = null;

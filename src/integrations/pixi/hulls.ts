@@ -28,7 +28,7 @@ export function hullFromBounds(object: Container, space?: Container): Hull {
  * `options` place it in the world as for `new Hull`.
  */
 export function hullFromPolygon(polygon: Polygon | readonly number[], options?: HullOptions): Hull {
-  const flat = Array.isArray(polygon) ? polygon : (polygon as Polygon).points;
+  const flat: readonly number[] = Array.isArray(polygon) ? polygon as readonly number[] : (polygon as Polygon).points;
   const points: [number, number][] = [];
   for (let i = 0; i + 1 < flat.length; i += 2) points.push([flat[i], flat[i + 1]]);
   return new Hull(points, options);

@@ -136,7 +136,7 @@ function traceTexture(texture: Texture, options: SpriteHullsOptions, renderer: R
   const image = readTextureAlpha(texture, renderer);
   const hulls = hullsFromAlpha(image, { threshold, tolerance, maxPoints, minArea, anchor: [0, 0] });
   const trace = { width: image.width, height: image.height, outlines: hulls.map((hull) => hull.points) };
-  if (!byOptions) traces.set(texture, (byOptions = new Map()));
+  if (!byOptions) traces.set(texture, (byOptions = new Map<string, Trace>()));
   byOptions.set(key, trace);
   return trace;
 }
