@@ -194,32 +194,47 @@ function hullEdges(hulls: readonly Hull[]): number[][] {
 function expectHausdorff(img: AlphaImage, hulls: readonly Hull[], tolerance: number): void {
   const mask = maskOf(img), outline = outlineEdges(mask, img.width, img.height), edges = hullEdges(hulls);
   const far: string[] = [];
+  const toHulls = nearSegments(edges), toOutline = nearSegments(outline);
   for (const [ax, ay, bx, by] of outline) {
     const mx = (ax + bx) / 2, my = (ay + by) / 2;
-    const nearest = nearestSegment(mx, my, edges);
-    if (!(nearest <= tolerance + 1e-9)) far.push(`pixel edge midpoint (${mx}, ${my}): ${nearest} from the hulls`);
+    if (!toHulls(mx, my, tolerance + 1e-9)) far.push(`pixel edge midpoint (${mx}, ${my}) farther than ${tolerance} from the hulls`);
   }
   for (const [ax, ay, bx, by] of edges) {
     const samples = Math.ceil(4 * Math.hypot(bx - ax, by - ay));
     for (let k = 0; k <= samples; k++) {
       const px = ax + ((bx - ax) * k) / samples, py = ay + ((by - ay) * k) / samples;
       if (onInnerEdge(mask, img.width, img.height, px, py)) continue;
-      const nearest = nearestSegment(px, py, outline);
-      if (!(nearest <= tolerance + Math.SQRT2 / 4 + 1e-9)) far.push(`hull edge point (${px}, ${py}): ${nearest} from the outline`);
+      if (!toOutline(px, py, tolerance + Math.SQRT2 / 4 + 1e-9)) far.push(`hull edge point (${px}, ${py}) farther than ${tolerance} + √2/4 from the outline`);
     }
   }
   expect(far).toEqual([]);
 }
 
-/** Distance from (px, py) to the nearest of `segments` (Infinity for none); a segment whose bounding box is no nearer is skipped. */
-function nearestSegment(px: number, py: number, segments: readonly (readonly number[])[]): number {
-  let nearest = Infinity;
+/**
+ * Whether some segment of `segments` comes within `limit` of (px, py): the segments filed by the
+ * 4 × 4 pixel cells their bounds cover, and only those of the cells within `limit` tested.
+ */
+function nearSegments(segments: readonly (readonly number[])[]): (px: number, py: number, limit: number) => boolean {
+  const CELL = 4, cells = new Map<string, (readonly number[])[]>();
   for (const segment of segments) {
     const [ax, ay, bx, by] = segment;
-    const dx = Math.max(Math.min(ax, bx) - px, 0, px - Math.max(ax, bx)), dy = Math.max(Math.min(ay, by) - py, 0, py - Math.max(ay, by));
-    if (dx * dx + dy * dy < nearest * nearest) nearest = Math.min(nearest, distanceToSegment(px, py, segment));
+    for (let i = Math.floor(Math.min(ax, bx) / CELL); i <= Math.floor(Math.max(ax, bx) / CELL); i++) {
+      for (let j = Math.floor(Math.min(ay, by) / CELL); j <= Math.floor(Math.max(ay, by) / CELL); j++) {
+        const key = `${i},${j}`;
+        const list = cells.get(key);
+        if (list) list.push(segment);
+        else cells.set(key, [segment]);
+      }
+    }
   }
-  return nearest;
+  return (px, py, limit) => {
+    for (let i = Math.floor((px - limit) / CELL); i <= Math.floor((px + limit) / CELL); i++) {
+      for (let j = Math.floor((py - limit) / CELL); j <= Math.floor((py + limit) / CELL); j++) {
+        for (const segment of cells.get(`${i},${j}`) ?? []) if (distanceToSegment(px, py, segment) <= limit) return true;
+      }
+    }
+    return false;
+  };
 }
 
 /**
