@@ -191,7 +191,7 @@ const redAt = (lights: readonly Light[], hulls: readonly Hull[], x: number, y: n
 
 describe('IlluminationQuery against the reference model', () => {
   it('matches on every reference scene and 150 random scenes (within 1e-6)', () => {
-    let worst = 0, points = 0;
+    let worst = 0, worstParts = 0, points = 0;
     for (const scene of [...REFERENCE_SCENES, ...RANDOM_SCENES]) {
       const geometry = new SceneGeometry(scene.hulls, scene.polylines);
       const fraction = visibleFraction(scene);
@@ -201,14 +201,15 @@ describe('IlluminationQuery against the reference model', () => {
         const expected = referenceAt(scene, geometry, fraction, px, py);
         const got = query.at(lights, hulls, AMBIENT_OFF, px, py, { perLight: true }, undefined);
         for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(got.color[c] - expected[c]));
-        // The parts add up to the whole.
         const parts = got.lights.reduce((sum, entry) => sum + entry.color[0], 0);
-        expect(parts).toBeCloseTo(got.color[0], 12);
+        worstParts = Math.max(worstParts, Math.abs(parts - got.color[0]));
         points++;
       }
     }
     figures.push(`illuminationAt vs the reference model: max difference ${worst.toExponential(2)} over ${points} points`);
     expect(worst).toBeLessThan(1e-6);
+    // The parts add up to the whole, to rounding.
+    expect(worstParts).toBeLessThan(5e-13);
   });
 });
 
@@ -421,6 +422,7 @@ describe('IlluminationQuery: the rules of the renderer\'s model', () => {
 describe('isLit', () => {
   it('agrees with illuminationAt\'s luminance without ambient, at random points and thresholds of random scenes', () => {
     let decided = 0;
+    const wrong: string[] = [];
     for (const scene of RANDOM_SCENES.slice(0, 60)) {
       const { lights, hulls } = objectsOf(scene);
       const random = createRandom(scene.lights.length * 7919 + scene.hulls.length);
@@ -433,10 +435,11 @@ describe('isLit', () => {
         const x = random() * scene.width, y = random() * scene.height, threshold = random() * 0.6;
         const luminance = query.at(lights, hulls, [0.5, 0.5, 0.5], x, y, { includeAmbient: false, perLight: false }, undefined).luminance;
         if (Math.abs(luminance - threshold) < 1e-9) continue;
-        expect(query.isLit(lights, hulls, x, y, threshold, null), `${scene.name} (${x}, ${y}) ${luminance} vs ${threshold}`).toBe(luminance > threshold);
+        if (query.isLit(lights, hulls, x, y, threshold, null) !== luminance > threshold) wrong.push(`${scene.name} (${x}, ${y}) ${luminance} vs ${threshold}`);
         decided++;
       }
     }
+    expect(wrong).toEqual([]);
     expect(decided).toBeGreaterThan(3000);
   });
 
