@@ -73,15 +73,17 @@ function expectTriangulation(coords: number[], triangles: number[]): void {
   const n = coords.length >> 1;
   expect(triangles.length).toBe(3 * (n - 2));
   let area = 0;
+  const wrong: string[] = [];
   for (let t = 0; t < triangles.length; t += 3) {
     const [a, b, c] = [triangles[t], triangles[t + 1], triangles[t + 2]];
     const triangle = [coords[2 * a], coords[2 * a + 1], coords[2 * b], coords[2 * b + 1], coords[2 * c], coords[2 * c + 1]];
     const twice = signedArea2(triangle);
-    expect(twice).toBeGreaterThan(0);
+    if (!(twice > 0)) wrong.push(`triangle ${t / 3} turns right or is flat`);
     area += twice;
     const centroid = [(triangle[0] + triangle[2] + triangle[4]) / 3, (triangle[1] + triangle[3] + triangle[5]) / 3];
-    expect(isInsidePolygon(coords, centroid)).toBe(true);
+    if (!isInsidePolygon(coords, centroid)) wrong.push(`triangle ${t / 3} lies outside`);
   }
+  expect(wrong).toEqual([]);
   expect(area).toBeCloseTo(signedArea2(coords), 6);
 }
 
@@ -137,12 +139,13 @@ describe('polygon validity and triangulation at scale', () => {
     expect(new Hull(Array.from({ length: coords.length >> 1 }, (_, i) => [coords[2 * i], coords[2 * i + 1]] as [number, number])).valid).toBe(true);
     const outline = simplifyPolygon(coords), triangles = triangulate(outline);
     expect(triangles.length).toBe(3 * ((outline.length >> 1) - 2));
-    let area = 0;
+    let area = 0, flipped = 0;
     for (let t = 0; t < triangles.length; t += 3) {
       const twice = signedArea2([0, 1, 2].flatMap((k) => [outline[2 * triangles[t + k]], outline[2 * triangles[t + k] + 1]]));
-      expect(twice).toBeGreaterThan(0);
+      if (!(twice > 0)) flipped++;
       area += twice;
     }
+    expect(flipped, 'triangles that turn right or are flat').toBe(0);
     expect(area / signedArea2(outline)).toBeCloseTo(1, 9);
   });
 });
