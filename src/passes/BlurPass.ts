@@ -1,10 +1,22 @@
-import { createProgram, type Program } from '../gl/program';
+import { createProgram, type ProgramOf, type UniformDeclaration } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import { MAX_BLUR_RADIUS, MIN_BLUR_RADIUS } from '../scene/look';
 import { shaderSources } from './shaders';
 import { TEXTURE_UNITS } from './textureUnits';
 
 const SOURCE_UNIT = TEXTURE_UNITS.blur.u_source;
+
+/** The blur's uniforms but its sampler (shaders/blur.frag.glsl), which `BlurPass` sets through these names only. */
+export const BLUR_UNIFORMS = {
+  u_step: { type: 'vec2', meaning: 'one texel along the draw\'s axis, in texture coordinates' },
+  u_radius: { type: 'int', meaning: 'the taps on each side, ≤ MAX_BLUR_RADIUS' },
+  u_weights: { type: `float[${MAX_BLUR_RADIUS + 1}]`, meaning: 'the weight of the taps at ±k, summing to 1 over the taps' },
+} as const satisfies Record<string, UniformDeclaration>;
+
+/** What the blur addresses in its program. */
+export const BLUR_INTERFACE = { uniforms: BLUR_UNIFORMS, samplers: TEXTURE_UNITS.blur };
+
+type BlurProgram = ProgramOf<typeof BLUR_INTERFACE>;
 
 /**
  * Lightmap blur: a Gaussian of standard deviation radius / 2, cut at ±radius texels and
@@ -13,7 +25,7 @@ const SOURCE_UNIT = TEXTURE_UNITS.blur.u_source;
  * blur is off: no compile at start-up), and the scratch target follows the lightmap's size.
  */
 export class BlurPass {
-  private program: Program | null = null;
+  private program: BlurProgram | null = null;
   private emptyVertexArray: WebGLVertexArrayObject | null = null;
   private scratch: RenderTarget | null = null;
   private readonly weights = new Float32Array(MAX_BLUR_RADIUS + 1);
@@ -31,7 +43,7 @@ export class BlurPass {
     if (!(radius >= MIN_BLUR_RADIUS)) return;
     const gl = this.gl;
     const taps = Math.min(MAX_BLUR_RADIUS, Math.ceil(radius));
-    const program = (this.program ??= createProgram(gl, 'lightmap blur', shaderSources.fullscreenVertex, shaderSources.blurFragment));
+    const program = (this.program ??= createProgram(gl, 'lightmap blur', shaderSources.fullscreenVertex, shaderSources.blurFragment, BLUR_INTERFACE));
     this.emptyVertexArray ??= gl.createVertexArray();
     this.scratch ??= new RenderTarget(gl, { format: this.format }, lightmap.width, lightmap.height);
     this.scratch.resize(lightmap.width, lightmap.height);
@@ -39,7 +51,6 @@ export class BlurPass {
     const uniforms = program.uniforms;
     gl.disable(gl.BLEND);
     gl.useProgram(program.handle);
-    gl.uniform1i(uniforms.u_source, SOURCE_UNIT);
     gl.uniform1i(uniforms.u_radius, taps);
     gl.uniform1fv(uniforms.u_weights, this.weights);
     gl.bindVertexArray(this.emptyVertexArray);
@@ -48,7 +59,7 @@ export class BlurPass {
     this.pass(program, this.scratch, lightmap, 0, 1 / lightmap.height);
   }
 
-  private pass(program: Program, from: RenderTarget, to: RenderTarget, stepX: number, stepY: number): void {
+  private pass(program: BlurProgram, from: RenderTarget, to: RenderTarget, stepX: number, stepY: number): void {
     const gl = this.gl;
     to.bindFirst();
     gl.bindTexture(gl.TEXTURE_2D, from.texture);

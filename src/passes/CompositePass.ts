@@ -1,4 +1,4 @@
-import { createProgram, type Program } from '../gl/program';
+import { createProgram, type ProgramOf, type UniformDeclaration } from '../gl/program';
 import { DITHERING_CODES, TONE_MAPPING_CODES } from './compositeLayout';
 import type { Dithering, ToneMapping } from '../scene/look';
 import type { Surface } from './LightPass';
@@ -7,6 +7,17 @@ import { compositeStage, shaderSources } from './shaders';
 import { TEXTURE_UNITS } from './textureUnits';
 
 const { composite: units, compositeWithNormals: normalsUnits, compositeEdgeAware: edgeAwareUnits } = TEXTURE_UNITS;
+
+/** The composite's uniforms but the samplers (shaders/composite.frag.glsl), which `CompositePass` sets through these names only. */
+export const COMPOSITE_UNIFORMS = {
+  u_exposure: { type: 'float', meaning: 'the factor of the lit colour before tone mapping' },
+  u_toneMapping: { type: 'int', meaning: 'the curve\'s code (TONE_MAPPING_CODES)' },
+  u_dithering: { type: 'int', meaning: 'the dithering\'s code (DITHERING_CODES)' },
+  u_flipSurface: { type: 'bool', meaning: 'with normals: whether the material\'s row 0 is the top of the view' },
+} as const satisfies Record<string, UniformDeclaration>;
+
+/** What the composite addresses in its program: its uniforms and the samplers of every build. */
+export const COMPOSITE_INTERFACE = { uniforms: COMPOSITE_UNIFORMS, samplers: { ...units, ...normalsUnits, ...edgeAwareUnits } };
 
 /** How the composite turns scene × lightmap into output colour: see `PenumbraRenderer.exposure` and the next two. */
 export interface CompositeLook {
@@ -22,7 +33,7 @@ export interface CompositeLook {
  * (a program of its own), the lightmap is upsampled aware of hull outlines, through the hull masks.
  */
 export class CompositePass {
-  private readonly program: Program;
+  private readonly program: ProgramOf<typeof COMPOSITE_INTERFACE>;
   private readonly emptyVertexArray: WebGLVertexArrayObject;
   /** Through a reused array, as the light pass's uniforms: a double passed alone may be boxed. */
   private readonly exposure = new Float32Array(1);
@@ -33,20 +44,8 @@ export class CompositePass {
    */
   constructor(private readonly gl: WebGL2RenderingContext, private readonly normals: boolean, edgeAware: boolean) {
     const name = `composite${normals ? ' with normals' : ''}${edgeAware ? ', edge-aware upsampling' : ''}`;
-    this.program = createProgram(gl, name, shaderSources.fullscreenVertex, compositeStage(normals, edgeAware));
+    this.program = createProgram(gl, name, shaderSources.fullscreenVertex, compositeStage(normals, edgeAware), COMPOSITE_INTERFACE);
     this.emptyVertexArray = gl.createVertexArray()!;
-    gl.useProgram(this.program.handle);
-    const uniforms = this.program.uniforms;
-    gl.uniform1i(uniforms.u_scene, units.u_scene);
-    gl.uniform1i(uniforms.u_lightmap, units.u_lightmap);
-    if (normals) {
-      gl.uniform1i(uniforms.u_specular, normalsUnits.u_specular);
-      gl.uniform1i(uniforms.u_material, normalsUnits.u_material);
-    }
-    if (edgeAware) {
-      gl.uniform1i(uniforms.u_hullMask, edgeAwareUnits.u_hullMask);
-      gl.uniform1i(uniforms.u_lightmapHullMask, edgeAwareUnits.u_lightmapHullMask);
-    }
   }
 
   /**

@@ -1,7 +1,7 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
 import type { LightDraw } from '../shadow/ShadowCache';
 import { RECORD_POINTS } from '../shadow/shadowLayout';
-import { createPrograms, deletePrograms, type Program } from '../gl/program';
+import { createPrograms, deletePrograms, type ProgramOf, type UniformDeclaration } from '../gl/program';
 import type { LightShapes } from './LightShapes';
 import { shaderSources } from './shaders';
 import { TEXTURE_UNITS } from './textureUnits';
@@ -10,12 +10,27 @@ import { TEXTURE_UNITS } from './textureUnits';
 const RECORD_VERTICES = 2 * RECORD_POINTS;
 
 /**
+ * The uniforms but the sampler of the debug pass's programs: the light quads' (the light pass's
+ * vertex stage) and the records' (shaders/records.vert.glsl), both with shaders/debug.frag.glsl.
+ * `DebugPass` sets them through these names only.
+ */
+export const DEBUG_UNIFORMS = {
+  u_viewProjection: { type: 'mat4', meaning: 'world to clip space' },
+  u_color: { type: 'vec4', meaning: 'the outlines\' colour' },
+  u_quad: { type: 'vec2[3]', meaning: 'light quads: the light\'s quad, a corner and the two edge vectors (Light.writeQuad)' },
+  u_light: { type: 'vec3', meaning: 'light quads: the light pass\'s light, left unset (the outline ignores the varyings it feeds)' },
+} as const satisfies Record<string, UniformDeclaration>;
+
+/** What the debug pass addresses in its programs. */
+export const DEBUG_INTERFACE = { uniforms: DEBUG_UNIFORMS, samplers: TEXTURE_UNITS.debug };
+
+/**
  * Debug pass: over the composited image, outlines each drawn light's quad (yellow) and the convex
  * records the hulls' shadows are computed from (magenta).
  */
 export class DebugPass {
-  private readonly quadProgram: Program;
-  private readonly recordsProgram: Program;
+  private readonly quadProgram: ProgramOf<typeof DEBUG_INTERFACE>;
+  private readonly recordsProgram: ProgramOf<typeof DEBUG_INTERFACE>;
   /** No attributes: the records' vertex stage fetches its points. */
   private readonly emptyVertexArray: WebGLVertexArrayObject;
 
@@ -23,13 +38,11 @@ export class DebugPass {
     const programs = createPrograms(gl, {
       quad: ['debug light quads', shaderSources.lightVertex, shaderSources.debugFragment],
       records: ['debug shadow records', shaderSources.recordOutlinesVertex, shaderSources.debugFragment],
-    });
+    }, DEBUG_INTERFACE);
     this.quadProgram = programs.quad;
     this.recordsProgram = programs.records;
     // Made after the programs, which may fail: creating a vertex array cannot.
     this.emptyVertexArray = gl.createVertexArray()!;
-    gl.useProgram(this.recordsProgram.handle);
-    gl.uniform1i(this.recordsProgram.uniforms.u_records, TEXTURE_UNITS.debug.u_records);
   }
 
   /** Draws the outlines of the first `recordCount` records of the `records` texture and of the lights' quads. */

@@ -1,5 +1,5 @@
 import { mat4, type ReadonlyMat4 } from 'gl-matrix';
-import { createProgram, type Program } from '../gl/program';
+import { createProgram, type ProgramOf, type UniformDeclaration } from '../gl/program';
 import { RenderTarget } from '../gl/RenderTarget';
 import { shaderSources } from './shaders';
 import { TEXTURE_UNITS } from './textureUnits';
@@ -8,6 +8,18 @@ import { TEXTURE_UNITS } from './textureUnits';
 const RECORD_VERTICES = 6;
 /** Clear value of the masks: outside every hull. */
 const OUTSIDE = new Float32Array(4);
+
+/**
+ * The hull mask program's uniforms but its sampler (shaders/records.vert.glsl, filled, with
+ * shaders/debug.frag.glsl), which `HullMaskPass` sets through these names only.
+ */
+export const HULL_MASK_UNIFORMS = {
+  u_viewProjection: { type: 'mat4', meaning: 'world to clip space' },
+  u_color: { type: 'vec4', meaning: 'the mask inside a hull: 1' },
+} as const satisfies Record<string, UniformDeclaration>;
+
+/** What the hull mask pass addresses in its program. */
+export const HULL_MASK_INTERFACE = { uniforms: HULL_MASK_UNIFORMS, samplers: TEXTURE_UNITS.hullMask };
 
 /**
  * Hull mask pass, for a lightmap smaller than the scene: draws the shadow records, 1 inside a hull
@@ -25,7 +37,7 @@ export class HullMaskPass {
   /** The mask at the lightmap's resolution. */
   readonly lightmap: RenderTarget;
   private readonly targets: readonly RenderTarget[];
-  private readonly program: Program;
+  private readonly program: ProgramOf<typeof HULL_MASK_INTERFACE>;
   /** No attributes: the vertex stage fetches the records' points. */
   private readonly emptyVertexArray: WebGLVertexArrayObject;
   /** What the masks hold: the records' version and the view they were drawn for; null when they hold nothing yet (or were resized). */
@@ -36,7 +48,7 @@ export class HullMaskPass {
   constructor(private readonly gl: WebGL2RenderingContext, width: number, height: number, lightmapWidth: number, lightmapHeight: number) {
     const made: { dispose(): void }[] = [];
     try {
-      this.program = createProgram(gl, 'hull mask', shaderSources.filledRecordsVertex, shaderSources.debugFragment);
+      this.program = createProgram(gl, 'hull mask', shaderSources.filledRecordsVertex, shaderSources.debugFragment, HULL_MASK_INTERFACE);
       made.push({ dispose: () => gl.deleteProgram(this.program.handle) });
       this.scene = new RenderTarget(gl, { format: 'r8' }, width, height);
       made.push(this.scene);
@@ -49,7 +61,6 @@ export class HullMaskPass {
     }
     this.emptyVertexArray = gl.createVertexArray()!;
     gl.useProgram(this.program.handle);
-    gl.uniform1i(this.program.uniforms.u_records, TEXTURE_UNITS.hullMask.u_records);
     gl.uniform4f(this.program.uniforms.u_color, 1, 1, 1, 1);
   }
 

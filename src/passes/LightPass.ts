@@ -1,10 +1,10 @@
 import type { ReadonlyMat4 } from 'gl-matrix';
 import type { LightDraw } from '../shadow/ShadowCache';
-import { createPrograms, deletePrograms, type Program, type ProgramSources } from '../gl/program';
+import { createPrograms, deletePrograms, type ProgramOf, type ProgramSources } from '../gl/program';
 import { RenderTarget, type TargetFormat } from '../gl/RenderTarget';
 import type { LightShapes } from './LightShapes';
 import { SHADOW_TYPE_CODES, TILE_CLASSES } from '../shadow/shadowLayout';
-import { FALLOFF_CODES } from './lightLayout';
+import { FALLOFF_CODES, LIGHT_UNIFORMS } from './lightLayout';
 import { DirectionalLight } from '../scene/DirectionalLight';
 import type { LightKind } from '../scene/Light';
 import { Spotlight } from '../scene/Spotlight';
@@ -12,8 +12,10 @@ import { TexturedLight } from '../scene/TexturedLight';
 import { lightStages, shaderSources, type LightStages } from './shaders';
 import { TEXTURE_UNITS } from './textureUnits';
 
-/** The samplers a light program may have, and their units. */
-const LIGHT_SAMPLERS: Readonly<Record<string, number>> = { ...TEXTURE_UNITS.light, ...TEXTURE_UNITS.lightWithNormals };
+/** What the light pass addresses in its programs: the uniforms of its table and the samplers of every build. */
+export const LIGHT_INTERFACE = { uniforms: LIGHT_UNIFORMS, samplers: { ...TEXTURE_UNITS.light, ...TEXTURE_UNITS.lightWithNormals } };
+
+type LightProgram = ProgramOf<typeof LIGHT_INTERFACE>;
 
 /** The textures a light pass with normals reads the surface from (see `PenumbraRenderer.drawInPlace`). */
 export interface Surface {
@@ -48,7 +50,7 @@ export class LightPass {
    * directional light's quad), its other tiles (general exact; an Occluded directional light's quad).
    */
   private readonly programs: Record<LightKind, LightPrograms>;
-  private readonly programList: readonly Program[];
+  private readonly programList: readonly LightProgram[];
   private readonly clearValue = new Float32Array(4);
   // Uniform values go through reused typed arrays: doubles passed to a GL call one by one are boxed
   // on the heap. (One array per uniform: headless-gl lacks the srcOffset/srcLength overloads.)
@@ -82,7 +84,7 @@ export class LightPass {
         ...sourcesOf('spot', 'spotlight', lightStages(shaderSources.lightSpotFragment, normals)),
         ...sourcesOf('textured', 'textured light', lightStages(shaderSources.lightTexturedFragment, normals)),
         ...sourcesOf('directional', 'directional light', lightStages(shaderSources.lightDirectionalFragment, normals)),
-      });
+      }, LIGHT_INTERFACE);
       const programsOf = (kind: LightKind): LightPrograms => ({
         unshadowed: made[`${kind} unshadowed`], plainTiles: made[`${kind} plain tiles`] ?? null, heldTiles: made[`${kind} held tiles`] ?? null, lean: made[`${kind} lean`],
         shadowed: made[`${kind} shadowed`],
@@ -92,14 +94,7 @@ export class LightPass {
       this.lightmap.dispose();
       throw error;
     }
-    this.programList = Object.values(this.programs).flatMap((programs) => Object.values(programs).filter((program): program is Program => program !== null));
-    for (const program of this.programList) {
-      gl.useProgram(program.handle);
-      for (const [sampler, unit] of Object.entries(LIGHT_SAMPLERS)) {
-        const location = program.uniforms[sampler];
-        if (location) gl.uniform1i(location, unit);
-      }
-    }
+    this.programList = Object.values(this.programs).flatMap((programs) => Object.values(programs).filter((program): program is LightProgram => program !== null));
   }
 
   resize(width: number, height: number): void {
@@ -180,14 +175,14 @@ export class LightPass {
   }
 
   /** Draws the light's tiles of class `tileClass` with `program` in `color`. */
-  private drawTiles(program: Program, draw: LightDraw, tileClass: number, color: Float32Array): void {
+  private drawTiles(program: LightProgram, draw: LightDraw, tileClass: number, color: Float32Array): void {
     this.setUniforms(program, draw, color);
     this.gl.uniform4fv(program.uniforms.u_tiles, draw.tileFrame);
     this.shapes.drawTileRectangles(draw.tileLists[2 * tileClass], draw.tileLists[2 * tileClass + 1]);
   }
 
   /** Makes `program` current and sets its uniforms from the arrays `writeLightUniforms` filled, the light's colour as `color`. */
-  private setUniforms(program: Program, draw: LightDraw, color: Float32Array): void {
+  private setUniforms(program: LightProgram, draw: LightDraw, color: Float32Array): void {
     const gl = this.gl;
     const light = draw.light;
     const uniforms = program.uniforms;
@@ -268,11 +263,11 @@ export class LightPass {
 
 /** A kind of light's programs (see `LightPass.programs`); a directional light has no tiles. */
 interface LightPrograms {
-  unshadowed: Program;
-  plainTiles: Program | null;
-  heldTiles: Program | null;
-  lean: Program;
-  shadowed: Program;
+  unshadowed: LightProgram;
+  plainTiles: LightProgram | null;
+  heldTiles: LightProgram | null;
+  lean: LightProgram;
+  shadowed: LightProgram;
 }
 
 /** The sources of a kind's programs, keyed `<kind> unshadowed`, `<kind> plain tiles` and `<kind> held tiles` (but for a directional light), `<kind> lean` and `<kind> shadowed`. */

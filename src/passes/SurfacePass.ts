@@ -1,7 +1,7 @@
 import { SURFACE_GLSL } from './shaders';
 import type { SurfaceTextures } from './surfaceLayout';
 import { HostState } from '../gl/HostState';
-import { createProgram, type Program } from '../gl/program';
+import { createProgram, type ProgramOf, type UniformDeclaration } from '../gl/program';
 import { RenderTarget } from '../gl/RenderTarget';
 import { TEXTURE_UNITS, unitsSpanned } from './textureUnits';
 
@@ -70,6 +70,15 @@ const STRIDE = 25;
 const ATTRIBUTE_SIZES = Int32Array.of(4, 4, 4, 4, 4, 4, 1);
 const ATTRIBUTE_OFFSETS = Int32Array.of(0, 4, 8, 12, 16, 20, 24);
 const { u_color: COLOR_UNIT, u_normals: NORMAL_UNIT } = TEXTURE_UNITS.surface;
+
+/** The surface program's uniforms but its samplers (VERTEX and FRAGMENT below), which `SurfacePass` sets through these names only. */
+export const SURFACE_UNIFORMS = {
+  u_frame: { type: 'vec3', meaning: '2 / width, 2 / height (target units), and 1, or -1 for a target drawn upside down' },
+  u_erase: { type: 'bool', meaning: 'whether the batch\'s sprites have no normal map: they write their coverage only, to erase' },
+} as const satisfies Record<string, UniformDeclaration>;
+
+/** What the surface pass addresses in its program. */
+export const SURFACE_INTERFACE = { uniforms: SURFACE_UNIFORMS, samplers: TEXTURE_UNITS.surface };
 
 const VERTEX = `#version 300 es
 layout(location = 0) in vec4 a_corners01;
@@ -144,7 +153,7 @@ void main() {
  * normal-mapped sprite after the restore makes them again. The engines restore their own textures.
  */
 export class SurfacePass {
-  private program: Program | null = null;
+  private program: ProgramOf<typeof SURFACE_INTERFACE> | null = null;
   private buffer: WebGLBuffer | null = null;
   private vertexArray: WebGLVertexArrayObject | null = null;
   private target: RenderTarget | null = null;
@@ -303,10 +312,7 @@ export class SurfacePass {
   private prepare(width: number, height: number): RenderTarget {
     const gl = this.gl;
     if (!this.program) {
-      this.program = createProgram(gl, 'engine surface', VERTEX, FRAGMENT);
-      gl.useProgram(this.program.handle);
-      gl.uniform1i(this.program.uniforms.u_color, COLOR_UNIT);
-      gl.uniform1i(this.program.uniforms.u_normals, NORMAL_UNIT);
+      this.program = createProgram(gl, 'engine surface', VERTEX, FRAGMENT, SURFACE_INTERFACE);
       this.buffer = gl.createBuffer();
       this.vertexArray = gl.createVertexArray();
       gl.bindVertexArray(this.vertexArray);

@@ -1,4 +1,5 @@
 import type { Falloff } from '../scene/falloff';
+import type { UniformDeclaration } from '../gl/program';
 
 /**
  * The light passes' codes for a light's distance falloff (see `Falloff`), which
@@ -13,23 +14,44 @@ export const LIGHT_DEFINES: Readonly<Record<string, number>> = {
 };
 
 /**
- * Every uniform of the light programs but the samplers, with what it holds; which a program has
- * depends on its light kind and build (shadowed or not, tiled, with normals).
+ * A light uniform's declaration; `directional` says what a directional light's programs hold in it
+ * instead, where that differs (the same slots, so that the shadow chunk reads one set of uniforms).
+ */
+interface LightUniformDeclaration extends UniformDeclaration {
+  readonly directional?: string;
+}
+
+/**
+ * Every uniform of the light programs but the samplers (see `TEXTURE_UNITS.light`), with its GLSL
+ * type and what it holds; which a program has depends on its light kind and build (with shadows or
+ * not, tiled, with normals). `LightPass` sets them through these names only.
  */
 export const LIGHT_UNIFORMS = {
-  u_viewProjection: 'world to clip space',
-  u_surfaceFrame: 'with normals: 1 / lightmap width, 1 / lightmap height, 1 when the surface\'s row 0 is the top of the view',
-  u_quad: 'the light\'s quad: a corner and the two edge vectors (Light.writeQuad)',
-  u_tiles: 'tiled programs: the tile grid\'s corner (least x and y), a tile\'s width and height (LightDraw.tileFrame)',
-  u_lightColor: 'colour × intensity (times the shadow\'s kept fraction for dark tiles)',
-  u_light: 'position xy, range',
-  u_falloff: 'the curve\'s code (FALLOFF_CODES), the inverse-square core in ranges',
-  u_towardsLight: 'with normals: a positional light\'s position xy and height (w 0), a directional light\'s unit vector towards it (w 1)',
-  u_shadow: 'shadowed programs: position xy, disk radius, row of the light\'s shadow bins',
-  u_shadowType: 'shadowed programs: how the light treats the inside of hulls (SHADOW_TYPE_CODES)',
-  u_shadowKept: 'shadowed programs: the fraction of each channel a pixel in full shadow keeps',
-  u_binning: 'shadowed programs: how the bins were filed (LightDraw.binning), or a directional light\'s strips',
-  u_direction: 'spotlights: the cone\'s axis, a unit vector',
-  u_coneHalfAngle: 'spotlights: half the cone\'s angle',
-  u_coneDecay: 'spotlights: the exponent of the falloff across the cone',
-} as const;
+  u_viewProjection: { type: 'mat4', meaning: 'world to clip space' },
+  u_quad: { type: 'vec2[3]', meaning: 'the light\'s quad: a corner and the two edge vectors (Light.writeQuad)' },
+  u_tiles: { type: 'vec4', meaning: 'tiled programs: the tile grid\'s corner (least x and y), a tile\'s width and height (LightDraw.tileFrame)' },
+  u_lightColor: { type: 'vec3', meaning: 'colour × intensity; for the dark tiles, times the fraction of each channel the shadows keep' },
+  u_light: {
+    type: 'vec3', meaning: 'position xy, range',
+    directional: 'position xy and range 1, unused (no falloff)',
+  },
+  u_falloff: { type: 'vec2', meaning: 'the curve\'s code (FALLOFF_CODES), the inverse-square core in ranges', directional: 'unused (no falloff)' },
+  u_shadow: {
+    type: 'vec4', meaning: 'programs with shadows: position xy, disk radius, row of the light\'s shadow bins',
+    directional: 'the unit direction the light travels (xy), the sine of its angular radius, its row of strips',
+  },
+  u_shadowType: { type: 'float', meaning: 'programs with shadows: how the light treats the inside of hulls (SHADOW_TYPE_CODES)' },
+  u_shadowKept: { type: 'vec3', meaning: 'programs with shadows: the fraction of each channel a pixel in full shadow keeps' },
+  u_binning: {
+    type: 'vec4', meaning: 'programs with shadows: the disk the bins were filed for, centre xy and radius, and a distance bucket\'s width (LightDraw.binning)',
+    directional: 'its strips (DirectionalStrips): the least coordinate across the travel, a strip\'s width, where the first bucket starts along it, a bucket\'s width',
+  },
+  u_surfaceFrame: { type: 'vec3', meaning: 'with normals: 1 / lightmap width, 1 / lightmap height, 1 when the surface\'s row 0 is the top of the view' },
+  u_towardsLight: {
+    type: 'vec4', meaning: 'with normals: position xy and height, w 0',
+    directional: 'the unit vector towards the light (xyz), w 1',
+  },
+  u_direction: { type: 'vec2', meaning: 'spotlights: the cone\'s axis, a unit vector' },
+  u_coneHalfAngle: { type: 'float', meaning: 'spotlights: half the cone\'s angle' },
+  u_coneDecay: { type: 'float', meaning: 'spotlights: the exponent of the falloff across the cone' },
+} as const satisfies Record<string, LightUniformDeclaration>;
