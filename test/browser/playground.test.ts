@@ -905,7 +905,7 @@ describe('playground page in Chromium', () => {
     await page.evaluate(() => window.playground.selectPreset('Penumbra lab'));
     const stats = await page.evaluate(() => window.playground.rendererStats());
     expect(stats).toMatchObject({ lights: 3, hulls: 6 });
-    expect(await page.$eval('.lil-gui select', (select) => (select as HTMLSelectElement).selectedOptions[0].textContent)).toBe('Penumbra lab');
+    expect(await page.$eval('.lil-gui select', (select) => select.selectedOptions[0].textContent)).toBe('Penumbra lab');
 
     const before = await page.evaluate(() => window.playground.sceneText());
     await page.reload();

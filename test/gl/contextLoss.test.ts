@@ -117,7 +117,7 @@ describe('context loss', () => {
 
   it('calls onContextRestored, where a textured light gets a new cookie; warns naming a light left with an old one', () => {
     const cookie = () => {
-      const texture = real.createTexture()!;
+      const texture = real.createTexture();
       real.bindTexture(real.TEXTURE_2D, texture);
       real.texImage2D(real.TEXTURE_2D, 0, real.RGBA8, 1, 1, 0, real.RGBA, real.UNSIGNED_BYTE, new Uint8Array([255, 255, 255, 255]));
       real.bindTexture(real.TEXTURE_2D, null);

@@ -4,10 +4,10 @@ import { readTexture } from './readTexture';
 
 /** A host colour target of `width × height` (an RGBA8 texture), left bound as the framebuffer. */
 export function colorTarget(gl: WebGL2RenderingContext, width: number, height: number): { framebuffer: WebGLFramebuffer; texture: WebGLTexture } {
-  const texture = gl.createTexture()!;
+  const texture = gl.createTexture();
   gl.bindTexture(gl.TEXTURE_2D, texture);
   gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, width, height);
-  const framebuffer = gl.createFramebuffer()!;
+  const framebuffer = gl.createFramebuffer();
   gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
   gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
   gl.bindTexture(gl.TEXTURE_2D, null);

@@ -102,7 +102,7 @@ export function differences(before: Snapshot, after: Snapshot, allowed: readonly
 }
 
 function linkedProgram(gl: GL): WebGLProgram {
-  const program = gl.createProgram()!;
+  const program = gl.createProgram();
   const stage = (type: number, source: string) => {
     const shader = gl.createShader(type)!;
     gl.shaderSource(shader, source);
@@ -206,7 +206,7 @@ function setBuffers(gl: GL, objects: HostObjects, supported: (step: string, set:
 
 /** A vertex array with attribute 1 enabled on a host buffer with a divisor, and generic attribute values. */
 function setVertexState(gl: GL, objects: HostObjects): WebGLVertexArrayObject {
-  const vertexArray = objects.add('host vertex array', gl.createVertexArray()!);
+  const vertexArray = objects.add('host vertex array', gl.createVertexArray());
   gl.bindVertexArray(vertexArray);
   const buffer = objects.add('host attribute buffer', gl.createBuffer());
   gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
@@ -275,7 +275,7 @@ export interface HostStateReport {
  * `lightmapScale` below 1, the hull masks and the composite that reads them.
  */
 export function checkHostStateAcrossPublicCalls(gl: GL, width: number, height: number, normals = false, lightmapScale = 1): HostStateReport {
-  const cookie = gl.createTexture()!;
+  const cookie = gl.createTexture();
   gl.bindTexture(gl.TEXTURE_2D, cookie);
   gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array([255, 255, 255, 255]));
   gl.bindTexture(gl.TEXTURE_2D, null);

@@ -34,7 +34,7 @@ function hostProgram(): WebGLProgram {
     gl.compileShader(s);
     return s;
   };
-  const program = gl.createProgram()!;
+  const program = gl.createProgram();
   gl.attachShader(program, shader(gl.VERTEX_SHADER, '#version 300 es\nin vec2 p;\nvoid main() { gl_Position = vec4(p, 0.0, 1.0); }'));
   gl.attachShader(program, shader(gl.FRAGMENT_SHADER, '#version 300 es\nprecision mediump float;\nout vec4 c;\nvoid main() { c = vec4(1.0); }'));
   gl.linkProgram(program);

@@ -246,7 +246,7 @@ describe('illuminationAt matches the rendered lightmap: features', () => {
   it('a textured light, its cookie sampled on the CPU; without a sampler, an upper bound', () => {
     // A 2×2 cookie with nearest filtering: red 255, 128, 64, 0 from the first texel on.
     const texels = [255, 128, 64, 0];
-    const texture = gl.createTexture()!;
+    const texture = gl.createTexture();
     gl.bindTexture(gl.TEXTURE_2D, texture);
     gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 2, 2, 0, gl.RGBA, gl.UNSIGNED_BYTE, Uint8Array.from(texels.flatMap((red) => [red, 255, 255, 255])));
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
@@ -310,7 +310,7 @@ describe('the renderer\'s illuminationAt and isLit', () => {
   it('check every option, `out` and the cookie, naming the field and the value', () => {
     const gl = createContext(64, 64);
     const renderer = new PenumbraRenderer(gl);
-    const texture = gl.createTexture()!;
+    const texture = gl.createTexture();
     gl.bindTexture(gl.TEXTURE_2D, texture);
     gl.bindTexture(gl.TEXTURE_2D, null);
     renderer.addLight(new TexturedLight({ texture, position: [32, 32], range: 20 }));

@@ -132,7 +132,7 @@ describe('textured light', () => {
   it('shows the red channel of its cookie, upright, stretched over its size', () => {
     setUp();
     // 2×2 cookie: top-left texel red, every texel green; green must not show.
-    const texture = gl.createTexture()!;
+    const texture = gl.createTexture();
     gl.bindTexture(gl.TEXTURE_2D, texture);
     gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 2, 2, 0, gl.RGBA, gl.UNSIGNED_BYTE,
       Uint8Array.of(255, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255));

@@ -151,7 +151,7 @@ describe('a disposed renderer', () => {
 describe('a TexturedLight whose texture is not one of the context\'s', () => {
   /** A 1 × 1 white cookie of `context`. */
   function cookie(context: WebGL2RenderingContext): WebGLTexture {
-    const texture = context.createTexture()!;
+    const texture = context.createTexture();
     context.bindTexture(context.TEXTURE_2D, texture);
     context.texImage2D(context.TEXTURE_2D, 0, context.RGBA8, 1, 1, 0, context.RGBA, context.UNSIGNED_BYTE, new Uint8Array([255, 255, 255, 255]));
     context.bindTexture(context.TEXTURE_2D, null);
@@ -164,7 +164,7 @@ describe('a TexturedLight whose texture is not one of the context\'s', () => {
     gl.deleteTexture(deleted);
     return [
       ['a plain object', {} as WebGLTexture, /got \{\}/],
-      ['a buffer', gl.createBuffer()! as WebGLTexture, /got a WebGLBuffer/],
+      ['a buffer', gl.createBuffer() as WebGLTexture, /got a WebGLBuffer/],
       ['another context\'s texture', cookie(other), /got a WebGLTexture/],
       ['a deleted texture', deleted, /got a WebGLTexture/],
     ];
@@ -218,7 +218,7 @@ describe('a TexturedLight whose texture is not one of the context\'s', () => {
 });
 
 describe('sizes beyond the context', () => {
-  const max = () => Math.min(gl.getParameter(gl.MAX_TEXTURE_SIZE), gl.getParameter(gl.MAX_RENDERBUFFER_SIZE)) as number;
+  const max = () => Math.min(gl.getParameter(gl.MAX_TEXTURE_SIZE), gl.getParameter(gl.MAX_RENDERBUFFER_SIZE));
 
   it('resize() beyond MAX_TEXTURE_SIZE: a RangeError naming the size and the limit; the renderer keeps its size and works', () => {
     const renderer = sceneRenderer(gl);

@@ -160,7 +160,7 @@ describe('tree-shaking: each import bundled on its own with Vite from the instal
         root: dir, configFile: false, logLevel: 'silent',
         build: {
           outDir: join(dir, 'out'), minify: true, write: true,
-          rollupOptions: { input: join(dir, 'entry.js'), external: [/^pixi\.js/, /^phaser$/], output: { entryFileNames: 'entry.js' } },
+          rolldownOptions: { input: join(dir, 'entry.js'), external: [/^pixi\.js/, /^phaser$/], output: { entryFileNames: 'entry.js' } },
         },
       });
       const code = readFileSync(join(dir, 'out', 'entry.js'));
@@ -303,7 +303,7 @@ describe('the README\'s browser snippets, built with Vite and rendered in Chromi
   beforeAll(async () => {
     const input = Object.fromEntries(PAGES.filter((page) => existsSync(join(app, page, 'main.ts'))).map((page) => [page, join(app, page, 'index.html')]));
     try {
-      await build({ root: app, configFile: false, logLevel: 'warn', build: { outDir: join(app, 'dist'), rollupOptions: { input } } });
+      await build({ root: app, configFile: false, logLevel: 'warn', build: { outDir: join(app, 'dist'), rolldownOptions: { input } } });
       built = true;
     } catch (error) {
       console.log(`vite build of the snippet pages failed: ${String(error)}`);
@@ -329,7 +329,7 @@ describe('the README\'s browser snippets, built with Vite and rendered in Chromi
       const canvas = await tab.waitForSelector('canvas', { timeout: 90_000 });
       // Frames until the criteria hold or 90 s pass (SwiftShader takes seconds a frame; engines boot on their own clock).
       let stats!: ReturnType<typeof luminanceStats>;
-      let size = '';
+      let size: string;
       const start = Date.now();
       for (const deadline = start + 90_000; ;) {
         await tab.evaluate(() => new Promise<void>((done) => requestAnimationFrame(() => requestAnimationFrame(() => done()))));

@@ -40,7 +40,7 @@ void main() {
 /** The host of the band scene: `draw` writes colour, normal and material of every pixel into the bound target. */
 export function createSurfaceHost(gl: WebGL2RenderingContext): { draw(): void; dispose(): void } {
   const program = createProgram(gl, 'surface host', FULL_SCREEN_VERTEX, surfaceHostFragment(SURFACE_GLSL)).handle;
-  const vertexArray = gl.createVertexArray()!;
+  const vertexArray = gl.createVertexArray();
   return {
     draw() {
       gl.useProgram(program);

@@ -125,7 +125,7 @@ export function testLibrary(name: string, load: () => Library): void {
       expect(messageOf(() => new lib.TexturedLight({ texture, sise: [1, 1] } as object as source.TexturedLightOptions), TypeError))
         .toBe("TexturedLight options.sise is not an option (did you mean 'size'?)");
       for (const key of ['position', 'range', 'radius', 'origin', 'falloff', 'height']) {
-        const message = messageOf(() => new lib.DirectionalLight({ [key]: undefined } as object), TypeError);
+        const message = messageOf(() => new lib.DirectionalLight({ [key]: undefined }), TypeError);
         expect(message).toMatch(new RegExp(`^DirectionalLight options.${key} is not an option`));
       }
       expect(messageOf(() => new lib.DirectionalLight({ angularsize: 0.1 } as object), TypeError)).toBe("DirectionalLight options.angularsize is not an option (did you mean 'angularSize'?)");

@@ -232,7 +232,7 @@ describe('exact decisions on nearly collinear edges', () => {
     for (let k = 0; k < 20000; k++) {
       const points = worldU(random), coords = points.flat();
       const simple = exactlySimple(points);
-      if (isSimplePolygon(coords) !== simple || new Hull(points as [number, number][]).valid !== simple) {
+      if (isSimplePolygon(coords) !== simple || new Hull(points).valid !== simple) {
         expect.fail(`isSimplePolygon and Hull.valid must be ${simple} for ${JSON.stringify(points)}`);
       }
       // The triangulation: n − 2 triangles, each turning counter-clockwise, exactly.

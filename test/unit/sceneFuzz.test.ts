@@ -96,7 +96,7 @@ function mutate(next: Random, document: object, jsonOnly: boolean): void {
       if (Array.isArray(container)) container.push(container[Number(key)]);
       break;
     case 4:
-      if (typeof container[key] === 'number') container[key] = (container[key] as number) * pick(next, [-1, 0, 2, 1e300, 1e-300]);
+      if (typeof container[key] === 'number') container[key] = container[key] * pick(next, [-1, 0, 2, 1e300, 1e-300]);
       break;
     default:
       if (Array.isArray(container)) container.length = Math.floor(next() * container.length);

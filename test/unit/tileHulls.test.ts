@@ -207,7 +207,7 @@ describe('TileHulls', () => {
       const rows = randomRows(width, height, 0.2 + 0.7 * random(), random);
       const chunkSize = random() < 0.3 ? undefined : 1 + Math.floor(random() * 6);
       const tiles = new TileHulls(rows, { tileSize: 2, position: [1, 1], chunkSize });
-      let current = new Set(tiles.hulls);
+      const current = new Set(tiles.hulls);
       for (let step = 0; step < 20; step++) {
         const x = Math.floor(random() * width), y = Math.floor(random() * height), solid = random() < 0.5;
         const { added, removed } = tiles.setTile(x, y, solid);

@@ -131,7 +131,7 @@ async function phaserScene(): Promise<Scene> {
         // texture leaves the old one's destroyed wrapper to Phaser 4.2.1's context restore, which throws on it.
         map.getTileAt(4, 3, true, 0)!.flipX = true;
         map.getTileAt(2, 3, true, 0)!.rotation = Math.PI / 2;
-        return map.createLayer(0, tileset, 0, 0, gpu)!;
+        return map.createLayer(0, tileset, 0, 0, gpu);
       };
       this.tiles = tiles(false);
       this.gpuTiles = tiles(true);

@@ -35,7 +35,7 @@ function readPixels(gl: WebGLRenderingContext, points: readonly (readonly [numbe
 async function untilReadyOrError(ready: () => boolean, ms: number): Promise<string | null> {
   let error: string | null = null;
   const onError = (event: ErrorEvent): void => {
-    const message = event.error instanceof Error ? event.error.message : String(event.message);
+    const message = event.error instanceof Error ? event.error.message : event.message;
     if (message.includes('penumbra')) error = message;
   };
   window.addEventListener('error', onError);

@@ -79,10 +79,10 @@ export interface MrtFrame {
 
 /** A host framebuffer of two RGBA8 attachments with draw buffers for both, its read buffer set to `readBuffer`. */
 function twoAttachmentTarget(readBuffer: number): WebGLFramebuffer {
-  const framebuffer = gl.createFramebuffer()!;
+  const framebuffer = gl.createFramebuffer();
   gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
   for (let i = 0; i < 2; i++) {
-    const texture = gl.createTexture()!;
+    const texture = gl.createTexture();
     gl.bindTexture(gl.TEXTURE_2D, texture);
     gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, SIZE, SIZE);
     gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0 + i, gl.TEXTURE_2D, texture, 0);
@@ -176,14 +176,14 @@ function textureMisuse(): { thrown: string[]; glError: number } {
     }
   };
   attempt(() => new TexturedLight({ texture: {} as WebGLTexture }));
-  const cookie = gl.createTexture()!;
+  const cookie = gl.createTexture();
   gl.bindTexture(gl.TEXTURE_2D, cookie);
   gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array([255, 255, 255, 255]));
   gl.bindTexture(gl.TEXTURE_2D, null);
   const light = new TexturedLight({ position: [16, 16], range: 8, texture: cookie });
   attempt(() => { light.texture = gl.createBuffer() as unknown as WebGLTexture; });
   const other = document.createElement('canvas').getContext('webgl2')!;
-  const foreign = other.createTexture()!;
+  const foreign = other.createTexture();
   other.bindTexture(other.TEXTURE_2D, foreign);
   light.texture = foreign;
   attempt(() => renderer.addLight(light));
