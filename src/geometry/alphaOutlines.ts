@@ -20,7 +20,7 @@ import { holeFreeRegions, type CellGrid } from './gridRegions';
 import { RingSimplifier, type Ring } from './simplifyRing';
 
 /** How {@link alphaOutlines} and {@link regionOutlines} simplify and filter. */
-export interface OutlineOptions {
+interface OutlineOptions {
   /** Largest distance, in pixels, of the simplified outline from the traced one. */
   readonly tolerance: number;
   /** Most points per outline (≥ 3; `Infinity` for no cap); the tolerance grows until it is met. */
@@ -33,7 +33,7 @@ export interface OutlineOptions {
  * The pixels of RGBA bytes `data` (4 per pixel, row after row) with `alpha ≥ threshold`, as the
  * cell grid that {@link holeFreeRegions} reads: straight from the bytes, no mask built first.
  */
-export function alphaGrid(data: ArrayLike<number>, width: number, height: number, threshold: number): CellGrid {
+function alphaGrid(data: ArrayLike<number>, width: number, height: number, threshold: number): CellGrid {
   return { width, height, solid: (x, y) => data[4 * (y * width + x) + 3] >= threshold };
 }
 
@@ -52,7 +52,7 @@ export function alphaOutlines(data: ArrayLike<number>, width: number, height: nu
  * empty), regions in index order, without those of islands smaller than `options.minArea`.
  * Each region must be 4-connected and without holes.
  */
-export function regionOutlines(labels: Int32Array, count: number, width: number, height: number, options: OutlineOptions): Float64Array[] {
+function regionOutlines(labels: Int32Array, count: number, width: number, height: number, options: OutlineOptions): Float64Array[] {
   const { starts, kept } = scanRegions(labels, count, width, height, options.minArea);
   const outlines: Float64Array[] = [];
   const tracer = new Tracer(labels, width, height), simplifier = new RingSimplifier();

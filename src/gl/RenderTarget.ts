@@ -2,7 +2,7 @@
 export type TargetFormat = 'rgba8' | 'rgba16f' | 'r8';
 
 /** Options of a {@link RenderTarget}. */
-export interface RenderTargetOptions {
+interface RenderTargetOptions {
   format: TargetFormat;
   /** Attach a depth/stencil renderbuffer (for targets the user draws into). */
   depthStencil?: boolean;

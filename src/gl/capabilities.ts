@@ -1,5 +1,5 @@
 /** What a value given as a rendering context is. */
-export type ContextKind = 'webgl2' | 'webgl1' | 'other';
+type ContextKind = 'webgl2' | 'webgl1' | 'other';
 
 /** WebGL2-only enums, with their values: a WebGL1 context has none of them, whatever methods it has. */
 const VERTEX_ARRAY_BINDING = 0x85b5;
@@ -11,7 +11,7 @@ const RGBA16F = 0x881a;
  * another window (an iframe) is not an instance of this window's. headless-gl 9's WebGL1 context
  * has every WebGL2 method (which then fail) but none of the WebGL2 enums, so both are checked.
  */
-export function contextKind(gl: unknown): ContextKind {
+function contextKind(gl: unknown): ContextKind {
   if (typeof gl !== 'object' || gl === null) return 'other';
   const candidate = gl as Record<string, unknown>;
   if (typeof candidate.drawArrays !== 'function' || typeof candidate.getParameter !== 'function') return 'other';

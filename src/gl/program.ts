@@ -1,6 +1,6 @@
 /** The GLSL types of uniforms that are not samplers; an array as `type[length]`. */
 type GlslValueType = 'float' | 'int' | 'bool' | 'vec2' | 'vec3' | 'vec4' | 'mat4';
-export type GlslType = GlslValueType | `${GlslValueType}[${number}]`;
+type GlslType = GlslValueType | `${GlslValueType}[${number}]`;
 
 /** A uniform that is not a sampler, as a pass's table declares it: its GLSL type and what it holds. */
 export interface UniformDeclaration {
@@ -21,7 +21,7 @@ export interface ProgramInterface<Uniform extends string = string, Sampler exten
  * A linked program and the locations of its interface's names, looked up once at link time: null
  * for a name the program does not use (setting it does nothing).
  */
-export interface Program<Name extends string = never> {
+interface Program<Name extends string = never> {
   readonly handle: WebGLProgram;
   readonly uniforms: Readonly<Record<Name, WebGLUniformLocation | null>>;
 }
@@ -115,7 +115,7 @@ function compileShader(gl: WebGL2RenderingContext, passName: string, type: numbe
 }
 
 /** The numbered source lines around every `ERROR: 0:<line>` in a compiler log. */
-export function excerptAroundErrors(source: string, log: string): string {
+function excerptAroundErrors(source: string, log: string): string {
   const lines = source.split('\n');
   const wanted = new Set<number>();
   for (const match of log.matchAll(/ERROR:\s*\d+:(\d+)/g)) {

@@ -128,7 +128,7 @@ function checkRotation(value: number | null): number | null {
 }
 
 /** What an engine gives a {@link LightFollowers}: its objects' destruction, and removing a light. */
-export interface FollowedObjects<T> {
+interface FollowedObjects<T> {
   /** Calls `destroyed(object)` once `object` is destroyed, until {@link FollowedObjects.ignore}. */
   listen(object: T, destroyed: (object: T) => void): void;
   ignore(object: T, destroyed: (object: T) => void): void;

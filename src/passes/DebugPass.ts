@@ -14,7 +14,7 @@ const RECORD_VERTICES = 2 * RECORD_POINTS;
  * vertex stage) and the records' (shaders/records.vert.glsl), both with shaders/debug.frag.glsl.
  * `DebugPass` sets them through these names only.
  */
-export const DEBUG_UNIFORMS = {
+const DEBUG_UNIFORMS = {
   u_viewProjection: { type: 'mat4', meaning: 'world to clip space' },
   u_color: { type: 'vec4', meaning: 'the outlines\' colour' },
   u_quad: { type: 'vec2[3]', meaning: 'light quads: the light\'s quad, a corner and the two edge vectors (Light.writeQuad)' },

@@ -10,7 +10,7 @@ import { TEXTURE_UNITS, unitsSpanned } from './textureUnits';
  * from, its turn and its material. The engines fill one scratch object per pass and hand it to
  * {@link SurfacePass.add}, which copies it.
  */
-export interface SurfaceQuad {
+interface SurfaceQuad {
   /** The texture the sprite's colour is drawn from: its alpha is the coverage. */
   color: WebGLTexture | null;
   /** The sprite's normal map, laid out as `color`; null for a sprite without one, which erases what it covers. */
@@ -72,7 +72,7 @@ const ATTRIBUTE_OFFSETS = Int32Array.of(0, 4, 8, 12, 16, 20, 24);
 const { u_color: COLOR_UNIT, u_normals: NORMAL_UNIT } = TEXTURE_UNITS.surface;
 
 /** The surface program's uniforms but its samplers (VERTEX and FRAGMENT below), which `SurfacePass` sets through these names only. */
-export const SURFACE_UNIFORMS = {
+const SURFACE_UNIFORMS = {
   u_frame: { type: 'vec3', meaning: '2 / width, 2 / height (target units), and 1, or -1 for a target drawn upside down' },
   u_erase: { type: 'bool', meaning: 'whether the batch\'s sprites have no normal map: they write their coverage only, to erase' },
 } as const satisfies Record<string, UniformDeclaration>;

@@ -12,7 +12,7 @@ export const SceneAttachments = { color: 0, normal: 1, material: 2 } as const;
 export const LightmapAttachments = { diffuse: 0, specular: 1 } as const;
 
 /** The material stores log2(shininess) / SHININESS_LOG2_MAX: shininess 1..2^11 in 8 bits, at 4.4 % a step. */
-export const SHININESS_LOG2_MAX = 11;
+const SHININESS_LOG2_MAX = 11;
 
 /** The encoding's constants as `#define`s. */
 export const SURFACE_DEFINES: Readonly<Record<string, string>> = {

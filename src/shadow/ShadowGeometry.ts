@@ -297,7 +297,7 @@ function segmentBoxHalfWidth(magnitude: number): number {
  * Records of a hull: one per {@link RECORD_POINTS}-point fan piece of a convex hull, one per
  * triangle of a concave one, one box per segment of an open one.
  */
-export function recordCountOf(hull: Hull): number {
+function recordCountOf(hull: Hull): number {
   if (!hull.valid) return 0;
   if (!hull.closed) return hull.edgeCount;
   if (hull.convex) return 1 + Math.max(0, Math.ceil((hull.edgeCount - RECORD_POINTS) / (RECORD_POINTS - 2)));

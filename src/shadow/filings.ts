@@ -6,7 +6,7 @@ import { type BinSpan, bucketWidthOf, type FiledDisk, type ShadowBins } from './
 import { MOVING_LIST, STILL_LIST, TILE_COLUMNS, TILE_ROWS } from './shadowLayout';
 
 /** A filing's `movingCount` when its moving list in the bins is not known to be written. */
-export const UNWRITTEN = -1;
+const UNWRITTEN = -1;
 
 /**
  * How many frames a moving light's filing should last at the speed it last moved: its margin is

@@ -98,7 +98,7 @@ function writeBounds(draw: LightDraw): void {
  * some pixel of a `targetWidth × targetHeight` target, its projection rounded outward to whole
  * pixels (a box that reaches into a pixel at all counts).
  */
-export function reachesTarget(bounds: ArrayLike<number>, viewProjection: ReadonlyMat4, targetWidth: number, targetHeight: number): boolean {
+function reachesTarget(bounds: ArrayLike<number>, viewProjection: ReadonlyMat4, targetWidth: number, targetHeight: number): boolean {
   let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
   const m = viewProjection;
   for (let corner = 0; corner < 4; corner++) {

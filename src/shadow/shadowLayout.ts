@@ -37,7 +37,7 @@ import type { ShadowType } from '../scene/Light';
 /** Points per record: a tile or a box is one record, a triangle repeats its last point. */
 export const RECORD_POINTS = 4;
 /** Texels per record: two points each. */
-export const RECORD_TEXELS = RECORD_POINTS / 2;
+const RECORD_TEXELS = RECORD_POINTS / 2;
 /** Floats per record. */
 export const RECORD_FLOATS = RECORD_POINTS * 2;
 /** Width in texels of the records and entries textures. */
@@ -58,7 +58,7 @@ export function entryCode(first: number, count: number, fan: boolean): number {
 }
 
 /** Bits of a record tag that flag its outline edges: one per edge, edge k from point k to k + 1. */
-export const TAG_EDGE_BITS = RECORD_POINTS;
+const TAG_EDGE_BITS = RECORD_POINTS;
 /**
  * A record's tag: the first record of its hull (all a hull's records share it) and a mask of its
  * edges that lie on the hull's outline (a fan's or a triangulation's inner diagonals do not, nor do

@@ -2,7 +2,7 @@ import type Phaser from 'phaser';
 import { hullsFromAlpha, type AlphaImage } from '../../index';
 
 /** How an image's alpha is traced: the fields of `HullsFromAlphaOptions` that shape the outlines. */
-export interface TraceOptions {
+interface TraceOptions {
   threshold?: number;
   tolerance?: number;
   maxPoints?: number;
