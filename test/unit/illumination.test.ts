@@ -4,97 +4,55 @@ import { Hull, PointLight, ShadowType, Spotlight, TexturedLight, type Light } fr
 import { IlluminationQuery, type Illumination, type IlluminationOptions } from '../../src/scene/illumination';
 import { createRandom, randomScene } from '../reference/randomScenes';
 import { SceneGeometry } from '../reference/sceneGeometry';
-import { box, REFERENCE_SCENES, type Point, type ReferenceLight, type ReferenceScene } from '../reference/scenes';
+import { box, REFERENCE_SCENES, type Point, type ReferenceScene } from '../reference/scenes';
 import { visibleFraction, type FractionOf } from '../reference/softShadowReference';
+import { compareWithSampling, diskFraction, pointsOf } from './diskVisibilitySupport';
 
 /**
  * The CPU light query behind `PenumbraRenderer.illuminationAt` and `isLit`, without GL:
  * - the disk visibility (src/geometry/diskVisibility.ts) against disk sampling, which shares no
- *   code with it (test/reference/softShadowReference.ts), on every reference scene and random
- *   scenes, and against circular-cap areas of its own; the convex pieces' shortcut against the
- *   plain sweep;
+ *   code with it (test/reference/softShadowReference.ts), on every reference scene and scenes made
+ *   for each cut of its sweep, and against circular-cap areas of its own; the convex pieces'
+ *   shortcut against the plain sweep;
  * - the query against the reference model (Σ falloff × visible fraction × colour × intensity) on
  *   the same scenes, and each rule of the renderer's model on its own: layers, ignored hulls,
  *   castsShadows, shadow colour and strength, Solid and Illuminated inside hulls, a light inside a
  *   hull, disabled lights and hulls, spotlight cones, textured lights' cookies, open polylines,
  *   ambient light; then the result's reuse, and isLit against illuminationAt.
  * The rendered lightmap itself is compared in test/gl/illumination.test.ts; test/accuracy/ holds
- * the denser sampling of the reference images.
+ * the denser sampling over random scenes and of the reference images.
  */
 
 const figures: string[] = [];
 afterAll(() => console.log(figures.join('\n')));
 
-/** Random points of a scene, each at least `clearance` from every outline (where a rounding could flip a side). */
-function pointsOf(scene: ReferenceScene, geometry: SceneGeometry, count: number, seed: number, clearance = 1e-6): Point[] {
-  const random = createRandom(seed);
-  const points: Point[] = [];
-  while (points.length < count) {
-    const point: Point = [random() * scene.width, random() * scene.height];
-    if (!geometry.isNearOutline(point[0], point[1], clearance)) points.push(point);
-  }
-  return points;
-}
-
 const RANDOM_SCENES = Array.from({ length: 150 }, (_, i) => randomScene(0x1000 + i, 80, 60));
 
 describe('DiskVisibility', () => {
-  /** Whether a polygon (either winding) turns the same way at every point. */
-  const isConvex = (points: readonly Point[]) => {
-    const turns = points.map((a, i) => {
-      const b = points[(i + 1) % points.length], c = points[(i + 2) % points.length];
-      return Math.sign((b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]));
-    });
-    return turns.every((turn) => turn >= 0) || turns.every((turn) => turn <= 0);
-  };
-
-  /** The fraction DiskVisibility gives at (px, py) for the light, with convex hulls taken whole by the shortcut or as edges. */
-  function fractionOf(visibility: DiskVisibility, scene: ReferenceScene, px: number, py: number, { position: [cx, cy], radius }: ReferenceLight, shortcut: boolean): number {
-    visibility.begin(px, py, cx, cy, radius);
-    for (const hull of scene.hulls) visibility.addOutline(hull.flat(), hull.length, true, shortcut && isConvex(hull));
-    // Without the shortcut, a polyline goes in as its edges one by one.
-    for (const line of scene.polylines ?? []) {
-      if (shortcut) visibility.addOutline(line.flat(), line.length, false);
-      else for (let i = 0; i + 1 < line.length; i++) visibility.addEdge(...line[i], ...line[i + 1]);
-    }
-    return visibility.fraction();
-  }
-
   /**
    * Disk samples of the sampling reference. The sunflower pattern's visible fraction errs by about
    * N^-3/4 (2.0e-3) per straight cut across the disk, and the visible part of a disk is cut by a
-   * few (hull edges, rays past hull points): measured over these points, 1.4 N^-3/4 at worst and
-   * 0.1 N^-3/4 on average. The limits, 3 N^-3/4 at a point and 0.2 N^-3/4 on average, leave room
-   * for more cuts. A closed form or a sign wrong fails both by far; a cut of the sweep left out
-   * shows only where it splits a piece in front of the disk, which the scenes below are made for.
+   * few (hull edges, rays past hull points): measured over the reference and random scenes, 1.4
+   * N^-3/4 at worst and 0.1 N^-3/4 on average. The limits, 3 N^-3/4 at a point and 0.2 N^-3/4 on
+   * average, leave room for more cuts. A closed form or a sign wrong fails both by far; a cut of
+   * the sweep left out shows only where it splits a piece in front of the disk, which the scenes
+   * below are made for. The same over 150 random scenes with denser sampling is
+   * test/accuracy/diskVisibility.test.ts.
    */
   const SAMPLES = 4096;
   const SAMPLING_ERROR = SAMPLES ** -0.75;
 
-  it(`matches disk sampling (${SAMPLES} points) on every reference scene and 150 random scenes, with and without convex hulls taken whole`, () => {
-    let worst = 0, sum = 0, evaluations = 0, partial = 0, shortcutGap = 0;
-    const visibility = new DiskVisibility();
-    for (const scene of [...REFERENCE_SCENES, ...RANDOM_SCENES]) {
-      const geometry = new SceneGeometry(scene.hulls, scene.polylines);
-      const sampled = visibleFraction(scene, { method: 'sampled', samples: SAMPLES });
-      for (const [px, py] of pointsOf(scene, geometry, 40, 7)) {
-        if (geometry.isInsideHull(px, py)) continue;
-        for (const light of scene.lights) {
-          const expected = sampled(px, py, light);
-          const taken = fractionOf(visibility, scene, px, py, light, true), plain = fractionOf(visibility, scene, px, py, light, false);
-          worst = Math.max(worst, Math.abs(taken - expected), Math.abs(plain - expected));
-          sum += Math.abs(plain - expected);
-          shortcutGap = Math.max(shortcutGap, Math.abs(taken - plain));
-          evaluations++;
-          if (expected > 0.01 && expected < 0.99) partial++;
-        }
-      }
-    }
-    const mean = sum / evaluations;
-    figures.push(`DiskVisibility vs disk sampling (N = ${SAMPLES}, N^-3/4 = ${SAMPLING_ERROR.toExponential(2)}): max ${worst.toExponential(2)}, mean ${mean.toExponential(2)} over ${evaluations} fractions (${partial} in penumbrae); the shortcut moves none by more than ${shortcutGap.toExponential(1)}`);
-    expect(partial).toBeGreaterThan(2000);
+  it(`matches disk sampling (${SAMPLES} points) on every reference scene, with and without convex hulls taken whole`, () => {
+    const { worst, mean, evaluations, partial } = compareWithSampling(REFERENCE_SCENES, SAMPLES, 40);
+    figures.push(`DiskVisibility vs disk sampling (N = ${SAMPLES}, N^-3/4 = ${SAMPLING_ERROR.toExponential(2)}): max ${worst.toExponential(2)}, mean ${mean.toExponential(2)} over ${evaluations} fractions (${partial} in penumbrae)`);
+    expect(partial).toBeGreaterThan(300);
     expect(worst).toBeLessThan(3 * SAMPLING_ERROR);
     expect(mean).toBeLessThan(0.2 * SAMPLING_ERROR);
+  });
+
+  it('takes convex hulls whole as exactly as edge by edge, on every reference scene and 150 random scenes', () => {
+    const { shortcutGap, evaluations } = compareWithSampling([...REFERENCE_SCENES, ...RANDOM_SCENES], 0, 40);
+    expect(evaluations).toBeGreaterThan(10000);
     // Both ways are exact to rounding (seen: 2.4e-9, in pieces that graze an edge, where tan is steep).
     expect(shortcutGap).toBeLessThan(1e-7);
   });
@@ -123,7 +81,7 @@ describe('DiskVisibility', () => {
         for (let y = -24.5; y <= 25; y += 3.5) {
           if (geometry.isInsideHull(x, y) || geometry.isNearOutline(x, y, 1e-6)) continue;
           const expected = sampled(x, y, scene.lights[0]);
-          for (const shortcut of [true, false]) worst = Math.max(worst, Math.abs(fractionOf(visibility, scene, x, y, scene.lights[0], shortcut) - expected));
+          for (const shortcut of [true, false]) worst = Math.max(worst, Math.abs(diskFraction(visibility, scene, x, y, scene.lights[0], shortcut) - expected));
           if (expected > 0.01 && expected < 0.99) partial++;
         }
       }
