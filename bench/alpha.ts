@@ -9,7 +9,7 @@ import { alphaOutlines } from '../src/geometry/alphaOutlines';
 import { hullsFromAlpha, type AlphaImage } from '../src/scene/hullsFromAlpha';
 
 /** The benchmark sprite, `size` × `size` pixels, RGBA. */
-export function benchSprite(size = 256): AlphaImage {
+function benchSprite(size = 256): AlphaImage {
   const data = new Uint8ClampedArray(size * size * 4);
   const s = size / 100;
   for (let py = 0; py < size; py++) {
@@ -39,18 +39,18 @@ function maskImage(width: number, height: number, solid: (x: number, y: number) 
 }
 
 /** A 2,048 × 64 grass strip: 1-pixel blades 1 pixel apart, 16 to 62 pixels tall, on a 2-pixel base. */
-export function grassSprite(): AlphaImage {
+function grassSprite(): AlphaImage {
   const height = 64;
   return maskImage(2048, height, (x, y) => y >= height - 2 || (x % 2 === 0 && y >= 1 + ((x * 7919) % 47)));
 }
 
 /** A 2,048 × 512 comb: 1-pixel teeth 1 pixel apart, 504 pixels long, hanging from an 8-pixel spine. */
-export function combSprite(): AlphaImage {
+function combSprite(): AlphaImage {
   return maskImage(2048, 512, (x, y) => y < 8 || x % 2 === 0);
 }
 
 /** A 2,048 × 512 fence: 4-pixel bars 4 pixels apart, joined by two 8-pixel rails (so with holes). */
-export function fenceSprite(): AlphaImage {
+function fenceSprite(): AlphaImage {
   return maskImage(2048, 512, (x, y) => x % 8 < 4 || (y >= 96 && y < 104) || (y >= 400 && y < 408));
 }
 

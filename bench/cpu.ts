@@ -30,7 +30,7 @@ export interface CpuResult {
   extra: ExtraStats;
 }
 
-export interface CpuOptions {
+interface CpuOptions {
   warmup: number;
   frames: number;
 }

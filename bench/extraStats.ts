@@ -23,7 +23,7 @@ export const EXTRA_STATS = [
   { key: 'exactVisitsPerPixel', label: 'records / exact px', format: (value: number) => value.toFixed(2) },
 ] as const;
 
-export type ExtraStatKey = (typeof EXTRA_STATS)[number]['key'];
+type ExtraStatKey = (typeof EXTRA_STATS)[number]['key'];
 export type ExtraStats = Partial<Record<ExtraStatKey, number>>;
 
 /** The EXTRA_STATS figures present in `stats` as finite numbers. */

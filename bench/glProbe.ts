@@ -1,5 +1,5 @@
 /** Counts the calls made on a WebGL context and the time spent inside them (bench only). */
-export interface GLProbe {
+interface GLProbe {
   /** Calls since the last {@link GLProbe.reset}. */
   calls: number;
   /** Milliseconds spent inside those calls (the driver's share, including any wait for the rasterizer). */

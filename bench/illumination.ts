@@ -11,7 +11,7 @@ import { createScene, seededRandom, WORLD_HEIGHT, WORLD_WIDTH, type SceneSpec } 
 /** Queries per frame. */
 export const POINTS_PER_FRAME = 300;
 
-export interface IlluminationCase {
+interface IlluminationCase {
   /** The scene's lights and hulls, for the table. */
   describe(): string;
   /** Runs one frame (moves the scene, then the queries) and returns the milliseconds of the queries. */

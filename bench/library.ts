@@ -40,7 +40,7 @@ export interface BenchRenderer {
   dispose(): void;
 }
 
-export interface BenchLightOptions {
+interface BenchLightOptions {
   position?: readonly [number, number];
   range?: number;
   radius?: number;

@@ -42,7 +42,7 @@ function rooms(size: number, room: number): number[][] {
 
 const count = (rows: number[][]) => rows.reduce((sum, row) => sum + row.reduce((a, b) => a + b, 0), 0);
 
-export interface Case {
+interface Case {
   /** What the table says about the grid. */
   describe(): string;
   /** Runs the call once and returns milliseconds. */

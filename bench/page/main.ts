@@ -9,7 +9,7 @@ import { measureShadowStatistics } from './statistics';
 import { SurfaceFloor } from './surface';
 
 /** Times of one frame in ms, each ended by a 1-pixel readPixels so the GPU work is included. */
-export interface FrameTimes {
+interface FrameTimes {
   frame: number;
   /** The baseline renderer's frame on the same scene (absent without a baseline). */
   baseline?: number;

@@ -11,7 +11,7 @@ function unclassified(renderer: { stats: object }): number {
 }
 
 /** Per light pixel (every pixel a light adds to), what the shadow loop did in one frame. */
-export interface ShadowStatistics {
+interface ShadowStatistics {
   /** Light pixels shaded (a light's fragments where its falloff is above 0, shadowed or not). */
   pixels: number;
   /** Records (convex pieces of hulls) the first pass over the pixel's bin visited, in all. */

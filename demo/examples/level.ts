@@ -7,18 +7,18 @@ export type Rect = readonly [number, number, number, number];
 export const WORLD_WIDTH = 960;
 export const WORLD_HEIGHT = 640;
 /** Camera zoom (world units are drawn this many pixels wide), more in a window larger than the level. */
-export const ZOOM = 1.25;
+const ZOOM = 1.25;
 export const PLAYER_RADIUS = 10;
 export const PLAYER_SPEED = 160;
 export const PLAYER_START: readonly [number, number] = [330, 300];
 
 /** Width and height of a tile of the level's tile map, in world units. */
 export const TILE_SIZE = 20;
-export const TILES_WIDE = WORLD_WIDTH / TILE_SIZE;
-export const TILES_HIGH = WORLD_HEIGHT / TILE_SIZE;
+const TILES_WIDE = WORLD_WIDTH / TILE_SIZE;
+const TILES_HIGH = WORLD_HEIGHT / TILE_SIZE;
 
 /** The walls, whole tiles each: the examples build them as a tile map, whose solid tiles are the hulls. */
-export const WALLS: readonly Rect[] = [
+const WALLS: readonly Rect[] = [
   [0, 0, WORLD_WIDTH, 20], [0, WORLD_HEIGHT - 20, WORLD_WIDTH, 20],
   [0, 0, 20, WORLD_HEIGHT], [WORLD_WIDTH - 20, 0, 20, WORLD_HEIGHT],
   [400, 140, 40, 320], [600, 20, 40, 200], [620, 420, 200, 40], [120, 440, 140, 40], [160, 140, 60, 60],
@@ -140,8 +140,8 @@ export interface View {
 }
 
 /** How far the mouse wheel zooms in: the zoom factor's range, and its step per wheel notch. */
-export const ZOOM_FACTOR_MAX = 3;
-export const ZOOM_FACTOR_STEP = 1.1;
+const ZOOM_FACTOR_MAX = 3;
+const ZOOM_FACTOR_STEP = 1.1;
 
 /** The zoom factor after a wheel event of `deltaY` (negative: zoom in), within 1..{@link ZOOM_FACTOR_MAX}. */
 export function zoomFactorAfterWheel(factor: number, deltaY: number): number {
@@ -166,7 +166,7 @@ export function followPlayer(player: readonly [number, number], width: number, h
 }
 
 /** What the browser tests drive, as `window.penumbraExample`. */
-export interface ExampleHook {
+interface ExampleHook {
   /** Puts the player at a world position (the camera follows). */
   setPlayer(x: number, y: number): void;
   /** Renders one frame now and reads back canvas pixels at CSS coordinates (top-left origin). */

@@ -6,7 +6,7 @@ import { PointLight, type PenumbraGroup, type PenumbraPlugin } from 'penumbra-gl
 import { AMBIENT_SQUARE, CHECK_LAYER_A, LIGHT_A, LIGHT_B, LIT_SQUARE, SQUARE_COLOR, type GroupCheckBase } from '../examples/groupCheck';
 
 /** A group through its life: the GL objects (framebuffers, textures, renderbuffers) made for it. */
-export interface PhaserGroupLifecycle {
+interface PhaserGroupLifecycle {
   /** Made by the first frame drawn with the group: its framebuffer and what is attached to it. */
   made: number;
   /** Made by the next frames: none, the framebuffer is kept. */
@@ -22,7 +22,7 @@ export interface PhaserGroupLifecycle {
 }
 
 /** `window.penumbraPhaserGroups`. */
-export interface PhaserGroupCheck extends GroupCheckBase {
+interface PhaserGroupCheck extends GroupCheckBase {
   lifecycle(): PhaserGroupLifecycle;
   /** Makes the main camera draw through a framebuffer of its own (`forceComposite`), as camera filters do, or not. */
   setComposite(on: boolean): void;

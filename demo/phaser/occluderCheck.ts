@@ -6,7 +6,7 @@ import type { Hull, PenumbraPlugin } from 'penumbra-gl/phaser';
 import { ART_KEY, PROP_FRAME, WALL_TILE } from './content';
 
 /** A tilemap layer's hulls through its life. */
-export interface TilemapReport {
+interface TilemapReport {
   /** Hulls of a 3 × 3 ring of wall tiles, 20 units each, layer at (2000, 3000) scaled 2. */
   ringHulls: number;
   /** Their world bounds `[minX, minY, maxX, maxY]`. */
@@ -22,7 +22,7 @@ export interface TilemapReport {
 }
 
 /** A sprite's hulls through its life. */
-export interface SpriteReport {
+interface SpriteReport {
   /** Whether its hulls are in the renderer once added. */
   addedToRenderer: boolean;
   /** Whether they are disabled while the sprite is invisible, and enabled again when it is visible. */
@@ -38,7 +38,7 @@ export interface SpriteReport {
 }
 
 /** `window.penumbraPhaserOccluders`. */
-export interface OccluderCheckHook {
+interface OccluderCheckHook {
   tilemap(): TilemapReport;
   sprite(): SpriteReport;
 }

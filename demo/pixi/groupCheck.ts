@@ -5,7 +5,7 @@ import { PenumbraGroup, PointLight, type PenumbraLayer } from 'penumbra-gl/pixi'
 import { AMBIENT_SQUARE, CHECK_LAYER_A, LIGHT_A, LIGHT_B, LIT_SQUARE, SQUARE_COLOR, type GroupCheckBase } from '../examples/groupCheck';
 
 /** A group through its life: lighting passes in a frame beyond the page's own, and GL objects made. */
-export interface PixiGroupLifecycle {
+interface PixiGroupLifecycle {
   /** Extra lighting passes (`drawInPlace` calls) in one frame: the group in the world, removed, added back, destroyed. */
   extraPasses: [number, number, number, number];
   /** Framebuffers and textures created over frames drawn with the group: none, as Pixi's filter pool lends it its target. */
@@ -15,7 +15,7 @@ export interface PixiGroupLifecycle {
 }
 
 /** `window.penumbraPixiGroups`. */
-export interface PixiGroupCheck extends GroupCheckBase {
+interface PixiGroupCheck extends GroupCheckBase {
   lifecycle(): PixiGroupLifecycle;
 }
 

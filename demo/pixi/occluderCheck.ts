@@ -24,7 +24,7 @@ export interface GraphicsReport {
 }
 
 /** The occluder of a Graphics through its life: each field true when it held. */
-export interface LifecycleReport {
+interface LifecycleReport {
   addedToRenderer: boolean;
   disabledWhenRemoved: boolean;
   enabledWhenAddedBack: boolean;
@@ -33,7 +33,7 @@ export interface LifecycleReport {
 }
 
 /** `window.penumbraPixiOccluders`. */
-export interface OccluderCheckHook {
+interface OccluderCheckHook {
   /** Draws the checked shapes, places them with each placement in turn and reports the hulls and samples. */
   graphics(placements: Placement[], tolerance: number): GraphicsReport[];
   /** Adds, removes, re-adds, redraws and destroys a Graphics occluder. */

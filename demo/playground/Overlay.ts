@@ -22,7 +22,7 @@ function cssColor([r, g, b]: readonly number[]): string {
 }
 
 /** What tile mode shows: the grid of `tileSize` world units, the tile under the pointer, and whether a stroke erases. */
-export interface PaintGuide {
+interface PaintGuide {
   tileSize: number;
   hover: readonly [number, number] | null;
   erasing: boolean;

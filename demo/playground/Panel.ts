@@ -9,7 +9,7 @@ import { PRESETS } from './presets';
 import { TILE_SIZES } from './TilePainter';
 
 /** What the panel's buttons do outside the model: files and messages. */
-export interface PanelActions {
+interface PanelActions {
   selectPreset(name: string): void;
   save(): void;
   load(): void;

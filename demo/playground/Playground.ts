@@ -12,7 +12,7 @@ import { createTexture } from './textures';
 /** What can be selected and edited. */
 export type Selectable = Light | Hull;
 /** Kinds of light the page can add. */
-export type NewLightKind = 'point' | 'spot' | 'textured' | 'directional';
+type NewLightKind = 'point' | 'spot' | 'textured' | 'directional';
 
 /** How far apart (CSS pixels) a new light is put from the others: a few handle radii. */
 const NEW_LIGHT_SPACING = 48;

@@ -10,7 +10,7 @@ export const PLAYGROUND_APP = 'penumbra-gl/playground';
 const STATE_VERSION = 1;
 
 /** A flickering light's steady values (the flicker scales them), by its index in the file's `lights`. */
-export interface SteadyLight {
+interface SteadyLight {
   light: number;
   intensity: number;
   radius: number;
@@ -31,7 +31,7 @@ export interface ShowcaseState {
 }
 
 /** The playground's entry: which art draws the scene, and the showcase's state when it is the showcase. */
-export type PlaygroundState = { art: 'generic' } | { art: 'showcase'; showcase: ShowcaseState | null };
+type PlaygroundState = { art: 'generic' } | { art: 'showcase'; showcase: ShowcaseState | null };
 
 /** The playground's entry of a file's application data as JSON. */
 export function writePlaygroundState(state: PlaygroundState): JsonValue {

@@ -29,13 +29,13 @@ export function pickTextFile(onText: (text: string, name: string) => void): void
 }
 
 /** What to do with a dropped file: a scene file's text, or an image file and the page point (CSS pixels) it was dropped at. */
-export interface DropHandlers {
+interface DropHandlers {
   text(text: string, name: string): void;
   image(file: File, clientX: number, clientY: number): void;
 }
 
 /** Whether a file is an image by its type or, failing that, its name (some systems give no type). */
-export function isImageFile(file: File): boolean {
+function isImageFile(file: File): boolean {
   return file.type.startsWith('image/') || (file.type === '' && /\.(png|jpe?g|gif|webp|avif|bmp)$/i.test(file.name));
 }
 

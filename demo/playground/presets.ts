@@ -81,8 +81,8 @@ function stage(): SceneDocument {
 }
 
 /** Light and hull counts of the stress preset. */
-export const STRESS_LIGHTS = 300;
-export const STRESS_HULLS = 3000;
+const STRESS_LIGHTS = 300;
+const STRESS_HULLS = 3000;
 
 /** Hundreds of lights and thousands of hulls (mostly boxes and pillars, some L-shapes), from a fixed seed. */
 function stress(): SceneDocument {
@@ -104,7 +104,7 @@ function stress(): SceneDocument {
 }
 
 /** The preset drawn with the showcase's own art (normal-mapped level, flicker, day and night): the first view. */
-export const SHOWCASE_PRESET = 'Showcase';
+const SHOWCASE_PRESET = 'Showcase';
 
 /** The presets by name, in menu order; the first is the default level. */
 export const PRESETS: Readonly<Record<string, () => SceneDocument>> = {

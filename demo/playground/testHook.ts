@@ -8,7 +8,7 @@ import type { OverlayFigures, StatsOverlay } from './StatsOverlay';
 import { compassCentre } from './sunCompass';
 
 /** What the page exposes as `window.playground`, so browser tests can drive it without brittle clicks. */
-export interface PlaygroundTestHook {
+interface PlaygroundTestHook {
   /** Preset names, in menu order. */
   readonly presets: string[];
   /** Loads a preset by name. */
@@ -56,7 +56,7 @@ export interface PlaygroundTestHook {
 }
 
 /** Dependencies of the test hook. */
-export interface TestHookParts {
+interface TestHookParts {
   playground: Playground;
   editor: Editor;
   tracer: ImageTracer;

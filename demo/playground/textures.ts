@@ -22,7 +22,7 @@ function canvas2d(size: number): CanvasRenderingContext2D {
 }
 
 /** Raw RGBA pixels, rows top-down as generated. */
-export interface RgbaPixels {
+interface RgbaPixels {
   width: number;
   height: number;
   pixels: Uint8Array;

@@ -6,7 +6,7 @@
 import type { SceneDocument, SceneHull, SceneLight, SceneLightBase } from 'penumbra-gl';
 
 /** World units per map cell. */
-export const TILE = 64;
+const TILE = 64;
 
 /**
  * The map: `#` wall, `w` a barred window in a wall, `.` floor; the first row is the courtyard
@@ -52,7 +52,7 @@ export interface Decor {
   rotation: number;
 }
 
-export interface Level {
+interface Level {
   document: SceneDocument;
   /** One role per hull of the document, in its order. */
   hullRoles: HullRole[];
@@ -131,14 +131,14 @@ export const NIGHT = { ambient: [0.045, 0.05, 0.08], sky: [0.55, 0.7, 1], skyInt
 export const DAY = { ambient: [0.34, 0.32, 0.3], sky: [1, 0.92, 0.78], skyIntensity: 2, elevation: 0.9 } as const;
 
 /** Where the showcase's lights stand. */
-export const TORCHES: { at: Point; facing: number }[] = [
+const TORCHES: { at: Point; facing: number }[] = [
   { at: [420, 128 + 14], facing: -Math.PI / 2 },
   { at: [150, 704 - 14], facing: Math.PI / 2 },
   { at: [1216 - 14, 360], facing: 0 },
 ];
-export const BRAZIER: Point = [430, 430];
-export const RUNES: Point = [1050, 440];
-export const LANTERN: Point = [170, 396];
+const BRAZIER: Point = [430, 430];
+const RUNES: Point = [1050, 440];
+const LANTERN: Point = [170, 396];
 
 /** Builds the level. */
 export function buildLevel(): Level {

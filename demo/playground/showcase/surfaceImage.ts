@@ -24,7 +24,7 @@ export interface Texel {
 }
 
 /** Paints pixel (x, y) of a cell of `width` × `height` pixels into `out`. */
-export type Painter = (x: number, y: number, out: Texel) => void;
+type Painter = (x: number, y: number, out: Texel) => void;
 
 /** Three images of the same size: what the showcase's shader samples. */
 export class SurfaceImage {
