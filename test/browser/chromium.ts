@@ -2,7 +2,7 @@ import { existsSync } from 'node:fs';
 import puppeteer, { type Browser, type Page } from 'puppeteer';
 
 /** Debian's Chromium; puppeteer's own download is disabled (.puppeteerrc.cjs). */
-export const CHROMIUM_PATH = process.env.PUPPETEER_EXECUTABLE_PATH ?? '/usr/bin/chromium';
+const CHROMIUM_PATH = process.env.PUPPETEER_EXECUTABLE_PATH ?? '/usr/bin/chromium';
 
 /**
  * Launches headless Chromium with WebGL2 on SwiftShader (no GPU here) and no network chatter.

@@ -34,7 +34,7 @@ const INSET = 4;
 const APART = 10;
 
 /** The names of the engines' group checks on `window`. */
-export type GroupCheckName = 'penumbraPixiGroups' | 'penumbraPhaserGroups';
+type GroupCheckName = 'penumbraPixiGroups' | 'penumbraPhaserGroups';
 
 /** The camera the examples put on the player in a window of `size` CSS pixels. */
 function viewFor(size: Vec, player: Vec, zoomFactor = 1) {
@@ -97,7 +97,7 @@ function report(read: Pixel[], expected: Rgb[]): string {
 }
 
 /** The suite's page and reading, for an engine's own tests. */
-export interface LitGroupPage {
+interface LitGroupPage {
   page(): Page;
   /** Reads the pixels of world points with the camera on `player`; each with its pixel centre's world point. */
   read(player: Vec, points: Vec[], zoomFactor?: number): Promise<{ read: Pixel[]; centres: Vec[] }>;

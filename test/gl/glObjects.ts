@@ -2,7 +2,7 @@
 const KINDS = ['Buffer', 'Framebuffer', 'Program', 'Query', 'Renderbuffer', 'Sampler', 'Shader', 'Texture', 'TransformFeedback', 'VertexArray'] as const;
 
 /** Live GL objects of one context, counted by wrapping its create and delete calls. */
-export interface GLObjectCount {
+interface GLObjectCount {
   /** Objects created and not deleted since the count began. */
   live(): number;
   /** The live objects by kind, for messages. */

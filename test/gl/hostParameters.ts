@@ -36,7 +36,7 @@ const ATTRIBUTE_PARAMETERS = [
 ] as const;
 
 /** The parameters that may differ from the host's between `beginDraw()` and `draw()` (the scene target is bound). */
-export const FRAME_PARAMETERS: readonly string[] = ['DRAW_FRAMEBUFFER_BINDING', 'READ_FRAMEBUFFER_BINDING', 'VIEWPORT', 'DRAW_BUFFER0', 'READ_BUFFER'];
+const FRAME_PARAMETERS: readonly string[] = ['DRAW_FRAMEBUFFER_BINDING', 'READ_FRAMEBUFFER_BINDING', 'VIEWPORT', 'DRAW_BUFFER0', 'READ_BUFFER'];
 
 type GL = WebGL2RenderingContext;
 type Snapshot = Map<string, unknown>;
@@ -220,7 +220,7 @@ function setVertexState(gl: GL, objects: HostObjects): WebGLVertexArrayObject {
 }
 
 /** What {@link setHostState} managed to set: host objects by name, and the steps the implementation rejected. */
-export interface HostSetup {
+interface HostSetup {
   objects: HostObjects;
   unsupported: string[];
   /** The host's vertex array (bound). */
@@ -232,7 +232,7 @@ export interface HostSetup {
  * allows; the steps it rejects are listed, their parameters still compared at their defaults) with
  * a `width × height` host framebuffer bound. Leaves no GL error.
  */
-export function setHostState(gl: GL, width: number, height: number): HostSetup {
+function setHostState(gl: GL, width: number, height: number): HostSetup {
   const objects = new HostObjects();
   const unsupported: string[] = [];
   const supported = (step: string, set: () => void) => {

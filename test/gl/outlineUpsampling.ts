@@ -33,7 +33,7 @@ export function drawOnWhite(gl: WebGL2RenderingContext, renderer: PenumbraRender
 }
 
 /** Within one texel (2 pixels), linear falloff over range 80 changes by 2 × 255 / 80 ≈ 6.4 steps. */
-export const OUTLINE_TOLERANCE = 8;
+const OUTLINE_TOLERANCE = 8;
 
 /**
  * The pixels on both sides of the box's lit side (x = 30.3) and far side (x = 40.4), away from the

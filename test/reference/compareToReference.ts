@@ -2,7 +2,7 @@ import { LIT, UMBRA, type ReferenceImage } from './softShadowReference';
 import type { ReferenceScene } from './scenes';
 
 /** Error figures of one class of pixels, in units of full light (see {@link compareToReference}). */
-export interface ErrorFigures {
+interface ErrorFigures {
   pixels: number;
   mean: number;
   p99: number;

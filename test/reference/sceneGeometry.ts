@@ -78,14 +78,6 @@ export function segmentsCross(px: number, py: number, sx: number, sy: number, ax
   return t >= 0 && t <= 1 && u >= 0 && u <= 1;
 }
 
-/** Whether segments p→q and a→b come closer than `distance`. */
-export function segmentsWithin(distance: number, px: number, py: number, qx: number, qy: number, ax: number, ay: number, bx: number, by: number): boolean {
-  const limit = distance * distance;
-  return pointSegmentDistanceSquared(px, py, ax, ay, bx, by) < limit || pointSegmentDistanceSquared(qx, qy, ax, ay, bx, by) < limit
-    || pointSegmentDistanceSquared(ax, ay, px, py, qx, qy) < limit || pointSegmentDistanceSquared(bx, by, px, py, qx, qy) < limit
-    || segmentsCross(px, py, qx, qy, ax, ay, bx, by);
-}
-
 /** Points where two edges cross strictly inside both. */
 function findCrossings(edges: Float64Array): Float64Array {
   const points: number[] = [];

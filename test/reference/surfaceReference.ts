@@ -37,7 +37,7 @@ export const SURFACE_BANDS: readonly Band[] = [
 ];
 
 /** The tangent-space normal map at a pixel centre (GL window coordinates): a field of slopes in every direction, OpenGL style (green up). */
-export function tangentNormal(fragX: number, fragY: number): [number, number, number] {
+function tangentNormal(fragX: number, fragY: number): [number, number, number] {
   const x = 0.6 * Math.sin(0.21 * fragX + 0.13 * fragY), y = 0.5 * Math.cos(0.17 * fragY - 0.07 * fragX);
   const length = Math.hypot(x, y, 1);
   return [x / length, y / length, 1 / length];
@@ -96,7 +96,7 @@ function f(value: number): string {
 }
 
 /** The lights of the reference, one at a time, with the hulls that shadow them (in world units, pixel space, y down). */
-export interface SurfaceCase {
+interface SurfaceCase {
   name: string;
   light: () => Light;
   hulls: () => Hull[];

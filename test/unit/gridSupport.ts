@@ -20,7 +20,7 @@ const STEPS = [[1, 0], [-1, 0], [0, 1], [0, -1]] as const;
  * Cells of `inSet` reachable from `seeds` by 4-steps within the rectangle [x0, x1) × [y0, y1);
  * returns a set of `y * W + x` keys (W a stride large enough for the rectangle).
  */
-export function flood4(seeds: Array<[number, number]>, inSet: (x: number, y: number) => boolean, x0: number, y0: number, x1: number, y1: number): Set<number> {
+function flood4(seeds: Array<[number, number]>, inSet: (x: number, y: number) => boolean, x0: number, y0: number, x1: number, y1: number): Set<number> {
   const W = x1 - x0 + 1, seen = new Set<number>(), stack = [...seeds];
   while (stack.length > 0) {
     const [x, y] = stack.pop()!;

@@ -69,10 +69,10 @@ export interface NormalsState {
 export type Engine = 'pixi' | 'phaser';
 
 /** GL objects made (createTexture, createFramebuffer, createBuffer, createVertexArray, createProgram, createRenderbuffer). */
-export type Created = number;
+type Created = number;
 
 /** What main.ts puts on `window`. */
-export interface EngineNormalsPage {
+interface EngineNormalsPage {
   /** Starts the engine (once), sets the state, renders one frame and returns RGBA at each canvas pixel. */
   read(engine: Engine, state: NormalsState, points: [number, number][]): Promise<[number, number, number, number][]>;
   /** GL objects made while rendering `frames` frames of the current state. */
@@ -85,7 +85,7 @@ export interface EngineNormalsPage {
 }
 
 /** What {@link EngineNormalsPage.acrossContextLoss} saw. */
-export interface ContextLossReport {
+interface ContextLossReport {
   before: [number, number, number, number][];
   after: [number, number, number, number][];
   /** Errors thrown by frames rendered while the context was lost, each with when. */

@@ -27,7 +27,7 @@ export interface RendererReport {
 export type PhaserRoute = 'data' | 'configure';
 
 /** What main.ts puts on `window`. */
-export interface EngineOptionsPage {
+interface EngineOptionsPage {
   pixi(options: PenumbraPluginOptions): Promise<RendererReport>;
   phaser(route: PhaserRoute, options: PenumbraPluginOptions): Promise<RendererReport>;
 }

@@ -73,7 +73,7 @@ export interface FollowHost {
 }
 
 /** What main.ts puts on `window`. */
-export interface EngineSetupPage {
+interface EngineSetupPage {
   /** Phaser 4 with its default game config (`type: AUTO`, no context) and the plugin. */
   phaserDefaultConfig(): Promise<ContextReport>;
   /** Phaser 4 through `penumbraGameConfig`, a light at world (x, y): the pixels at `points`. */
