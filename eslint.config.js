@@ -19,8 +19,8 @@ export default defineConfig(
       parserOptions: { projectService: true, tsconfigRootDir: import.meta.dirname },
     },
     rules: {
-      // GL objects are asserted non-null where they are made (createBuffer, getUniformLocation of a
-      // uniform the shader declares): a null there is a lost context, which the renderer handles as a whole.
+      // Values known to be there are asserted so: the location of a uniform the shader declares, a map
+      // entry just set, an engine's field once it has booted, the element a page is built with.
       '@typescript-eslint/no-non-null-assertion': 'off',
       // The public API checks the values of untyped JavaScript callers, which its types say cannot occur.
       '@typescript-eslint/no-unnecessary-condition': 'off',
