@@ -96,7 +96,7 @@ function spend(budget: SizeBudget, characters: number, path: string): void {
 }
 
 function describeClass(prototype: object): string {
-  const constructor: unknown = Object.getOwnPropertyDescriptor(prototype, 'constructor')?.value;
-  const name = typeof constructor === 'function' ? constructor.name : undefined;
+  const constructor = Object.getOwnPropertyDescriptor(prototype, 'constructor')?.value as { name?: unknown } | null | undefined;
+  const name = constructor?.name;
   return typeof name === 'string' && name !== '' ? name : 'unknown';
 }
