@@ -2,10 +2,12 @@
 type GlslValueType = 'float' | 'int' | 'bool' | 'vec2' | 'vec3' | 'vec4' | 'mat4';
 type GlslType = GlslValueType | `${GlslValueType}[${number}]`;
 
-/** A uniform that is not a sampler, as a pass's table declares it: its GLSL type and what it holds. */
+/**
+ * A uniform that is not a sampler, as a pass's table declares it: its GLSL type (what it holds is
+ * the entry's doc comment, which stays out of the bundle).
+ */
 export interface UniformDeclaration {
   readonly type: GlslType;
-  readonly meaning: string;
 }
 
 /**

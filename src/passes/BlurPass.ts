@@ -8,9 +8,12 @@ const SOURCE_UNIT = TEXTURE_UNITS.blur.u_source;
 
 /** The blur's uniforms but its sampler (shaders/blur.frag.glsl), which `BlurPass` sets through these names only. */
 export const BLUR_UNIFORMS = {
-  u_step: { type: 'vec2', meaning: 'one texel along the draw\'s axis, in texture coordinates' },
-  u_radius: { type: 'int', meaning: 'the taps on each side, ≤ MAX_BLUR_RADIUS' },
-  u_weights: { type: `float[${MAX_BLUR_RADIUS + 1}]`, meaning: 'the weight of the taps at ±k, summing to 1 over the taps' },
+  /** One texel along the draw's axis, in texture coordinates. */
+  u_step: { type: 'vec2' },
+  /** The taps on each side, ≤ MAX_BLUR_RADIUS. */
+  u_radius: { type: 'int' },
+  /** The weight of the taps at ±k, summing to 1 over the taps. */
+  u_weights: { type: `float[${MAX_BLUR_RADIUS + 1}]` },
 } as const satisfies Record<string, UniformDeclaration>;
 
 /** What the blur addresses in its program. */

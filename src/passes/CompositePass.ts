@@ -10,10 +10,14 @@ const { composite: units, compositeWithNormals: normalsUnits, compositeEdgeAware
 
 /** The composite's uniforms but the samplers (shaders/composite.frag.glsl), which `CompositePass` sets through these names only. */
 export const COMPOSITE_UNIFORMS = {
-  u_exposure: { type: 'float', meaning: 'the factor of the lit colour before tone mapping' },
-  u_toneMapping: { type: 'int', meaning: 'the curve\'s code (TONE_MAPPING_CODES)' },
-  u_dithering: { type: 'int', meaning: 'the dithering\'s code (DITHERING_CODES)' },
-  u_flipSurface: { type: 'bool', meaning: 'with normals: whether the material\'s row 0 is the top of the view' },
+  /** The factor of the lit colour before tone mapping. */
+  u_exposure: { type: 'float' },
+  /** The curve's code (TONE_MAPPING_CODES). */
+  u_toneMapping: { type: 'int' },
+  /** The dithering's code (DITHERING_CODES). */
+  u_dithering: { type: 'int' },
+  /** With normals: whether the material's row 0 is the top of the view. */
+  u_flipSurface: { type: 'bool' },
 } as const satisfies Record<string, UniformDeclaration>;
 
 /** What the composite addresses in its program: its uniforms and the samplers of every build. */

@@ -15,10 +15,16 @@ const RECORD_VERTICES = 2 * RECORD_POINTS;
  * `DebugPass` sets them through these names only.
  */
 const DEBUG_UNIFORMS = {
-  u_viewProjection: { type: 'mat4', meaning: 'world to clip space' },
-  u_color: { type: 'vec4', meaning: 'the outlines\' colour' },
-  u_quad: { type: 'vec2[3]', meaning: 'light quads: the light\'s quad, a corner and the two edge vectors (Light.writeQuad)' },
-  u_light: { type: 'vec3', meaning: 'light quads: the light pass\'s light, left unset (the outline ignores the varyings it feeds)' },
+  /** World to clip space. */
+  u_viewProjection: { type: 'mat4' },
+  /** The outlines' colour. */
+  u_color: { type: 'vec4' },
+  /** Light quads: the light's quad, a corner and the two edge vectors (Light.writeQuad). */
+  u_quad: { type: 'vec2[3]' },
+  /**
+   * Light quads: the light pass's light, left unset (the outline ignores the varyings it feeds).
+   */
+  u_light: { type: 'vec3' },
 } as const satisfies Record<string, UniformDeclaration>;
 
 /** What the debug pass addresses in its programs. */

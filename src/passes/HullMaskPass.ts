@@ -14,8 +14,10 @@ const OUTSIDE = new Float32Array(4);
  * shaders/debug.frag.glsl), which `HullMaskPass` sets through these names only.
  */
 export const HULL_MASK_UNIFORMS = {
-  u_viewProjection: { type: 'mat4', meaning: 'world to clip space' },
-  u_color: { type: 'vec4', meaning: 'the mask inside a hull: 1' },
+  /** World to clip space. */
+  u_viewProjection: { type: 'mat4' },
+  /** The mask inside a hull: 1. */
+  u_color: { type: 'vec4' },
 } as const satisfies Record<string, UniformDeclaration>;
 
 /** What the hull mask pass addresses in its program. */

@@ -73,8 +73,10 @@ const { u_color: COLOR_UNIT, u_normals: NORMAL_UNIT } = TEXTURE_UNITS.surface;
 
 /** The surface program's uniforms but its samplers (VERTEX and FRAGMENT below), which `SurfacePass` sets through these names only. */
 const SURFACE_UNIFORMS = {
-  u_frame: { type: 'vec3', meaning: '2 / width, 2 / height (target units), and 1, or -1 for a target drawn upside down' },
-  u_erase: { type: 'bool', meaning: 'whether the batch\'s sprites have no normal map: they write their coverage only, to erase' },
+  /** 2 / width, 2 / height (target units), and 1, or -1 for a target drawn upside down. */
+  u_frame: { type: 'vec3' },
+  /** Whether the batch's sprites have no normal map: they write their coverage only, to erase. */
+  u_erase: { type: 'bool' },
 } as const satisfies Record<string, UniformDeclaration>;
 
 /** What the surface pass addresses in its program. */
