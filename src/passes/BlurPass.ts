@@ -7,7 +7,7 @@ import { TEXTURE_UNITS } from './textureUnits';
 const SOURCE_UNIT = TEXTURE_UNITS.blur.u_source;
 
 /** The blur's uniforms but its sampler (shaders/blur.frag.glsl), which `BlurPass` sets through these names only. */
-export const BLUR_UNIFORMS = {
+const BLUR_UNIFORMS = {
   /** One texel along the draw's axis, in texture coordinates. */
   u_step: { type: 'vec2' },
   /** The taps on each side, ≤ MAX_BLUR_RADIUS. */

@@ -9,7 +9,7 @@ import { TEXTURE_UNITS } from './textureUnits';
 const { composite: units, compositeWithNormals: normalsUnits, compositeEdgeAware: edgeAwareUnits } = TEXTURE_UNITS;
 
 /** The composite's uniforms but the samplers (shaders/composite.frag.glsl), which `CompositePass` sets through these names only. */
-export const COMPOSITE_UNIFORMS = {
+const COMPOSITE_UNIFORMS = {
   /** The factor of the lit colour before tone mapping. */
   u_exposure: { type: 'float' },
   /** The curve's code (TONE_MAPPING_CODES). */

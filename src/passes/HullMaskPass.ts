@@ -13,7 +13,7 @@ const OUTSIDE = new Float32Array(4);
  * The hull mask program's uniforms but its sampler (shaders/records.vert.glsl, filled, with
  * shaders/debug.frag.glsl), which `HullMaskPass` sets through these names only.
  */
-export const HULL_MASK_UNIFORMS = {
+const HULL_MASK_UNIFORMS = {
   /** World to clip space. */
   u_viewProjection: { type: 'mat4' },
   /** The mask inside a hull: 1. */
