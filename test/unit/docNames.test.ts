@@ -52,7 +52,7 @@ function pathExists(path: string): boolean {
 }
 
 /** Why `span` names nothing that exists, or null when it does or is not a name. */
-export function missingName(span: string): string | null {
+function missingName(span: string): string | null {
   const script = /^npm run ([\w:-]+)/.exec(span);
   if (script) return scripts[script[1]] === undefined ? `no script "${script[1]}" in package.json` : null;
   if (/^\.?[\w.-]+(\/[\w.*-]+)+\/?$/.test(span) || /^[\w-]+\.(md|ts|glsl|json|mjs|js)$/.test(span)) {
