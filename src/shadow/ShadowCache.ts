@@ -121,7 +121,7 @@ export class ShadowCache {
   /** Writes what the passes read of a drawn light's filing and tiles into its draw. */
   private writeOutput(draw: LightDraw): void {
     const filing = draw.filing;
-    draw.hullCount = filing.hullCount + filing.movingCount;
+    draw.hullCount = filing.stillCount + filing.movingCount;
     draw.binRow = filing.row;
     if (draw.hullCount === 0 || draw.light instanceof DirectionalLight) return;
     filing.writeBinning(draw.binning);
@@ -182,11 +182,11 @@ export class ShadowCache {
    */
   private collectHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry): void {
     const light = draw.light, filing = draw.filing;
-    filing.hullCount = 0;
+    filing.stillCount = 0;
     filing.unclassified = false;
     if (!light.castsShadows) return;
     const count = this.findHullsInRange(draw, hulls, geometry, this.grid);
-    filing.hullCount = count;
+    filing.stillCount = count;
     this.bins.beginLight(filing.writeDisk(this.filedDisk));
     this.bins.addHulls(geometry, this.grid.found, count);
     this.bins.endLight(geometry, filing.stillSpan);

@@ -26,7 +26,7 @@ export class DirectionalFiling {
    */
   file(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeometry, bins: ShadowBins, grid: HullGrid, movingGrid: HullGrid | null): void {
     const light = draw.light as DirectionalLight, filing = draw.filing;
-    filing.hullCount = 0;
+    filing.stillCount = 0;
     if (!light.castsShadows) return;
     const box = writeUpstreamBox(draw, this.upstreamBox), extent = this.hullsExtent;
     extent.set(grid.extent);
@@ -51,7 +51,7 @@ function addHulls(draw: LightDraw, hulls: readonly Hull[], geometry: ShadowGeome
     const index = grid.found[i];
     if (!shadows(light, hulls, geometry, index)) continue;
     geometry.prepare(index);
-    if (bins.addDirectionalHull(geometry, index)) draw.filing.hullCount++;
+    if (bins.addDirectionalHull(geometry, index)) draw.filing.stillCount++;
   }
 }
 

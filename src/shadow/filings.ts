@@ -120,7 +120,7 @@ export class LightFiling {
   /** Whether the filing still holds: false until made, and once something it depends on changed. */
   current = false;
   /** Hulls in the still hulls' list, and in the moving list as last written ({@link UNWRITTEN}: not known). */
-  hullCount = 0;
+  stillCount = 0;
   /** The still hulls' records, and whether they were left unclassified (the budget spent, see `ShadowCache.classificationBudget`). */
   stillRecords = 0;
   unclassified = false;
