@@ -199,7 +199,6 @@ function concaveShape(between: Between): [number, number][] {
   return [[0, 0], [w, 0], [w, t], [t, t], [t, h], [0, h]];
 }
 
-
 /**
  * A top-down dungeon level like a game's, at 32-px tiles over the world: an outer wall, six rooms
  * between two inner walls across and one along, joined by doorways; the walls as boxes (each run

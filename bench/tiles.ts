@@ -5,7 +5,6 @@ import { traceOutlines } from '../src/geometry/tileOutlines';
 import { hullsFromTiles, TileHulls } from '../src/scene/tileHulls';
 import { createRandom } from '../test/reference/randomScenes';
 
-
 /** A perfect maze (depth-first, seeded) on (2n+1)² tiles: 1 = wall. Its walls are one group around one hole. */
 function maze(n: number): number[][] {
   const size = 2 * n + 1, random = createRandom(1);

@@ -1,7 +1,6 @@
 /** Helpers shared by the tile and grid-region tests: independent grid checks. */
 import type { CellGrid } from '../../src/geometry/gridRegions';
 
-
 /** A grid from rows of text: `#` solid, anything else empty. */
 export function textGrid(rows: readonly string[]): CellGrid {
   return { width: Math.max(0, ...rows.map((r) => r.length)), height: rows.length, solid: (x, y) => rows[y][x] === '#' };

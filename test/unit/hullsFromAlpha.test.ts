@@ -27,7 +27,6 @@ import type { Hull } from '../../src/scene/Hull';
 import { hullsFromAlpha, type AlphaImage, type HullsFromAlphaOptions } from '../../src/scene/hullsFromAlpha';
 import { createRandom } from '../reference/randomScenes';
 
-
 /** An RGBA image whose alpha at pixel (x, y) is `alpha(x, y)`; colour channels carry noise that must not matter. */
 function image(width: number, height: number, alpha: (x: number, y: number) => number): AlphaImage {
   const data = new Uint8ClampedArray(width * height * 4);

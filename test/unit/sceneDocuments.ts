@@ -29,7 +29,6 @@ export function referenceDocuments(): unknown[] {
   }));
 }
 
-
 /** A complete scene with every kind of light and every field set away from its default. */
 export function fullScene(): SceneDocument {
   return {
