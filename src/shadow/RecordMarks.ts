@@ -459,9 +459,9 @@ export class RecordMarks {
   }
 
   /**
-   * Marks in `mask` the tiles the convex polygon touches: per tile row, the x range of its corners
-   * in the row's band (both rows, for a corner on their boundary) and of its edges' crossings of the
-   * band's sides, in one pass over the edges.
+   * Marks in `mask` the tiles the convex polygon touches: per tile row, the x range of its chords at
+   * the band's two sides (`chordAt`) and of its corners within the band (both rows, for a corner on
+   * their boundary).
    */
   private markTouched(mask: Int32Array): void {
     const p = this.polygon, n = this.polygonCount, th = this.tileHeight, y0 = this.minY;
@@ -474,33 +474,45 @@ export class RecordMarks {
     left.fill(Infinity, firstRow, lastRow + 1);
     right.fill(-Infinity, firstRow, lastRow + 1);
     for (let k = 0; k < n; k++) {
-      const px = p[2 * k], py = p[2 * k + 1], q = k + 1 < n ? k + 1 : 0, qx = p[2 * q], qy = p[2 * q + 1];
-      // A corner on a boundary is in both rows (written by hand, as below: see Hot-path rules in
-      // docs/architecture.md).
-      const at = (py - y0) / th, row = Math.floor(at);
+      // A corner on a boundary is in both rows (written by hand: see Hot-path rules in docs/architecture.md).
+      const px = p[2 * k], py = p[2 * k + 1], at = (py - y0) / th, row = Math.floor(at);
       for (let r = row === at ? row - 1 : row; r <= row; r++) {
         if (r < firstRow || r > lastRow) continue;
         if (px < left[r]) left[r] = px;
         if (px > right[r]) right[r] = px;
       }
+    }
+    this.chordAt(firstRow, lastRow + 1);
+    const chordLeft = this.chordLeft, chordRight = this.chordRight, tw = this.tileWidth;
+    for (let j = firstRow; j <= lastRow; j++) {
+      const from = Math.min(left[j], chordLeft[j], chordLeft[j + 1]), to = Math.max(right[j], chordRight[j], chordRight[j + 1]);
+      if (from > to) continue;
+      const first = Math.max(0, Math.floor((from - this.minX) / tw)), last = Math.min(TILE_COLUMNS - 1, Math.floor((to - this.minX) / tw));
+      if (first <= last) markSpan(mask, j, first, last);
+    }
+  }
+
+  /**
+   * Sets `chordLeft[b]` and `chordRight[b]`, for the tile row boundaries `first ≤ b ≤ last`, to the
+   * ends of the convex polygon's chord at that height where its edges cross it (no corner on it),
+   * and to Infinity and −Infinity elsewhere: one pass over the edges, a multiplication per crossing.
+   */
+  private chordAt(first: number, last: number): void {
+    const p = this.polygon, n = this.polygonCount, th = this.tileHeight, y0 = this.minY;
+    const left = this.chordLeft, right = this.chordRight;
+    left.fill(Infinity, first, last + 1);
+    right.fill(-Infinity, first, last + 1);
+    for (let k = 0; k < n; k++) {
+      const px = p[2 * k], py = p[2 * k + 1], q = k + 1 < n ? k + 1 : 0, qx = p[2 * q], qy = p[2 * q + 1];
       if (py === qy) continue;
-      const low = Math.min(py, qy), high = Math.max(py, qy);
-      for (let b = Math.max(firstRow, Math.floor((low - y0) / th)), end = Math.min(lastRow + 1, Math.ceil((high - y0) / th)); b <= end; b++) {
+      const low = Math.min(py, qy), high = Math.max(py, qy), slope = (qx - px) / (qy - py);
+      for (let b = Math.max(first, Math.floor((low - y0) / th)), end = Math.min(last, Math.ceil((high - y0) / th)); b <= end; b++) {
         const y = y0 + b * th;
         if (y <= low || y >= high) continue;
-        const x = px + ((y - py) / (qy - py)) * (qx - px);
-        for (let r = b - 1; r <= b; r++) {
-          if (r < firstRow || r > lastRow) continue;
-          if (x < left[r]) left[r] = x;
-          if (x > right[r]) right[r] = x;
-        }
+        const x = px + (y - py) * slope;
+        if (x < left[b]) left[b] = x;
+        if (x > right[b]) right[b] = x;
       }
-    }
-    const tw = this.tileWidth;
-    for (let j = firstRow; j <= lastRow; j++) {
-      if (left[j] > right[j]) continue;
-      const first = Math.max(0, Math.floor((left[j] - this.minX) / tw)), last = Math.min(TILE_COLUMNS - 1, Math.floor((right[j] - this.minX) / tw));
-      if (first <= last) markSpan(mask, j, first, last);
     }
   }
 
@@ -508,7 +520,7 @@ export class RecordMarks {
    * Marks in `mask` the tiles the convex polygon wholly covers: within a row's band its left edge is
    * convex and its right edge concave in y, so the x it covers at every height of the band lies
    * between the larger of its chord's left ends at the band's two sides and the smaller of the right
-   * ends (when it spans the band). The chords come from one pass over the edges.
+   * ends (when it spans the band).
    */
   private markCovered(mask: Int32Array): void {
     const p = this.polygon, n = this.polygonCount, th = this.tileHeight, y0 = this.minY;
@@ -518,24 +530,14 @@ export class RecordMarks {
     // The tile row boundaries within the polygon's height.
     const first = Math.max(0, Math.ceil((minY - y0) / th)), last = Math.min(TILE_ROWS, Math.floor((maxY - y0) / th));
     if (last - first < 1) return;
+    this.chordAt(first, last);
     const left = this.chordLeft, right = this.chordRight;
-    left.fill(Infinity, first, last + 1);
-    right.fill(-Infinity, first, last + 1);
     for (let k = 0; k < n; k++) {
-      const px = p[2 * k], py = p[2 * k + 1], q = k + 1 < n ? k + 1 : 0, qx = p[2 * q], qy = p[2 * q + 1];
-      const b = Math.round((py - y0) / th);
+      // A corner on a boundary is that chord's end.
+      const px = p[2 * k], py = p[2 * k + 1], b = Math.round((py - y0) / th);
       if (b >= first && b <= last && y0 + b * th === py) {
         if (px < left[b]) left[b] = px;
         if (px > right[b]) right[b] = px;
-      }
-      if (py === qy) continue;
-      const low = Math.min(py, qy), high = Math.max(py, qy);
-      for (let c = Math.max(first, Math.floor((low - y0) / th)), end = Math.min(last, Math.ceil((high - y0) / th)); c <= end; c++) {
-        const y = y0 + c * th;
-        if (y <= low || y >= high) continue;
-        const x = px + ((y - py) / (qy - py)) * (qx - px);
-        if (x < left[c]) left[c] = x;
-        if (x > right[c]) right[c] = x;
       }
     }
     const tw = this.tileWidth;
