@@ -125,10 +125,10 @@ export class LightTiles {
       for (let record = first; record < end; record++) {
         const apart = marks.loadRecord(geometry.records, record);
         if (marks.illuminated()) marks.markInsideLoaded();
+        if (!marks.solid) marks.markRecordBox();
         if (!apart) continue;
         marks.markShadowRegion();
         marks.markUmbra();
-        if (!marks.solid) marks.markRecordBox();
       }
     }
   }
@@ -222,12 +222,18 @@ export class LightTiles {
         continue;
       }
       for (let record = geometry.firstRecords[hull], end = record + geometry.recordCounts[hull]; record < end; record++) {
-        if (!marks.loadRecord(geometry.records, record)) continue;
-        marks.markShadowRegion();
+        const apart = marks.loadRecord(geometry.records, record);
         if (!marks.solid) marks.markRecordBox();
+        if (apart) marks.markShadowRegion();
       }
     }
     const at = row * TILE_ROWS, dark = this.nextDark, exact = this.nextExact, general = this.nextGeneral, held = this.nextHeld;
+    if (marks.diskHidden && marks.solid) {
+      // A moving record holds a Solid light's disk: every tile within the reach is dark.
+      for (let j = 0; j < TILE_ROWS; j++) dark[j] = FULL_ROW & ~this.shown.outside[at + j];
+      this.show(row, dark, this.noTiles, this.noTiles, this.noTiles, 0, false);
+      return;
+    }
     const illuminated = marks.illuminated();
     for (let j = 0; j < TILE_ROWS; j++) {
       const keptDark = this.keptDark[at + j], keptExact = this.keptExact[at + j], keptHeld = this.keptHeld[at + j];

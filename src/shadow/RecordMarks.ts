@@ -54,6 +54,12 @@ export class RecordMarks {
   solid = true;
   /** Whether a record added since `begin` met the disk: every exact tile is then general. */
   diskMet = false;
+  /**
+   * Whether a record added since `begin` holds the whole disk, for a light that is not Occluded:
+   * every segment from a pixel outside that record to the disk ends inside it, so every tile is
+   * dark but where a hull may hold the pixel (see `loadRecord`).
+   */
+  diskHidden = false;
   /** The rasterization's x range per tile row (touched) and per tile row boundary (the polygon's chord there). */
   private readonly rowLeft = new Float64Array(TILE_ROWS);
   private readonly rowRight = new Float64Array(TILE_ROWS);
@@ -116,6 +122,7 @@ export class RecordMarks {
     this.solid = shadowType === SHADOW_TYPE_CODES.solid;
     this.holderPass = shadowType === SHADOW_TYPE_CODES.occluded;
     this.diskMet = false;
+    this.diskHidden = false;
     this.shadowed.fill(0);
     this.darkened.fill(0);
     this.occupied.fill(0);
@@ -159,7 +166,8 @@ export class RecordMarks {
   /**
    * Loads the record's distinct corners and the half-planes of its shadow region and umbra; false
    * when the disk meets the record (its shadow region is then every tile, which it marks, and it
-   * has no umbra taken).
+   * has no umbra taken, unless it holds the whole disk: then every tile is in its umbra, which it
+   * marks, but for an Occluded light, whose pixels inside hulls see past their holders).
    */
   loadRecord(records: Float32Array, record: number): boolean {
     this.loadPoints(records, record);
@@ -168,6 +176,10 @@ export class RecordMarks {
     if (this.diskMeetsRecord()) {
       this.shadowed.fill(FULL_ROW);
       this.diskMet = true;
+      if (!this.holderPass && this.recordHoldsDisk()) {
+        this.darkened.fill(FULL_ROW);
+        this.diskHidden = true;
+      }
       return false;
     }
     this.findPlanes();
@@ -239,6 +251,18 @@ export class RecordMarks {
       if (ex * (cy - ay) - ey * (cx - ax) < 0) inside = false;
     }
     return inside;
+  }
+
+  /** Whether the loaded record holds the disk widened by twice the slack: the centre at least that far inside every edge. */
+  private recordHoldsDisk(): boolean {
+    const xs = this.xs, ys = this.ys, n = this.pointCount, cx = this.centreX, cy = this.centreY, inner = this.radius + this.slack;
+    if (n < 3) return false;
+    for (let k = 0; k < n; k++) {
+      const ax = xs[k], ay = ys[k], ex = xs[(k + 1) % n] - ax, ey = ys[(k + 1) % n] - ay, length = Math.sqrt(ex * ex + ey * ey);
+      // The centre's distance inside the counter-clockwise edge.
+      if (length > 0 && (ex * (cy - ay) - ey * (cx - ax)) / length < inner) return false;
+    }
+    return true;
   }
 
   /**

@@ -39,6 +39,25 @@ describe('LightTiles', () => {
     expect(illuminated.counts[TILE_CLASSES.lean]).toBeGreaterThan(0);
   });
 
+  it('draws no exact tile for a disk wholly inside a hull but for an Occluded light: dark, and held where a hull is for an Illuminated one', () => {
+    // A torch inside a closed door, a crate before it.
+    const hulls = [box(90, 94, 40, 12), box(140, 90, 10, 10)];
+    const solid = check({ hulls, centre: [110, 100], radius: 5, reach: 80, solid: true });
+    expect(solid.wrong).toEqual([]);
+    expect(solid.counts[TILE_CLASSES.dark] + solid.counts[TILE_CLASSES.outside]).toBe(TILE_COLUMNS * TILE_ROWS);
+    const illuminated = check({ hulls, centre: [110, 100], radius: 5, reach: 80, solid: false });
+    expect(illuminated.wrong).toEqual([]);
+    expect(illuminated.counts[TILE_CLASSES.lean] + illuminated.counts[TILE_CLASSES.exact]).toBe(0);
+    expect(illuminated.counts[TILE_CLASSES.held]).toBeGreaterThan(0);
+    const occluded = check({ hulls, centre: [110, 100], radius: 5, reach: 80, solid: false, occluded: true });
+    expect(occluded.wrong).toEqual([]);
+    expect(occluded.counts[TILE_CLASSES.exact]).toBeGreaterThan(0);
+    // Reaching out of the door, the disk is seen past it: exact tiles.
+    const peeking = check({ hulls, centre: [110, 100], radius: 7, reach: 80, solid: true });
+    expect(peeking.wrong).toEqual([]);
+    expect(peeking.counts[TILE_CLASSES.exact]).toBeGreaterThan(0);
+  });
+
   it('holds dark tiles with a hull in them for a light that lights the inside of hulls', () => {
     const hulls = [box(120, 80, 10, 40), box(160, 95, 8, 8)];
     const solid = classify({ hulls, centre: [100, 100], radius: 3, reach: 90, solid: true }).classes;
