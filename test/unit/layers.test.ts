@@ -41,7 +41,7 @@ function sourceFiles(dir: string): string[] {
 /** Relative imports in a source file's text that resolve inside src/, as absolute paths with `.ts`. */
 function importsIn(file: string, text: string): string[] {
   const found: string[] = [];
-  for (const match of text.matchAll(/(?:^|\n)\s*(?:import|export)\b[^'"]*?from\s+'(\.[^']+)'/g)) {
+  for (const match of text.matchAll(/(?:^|\n)\s*(?:import|export)\b[^'"]*?from\s+['"](\.[^'"]+)['"]/g)) {
     const target = resolve(dirname(file), match[1]);
     if (target.startsWith(SRC)) found.push(target.endsWith('.ts') ? target : `${target}.ts`);
   }
@@ -75,5 +75,6 @@ describe('source layers', () => {
     ]);
     expect(backwardImports(sceneFile, "export { isSimplePolygon } from '../geometry/polygon';")).toEqual([]);
     expect(backwardImports(join(SRC, 'integrations', 'pixi', 'Occluder.ts'), "import type { Hull } from '../../scene/Hull';")).toHaveLength(1);
+    expect(backwardImports(geometryFile, 'import type { Hull } from "../scene/Hull";')).toHaveLength(1);
   });
 });
