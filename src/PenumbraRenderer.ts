@@ -115,7 +115,7 @@ export class PenumbraRenderer {
 
   /**
    * The curve from the lit colour × exposure to output colour, one of {@link ToneMapping}:
-   * `'none'` (clipped at 1, as before), `'reinhard'`, `'aces'`. Applies where the renderer composites.
+   * `'none'` (each channel clipped at 1), `'reinhard'`, `'aces'`. Applies where the renderer composites.
    */
   get toneMapping(): ToneMapping {
     return this.look.toneMapping;
