@@ -5,7 +5,8 @@ import { describe, expect, it } from 'vitest';
 /**
  * The maintainers' guides name code: every name in backticks must exist, so that a rename that
  * forgets a guide fails here. A span is checked by its shape: `npm run x` (a script of package.json),
- * a path (a file or folder of the repository; `*` matches within a name), or an identifier, possibly
+ * a path (a file or folder of the repository; `*` matches within a name; a build output listed in
+ * .gitignore counts, since a fresh clone has not built it), or an identifier, possibly
  * dotted or called (`HostFrame.enter`, `draw()`: each part must occur as a word in the sources).
  * Other spans (expressions, values, options) are not names and are left alone, as are fenced blocks.
  */
@@ -42,11 +43,13 @@ function entries(dir: string, prefix = ''): string[] {
   });
 }
 const repository = entries(ROOT);
+const buildOutputs = readFileSync(join(ROOT, '.gitignore'), 'utf8').split('\n').map((line) => line.trim())
+  .filter((line) => line.endsWith('/')).map((line) => line.replace(/\/$/, ''));
 
 /** Whether `path` is a file or folder of the repository, given from its root or by its last parts (`passes/LightPass.ts`). */
 function pathExists(path: string): boolean {
   const trimmed = path.replace(/\/$/, '');
-  if (existsSync(join(ROOT, trimmed))) return true;
+  if (existsSync(join(ROOT, trimmed)) || buildOutputs.includes(trimmed)) return true;
   const pattern = new RegExp(`(^|/)${trimmed.replace(/[.]/g, '\\.').replace(/\*/g, '[^/]*')}$`);
   return repository.some((entry) => pattern.test(entry));
 }
