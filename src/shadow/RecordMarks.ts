@@ -60,18 +60,24 @@ export class RecordMarks {
    * dark but where a hull may hold the pixel (see `loadRecord`).
    */
   diskHidden = false;
-  /** The rasterization's x range per tile row (touched) and per tile row boundary (the polygon's chord there). */
-  private readonly rowLeft = new Float64Array(TILE_ROWS);
-  private readonly rowRight = new Float64Array(TILE_ROWS);
+  /**
+   * The rasterization's x range per tile row (touched: ±Infinity between uses, `markTouched` puts
+   * back what it wrote) and per tile row boundary (the polygon's chord there), in tile units.
+   */
+  private readonly rowLeft = new Float64Array(TILE_ROWS).fill(Infinity);
+  private readonly rowRight = new Float64Array(TILE_ROWS).fill(-Infinity);
   private readonly chordLeft = new Float64Array(TILE_ROWS + 1);
   private readonly chordRight = new Float64Array(TILE_ROWS + 1);
-  /** Polygon scratch (x, y pairs), ping-ponged by the clipping. */
+  /**
+   * Polygon scratch (x, y pairs), ping-ponged by the clipping, in tile units: u = (x − minX) / tile
+   * width, v = (y − minY) / tile height, so tile row j is v ∈ [j, j + 1].
+   */
   private polygon = new Float64Array(2 * POLYGON_CAPACITY);
   private clipped = new Float64Array(2 * POLYGON_CAPACITY);
   private polygonCount = 0;
-  /** The polygon's least and greatest y, as `measurePolygonHeight` found them. */
-  private polygonMinY = 0;
-  private polygonMaxY = 0;
+  /** The polygon's least and greatest v, as `measurePolygonHeight` found them. */
+  private polygonMinV = 0;
+  private polygonMaxV = 0;
   /** The loaded record's corners without repeats, `pointCount` of them, counter-clockwise. */
   private readonly xs = new Float64Array(RECORD_POINTS);
   private readonly ys = new Float64Array(RECORD_POINTS);
@@ -426,17 +432,22 @@ export class RecordMarks {
     for (let j = firstRow; j <= lastRow; j++) markSpan(this.occupied, j, first, last);
   }
 
-  /** Sets the polygon to the light's box clipped by `count` half-planes. */
+  /** Sets the polygon to the light's box clipped by `count` half-planes (world units), in tile units. */
   private clipBox(planes: Float64Array, count: number): void {
-    const p = this.polygon, x0 = this.minX, y0 = this.minY, x1 = x0 + TILE_COLUMNS * this.tileWidth, y1 = y0 + TILE_ROWS * this.tileHeight;
-    p[0] = x0; p[1] = y0; p[2] = x1; p[3] = y0; p[4] = x1; p[5] = y1; p[6] = x0; p[7] = y1;
+    const p = this.polygon;
+    p[0] = 0; p[1] = 0; p[2] = TILE_COLUMNS; p[3] = 0; p[4] = TILE_COLUMNS; p[5] = TILE_ROWS; p[6] = 0; p[7] = TILE_ROWS;
     this.polygonCount = 4;
     for (let k = 0; k < count && this.polygonCount > 0; k++) this.clip(planes, k);
   }
 
-  /** Clips the polygon to the `k`-th of `planes`, `a·x + b·y ≤ c` (Sutherland–Hodgman; a convex polygon stays convex); a plane it lies within changes nothing. */
+  /**
+   * Clips the polygon to the `k`-th of `planes`, `a·x + b·y ≤ c` in world units (Sutherland–Hodgman;
+   * a convex polygon stays convex); a plane it lies within changes nothing.
+   */
   private clip(planes: Float64Array, k: number): void {
-    const a = planes[3 * k], b = planes[3 * k + 1], c = planes[3 * k + 2];
+    // The plane in tile units: x = minX + u · tile width, y = minY + v · tile height.
+    const wa = planes[3 * k], wb = planes[3 * k + 1];
+    const a = wa * this.tileWidth, b = wb * this.tileHeight, c = planes[3 * k + 2] - wa * this.minX - wb * this.minY;
     const from = this.polygon, to = this.clipped, n = this.polygonCount;
     let outside = false;
     for (let i = 0; i < n; i++) {
@@ -470,49 +481,46 @@ export class RecordMarks {
     this.polygonCount = m;
   }
 
-  /** Sets `polygonMinY` and `polygonMaxY` (fields, not a result: see Hot-path rules in docs/architecture.md). */
+  /** Sets `polygonMinV` and `polygonMaxV` (fields, not a result: see Hot-path rules in docs/architecture.md). */
   private measurePolygonHeight(): void {
     const p = this.polygon;
-    let minY = Infinity, maxY = -Infinity;
+    let minV = Infinity, maxV = -Infinity;
     for (let k = 0; k < this.polygonCount; k++) {
-      minY = Math.min(minY, p[2 * k + 1]);
-      maxY = Math.max(maxY, p[2 * k + 1]);
+      minV = Math.min(minV, p[2 * k + 1]);
+      maxV = Math.max(maxV, p[2 * k + 1]);
     }
-    this.polygonMinY = minY;
-    this.polygonMaxY = maxY;
+    this.polygonMinV = minV;
+    this.polygonMaxV = maxV;
   }
 
   /**
-   * Marks in `mask` the tiles the convex polygon touches: per tile row, the x range of its chords at
-   * the band's two sides (`chordAt`) and of its corners within the band (both rows, for a corner on
-   * their boundary).
+   * Marks in `mask` the tiles the convex polygon touches: per tile row, the x range of its edges'
+   * parts within the row's band (closed: an edge ending on a boundary is in both rows), which for a
+   * convex polygon is its own.
    */
   private markTouched(mask: Int32Array): void {
-    const p = this.polygon, n = this.polygonCount, th = this.tileHeight, y0 = this.minY;
+    const p = this.polygon, n = this.polygonCount, left = this.rowLeft, right = this.rowRight;
     if (n < 3) return;
-    this.measurePolygonHeight();
-    const minY = this.polygonMinY, maxY = this.polygonMaxY;
-    const firstRow = Math.max(0, Math.floor((minY - y0) / th)), lastRow = Math.min(TILE_ROWS - 1, Math.floor((maxY - y0) / th));
-    if (firstRow > lastRow) return;
-    const left = this.rowLeft, right = this.rowRight;
-    left.fill(Infinity, firstRow, lastRow + 1);
-    right.fill(-Infinity, firstRow, lastRow + 1);
+    let firstRow = TILE_ROWS, lastRow = -1;
     for (let k = 0; k < n; k++) {
-      // A corner on a boundary is in both rows (written by hand: see Hot-path rules in docs/architecture.md).
-      const px = p[2 * k], py = p[2 * k + 1], at = (py - y0) / th, row = Math.floor(at);
-      for (let r = row === at ? row - 1 : row; r <= row; r++) {
-        if (r < firstRow || r > lastRow) continue;
-        if (px < left[r]) left[r] = px;
-        if (px > right[r]) right[r] = px;
+      const pu = p[2 * k], pv = p[2 * k + 1], q = k + 1 < n ? k + 1 : 0, qu = p[2 * q], qv = p[2 * q + 1];
+      const low = Math.min(pv, qv), high = Math.max(pv, qv), flat = low === high, slope = flat ? 0 : (qu - pu) / (qv - pv);
+      const from = Math.max(0, Math.ceil(low) - 1), to = Math.min(TILE_ROWS - 1, Math.floor(high));
+      if (from < firstRow) firstRow = from;
+      if (to > lastRow) lastRow = to;
+      for (let j = from; j <= to; j++) {
+        // The edge's ends within the band [j, j + 1] (a flat edge: its two ends).
+        const ua = flat ? pu : pu + ((j > low ? j : low) - pv) * slope, ub = flat ? qu : pu + ((j + 1 < high ? j + 1 : high) - pv) * slope;
+        const least = ua < ub ? ua : ub, most = ua < ub ? ub : ua;
+        if (least < left[j]) left[j] = least;
+        if (most > right[j]) right[j] = most;
       }
     }
-    this.chordAt(firstRow, lastRow + 1);
-    const chordLeft = this.chordLeft, chordRight = this.chordRight, tw = this.tileWidth;
     for (let j = firstRow; j <= lastRow; j++) {
-      const from = Math.min(left[j], chordLeft[j], chordLeft[j + 1]), to = Math.max(right[j], chordRight[j], chordRight[j + 1]);
-      if (from > to) continue;
-      const first = Math.max(0, Math.floor((from - this.minX) / tw)), last = Math.min(TILE_COLUMNS - 1, Math.floor((to - this.minX) / tw));
+      const first = Math.max(0, Math.floor(left[j])), last = Math.min(TILE_COLUMNS - 1, Math.floor(right[j]));
       if (first <= last) markSpan(mask, j, first, last);
+      left[j] = Infinity;
+      right[j] = -Infinity;
     }
   }
 
@@ -522,7 +530,7 @@ export class RecordMarks {
    * and to Infinity and −Infinity elsewhere: one pass over the edges, a multiplication per crossing.
    */
   private chordAt(first: number, last: number): void {
-    const p = this.polygon, n = this.polygonCount, th = this.tileHeight, y0 = this.minY;
+    const p = this.polygon, n = this.polygonCount;
     const left = this.chordLeft, right = this.chordRight;
     left.fill(Infinity, first, last + 1);
     right.fill(-Infinity, first, last + 1);
@@ -530,10 +538,9 @@ export class RecordMarks {
       const px = p[2 * k], py = p[2 * k + 1], q = k + 1 < n ? k + 1 : 0, qx = p[2 * q], qy = p[2 * q + 1];
       if (py === qy) continue;
       const low = Math.min(py, qy), high = Math.max(py, qy), slope = (qx - px) / (qy - py);
-      for (let b = Math.max(first, Math.floor((low - y0) / th)), end = Math.min(last, Math.ceil((high - y0) / th)); b <= end; b++) {
-        const y = y0 + b * th;
-        if (y <= low || y >= high) continue;
-        const x = px + (y - py) * slope;
+      for (let b = Math.max(first, Math.floor(low)), end = Math.min(last, Math.ceil(high)); b <= end; b++) {
+        if (b <= low || b >= high) continue;
+        const x = px + (b - py) * slope;
         if (x < left[b]) left[b] = x;
         if (x > right[b]) right[b] = x;
       }
@@ -547,28 +554,25 @@ export class RecordMarks {
    * ends (when it spans the band).
    */
   private markCovered(mask: Int32Array): void {
-    const p = this.polygon, n = this.polygonCount, th = this.tileHeight, y0 = this.minY;
+    const p = this.polygon, n = this.polygonCount;
     if (n < 3) return;
     this.measurePolygonHeight();
-    const minY = this.polygonMinY, maxY = this.polygonMaxY;
     // The tile row boundaries within the polygon's height.
-    const first = Math.max(0, Math.ceil((minY - y0) / th)), last = Math.min(TILE_ROWS, Math.floor((maxY - y0) / th));
+    const first = Math.max(0, Math.ceil(this.polygonMinV)), last = Math.min(TILE_ROWS, Math.floor(this.polygonMaxV));
     if (last - first < 1) return;
     this.chordAt(first, last);
     const left = this.chordLeft, right = this.chordRight;
     for (let k = 0; k < n; k++) {
       // A corner on a boundary is that chord's end.
-      const px = p[2 * k], py = p[2 * k + 1], b = Math.round((py - y0) / th);
-      if (b >= first && b <= last && y0 + b * th === py) {
-        if (px < left[b]) left[b] = px;
-        if (px > right[b]) right[b] = px;
+      const pu = p[2 * k], pv = p[2 * k + 1], b = Math.round(pv);
+      if (b >= first && b <= last && b === pv) {
+        if (pu < left[b]) left[b] = pu;
+        if (pu > right[b]) right[b] = pu;
       }
     }
-    const tw = this.tileWidth;
     for (let j = first; j < last; j++) {
-      if (y0 + j * th < minY || y0 + (j + 1) * th > maxY) continue;
       const from = Math.max(left[j], left[j + 1]), to = Math.min(right[j], right[j + 1]);
-      const firstTile = Math.max(0, Math.ceil((from - this.minX) / tw)), lastTile = Math.min(TILE_COLUMNS - 1, Math.floor((to - this.minX) / tw) - 1);
+      const firstTile = Math.max(0, Math.ceil(from)), lastTile = Math.min(TILE_COLUMNS - 1, Math.floor(to) - 1);
       if (firstTile <= lastTile) markSpan(mask, j, firstTile, lastTile);
     }
   }
