@@ -78,22 +78,9 @@ bool inUnion(float angle) {
   return false;
 }
 
-// The number of records seen past, and the last of them: with one (the common case, a hull near
-// the disk) and the union whole, the sweep reads that record alone rather than scanning the bin.
-int pastCount;
-int pastRecord;
-
-bool sweepsOneRecord() {
-  return pastCount == 1 && !unionOverflowed;
-}
-
 // The next break after `after`, at most `limit`.
 float nextBreak(float after, float limit) {
   float next = insideDisk ? limit : nextUnionBreak(after, limit);
-  if (sweepsOneRecord()) {
-    loadRecord(pastRecord);
-    return min(nextRecordBreak(after, next), limit);
-  }
   for (int i = 0; i < binCount; i++) {
     ivec2 records = recordsOfEntry(i);
     for (int record = records.x; record <= records.y; record++) {
@@ -128,11 +115,7 @@ float hiddenAlong(float angle) {
   float along = dot(c, direction), off = cross2(c, direction);
   float halfChord = sqrt(max(0.0, radius * radius - off * off));
   float far = max(0.0, along + halfChord), nearest = far;
-  if (sweepsOneRecord()) {
-    loadRecord(pastRecord);
-    nearest = min(nearest, entryDistance(direction));
-  }
-  for (int i = 0; i < (sweepsOneRecord() ? 0 : binCount); i++) {
+  for (int i = 0; i < binCount; i++) {
     ivec2 records = recordsOfEntry(i);
     for (int record = records.x; record <= records.y; record++) {
       if (!loadRecord(record)) continue;

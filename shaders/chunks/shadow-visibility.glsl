@@ -12,17 +12,19 @@
 // such records hide exactly the union of their intervals, kept here as a cover anchored at each
 // side of the disk plus up to MAX_MIDDLES floating intervals: no max, no sum.
 //
-// A record the pixel sees past (the disk overlaps it, or the pixel looks past it at the disk, or
-// the pixel is inside the disk) hides only the far part of each wedge. When those records are one
-// record or one convex hull's fan, and the union has no middle, what they hide in the directions
-// outside the union is a circle–polygon area in closed form (the chunk shadow-behind); otherwise
-// the hidden area is an integral over those directions of the part beyond the nearest record (the
-// chunk shadow-quadrature).
+// A record the pixel sees past hides only the far part of each wedge. Only a record that reaches
+// into the disk can be: from a pixel outside the disk, a record apart from it hides nothing unless
+// the disk lies wholly beyond it in its wedge (it is then in front), and from a pixel inside the
+// disk only records reaching into it hide anything. When the records seen past are one record or
+// one convex hull's fan, what they hide in the directions outside the union is a circle–polygon
+// area in closed form (the chunk shadow-behind), taken over each gap between the union's intervals;
+// otherwise the hidden area is an integral over those directions of the part beyond the nearest
+// record (the chunk shadow-quadrature).
 //
 // An interval that finds MAX_MIDDLES middles taken stays out of the union (which then covers less
-// than the records do) and marks it overflowed: the pixel then sums the union of every record in
-// front by a sweep over the bin (coveredBySweep), or, with records seen past, the quadrature covers
-// the left-out intervals' directions too. Either way a row of posts before a wide disk is exact.
+// than the records do) and marks it overflowed: the pixel then walks the union's intervals by a
+// sweep over the bin (visibleFraction), or, with several hulls seen past, the quadrature covers the
+// left-out intervals' directions too. Either way a row of posts before a wide disk is exact.
 //
 // Accuracy: exact (to float rounding and G's polynomial, 2.2e-4) for pixels whose records are all
 // in front, however many disjoint intervals they hide, and for the closed form; the quadrature is
@@ -302,13 +304,14 @@ bool diskBeyond(vec2 a, vec2 b) {
   return !inside && segmentDistance2(c, vec2(0.0), a) >= r2 && segmentDistance2(c, vec2(0.0), b) >= r2 && segmentDistance2(c, a, b) >= r2;
 }
 
-// Whether the loaded record reaches into the disk: the centre within a radius of one of its edges.
+// Whether the loaded record reaches into the disk: the centre within a radius of one of its edges,
+// or inside it (left of every edge).
 bool recordMeetsDisk() {
   vec2 c = centre - pixel;
   vec4 ex = nextXs - xs, ey = nextYs - ys, cx = c.x - xs, cy = c.y - ys;
   vec4 along = clamp((cx * ex + cy * ey) / max(ex * ex + ey * ey, vec4(1e-20)), 0.0, 1.0);
   vec4 offX = cx - along * ex, offY = cy - along * ey;
-  return any(lessThan(offX * offX + offY * offY, vec4(radius * radius)));
+  return any(lessThan(offX * offX + offY * offY, vec4(radius * radius))) || all(greaterThanEqual(ex * cy - ey * cx, vec4(0.0)));
 }
 
 // The directions the records seen past cover, as angles from the direction to the centre: what
@@ -364,6 +367,10 @@ int classifyRecord(out float low, out float high) {
   return IN_FRONT;
 #endif
   if (diskBeyond(lowEnd, highEnd)) return IN_FRONT;
+  // Some of the disk lies in the wedge before the record. A record apart from the disk then hides
+  // nothing: from a pixel it hides any of the disk from, the disk lies wholly beyond it in its wedge
+  // (docs/shadows.md, "lean"). So only records that reach into the disk are seen past.
+  if (!recordMeetsDisk()) return HIDES_NOTHING;
   addPastSpan(lowEnd, highEnd);
   return SEEN_PAST;
 }
@@ -434,8 +441,9 @@ bool sweptPixel = false;
 #include "shadow-behind"
 #include "shadow-quadrature"
 
-// The records seen past, when they are one record or one convex hull's fan (else pastFirst is -1):
-// what hiddenBehind takes.
+// The number of records seen past, and when they are one record or one convex hull's fan (else
+// pastFirst is -1), what hiddenBehind takes.
+int pastCount;
 int pastFirst;
 int pastLast;
 bool pastIsFan;
@@ -453,7 +461,6 @@ void addPastRecord(int record, ivec2 entryRecords) {
     pastFirst = -1;
   }
   pastCount++;
-  pastRecord = record;
 }
 
 // Empties the union and the directions seen past.
@@ -501,31 +508,35 @@ void beginShadow() {
   binCount = stillCount + int(binEntries.w);
 }
 
-// The disk area (fraction) the records in front hide, exactly, however many disjoint intervals their
-// union has (for a pixel whose records are all in front): from the low side, each step walks the bin
-// once, extending the covered run from x by the intervals that start at or before it, or else
-// moving x to the start of the next one. x only grows, so it takes at most two steps an interval.
-float coveredBySweep() {
-  float x = -1.0, covered = 0.0;
-  while (x < 1.0) {
-    float reach = x, next = 1.0;
-    for (int i = 0; i < binCount; i++) {
-      ivec2 records = recordsOfEntry(i);
-      for (int record = records.x; record <= records.y; record++) {
-        float low, high;
-        if (!loadRecord(record) || classifyRecord(low, high) != IN_FRONT) continue;
-        if (low <= x) reach = max(reach, high);
-        else next = min(next, low);
-      }
-    }
-    if (reach > x) covered += diskAreaBelow(reach) - diskAreaBelow(x);
-    x = reach > x ? reach : next;
+// One step of a walk up the union's intervals from chord height x: the end of the interval that
+// holds x (reach, x when none does) and the start of the next one above x (next, 1 when none is).
+void unionStep(float x, inout float reach, inout float next) {
+  if (x < lowCover) reach = lowCover;
+  if (x >= highCover) reach = 1.0;
+  else next = min(next, highCover);
+  for (int k = 0; k < MAX_MIDDLES; k++) {
+    if (k >= middleCount) break;
+    if (middles[k].x <= x && x < middles[k].y) reach = middles[k].y;
+    else if (middles[k].x > x) next = min(next, middles[k].x);
   }
-  return covered;
 }
 
 // The fraction of the disk visible from the pixel, in one pass over the pixel's bin (see
 // shadowVisibility); `holds` tells whether a hull was found holding the pixel (in the first pass).
+//
+// The first walk over the bin merges the records in front into the union and finds the records
+// seen past. The hidden area is then the union's, plus, with one hull seen past, what it hides in
+// the directions the union leaves open: in closed form, one window of chord heights at a time, as
+// a walk up the union from −1 to 1 finds the gaps between its intervals. When the union
+// overflowed, that walk is a sweep over the bin: each step walks the bin again, extending the
+// covered run from x by the intervals that start at or before it, or else moving x to the start of
+// the next one; x only grows, so it takes at most two steps an interval, and the area is exact
+// however many disjoint intervals there are. The walks share one loop, so that the program holds
+// one copy of the record code. With several hulls seen past, the quadrature takes the rest.
+const int FIRST_WALK = 0;
+const int UNION_STEPS = 1;
+const int SWEEP_STEPS = 2;
+
 float visibleFraction(int shadowType, out bool holds) {
   holds = false;
   clearUnion();
@@ -533,44 +544,70 @@ float visibleFraction(int shadowType, out bool holds) {
   // Once the union is whole, a hull holding the pixel is left to find only in an Illuminated or
   // Occluded light's first pass.
   bool seeksHolder = shadowType != SHADOW_SOLID && !held;
-  for (int i = 0; i < binCount; i++) {
-    ivec2 records = recordsOfEntry(i);
-    for (int record = records.x; record <= records.y; record++) {
+  int walk = FIRST_WALK;
+  float x = -1.0, hidden = 0.0;
+  for (;;) {
+    float reach = x, next = 1.0;
+    for (int i = 0; i < (walk == UNION_STEPS ? 0 : binCount); i++) {
+      ivec2 records = recordsOfEntry(i);
+      for (int record = records.x; record <= records.y; record++) {
 #ifdef SHADOW_STATISTICS
-      visitedRecords++;
+        if (walk == FIRST_WALK) visitedRecords++;
 #endif
-      if (!loadRecord(record)) continue;
-      float low, high;
-      int kind = classifyRecord(low, high);
-      if (kind == HOLDS_PIXEL) {
-        // Lit as from inside its holders, the pixel passes through their records holding it.
-        if (held) continue;
-        holds = true;
-        return shadowType == SHADOW_SOLID ? 0.0 : 1.0;
+        if (!loadRecord(record)) continue;
+        float low, high;
+        int kind = classifyRecord(low, high);
+        if (walk == SWEEP_STEPS) {
+          if (kind != IN_FRONT) continue;
+          if (low <= x) reach = max(reach, high);
+          else next = min(next, low);
+          continue;
+        }
+        if (kind == HOLDS_PIXEL) {
+          // Lit as from inside its holders, the pixel passes through their records holding it.
+          if (held) continue;
+          holds = true;
+          return shadowType == SHADOW_SOLID ? 0.0 : 1.0;
+        }
+        if (kind == IN_FRONT) insertInterval(low, high);
+#ifndef LEAN_SHADOW
+        if (kind == SEEN_PAST) addPastRecord(record, records);
+#endif
       }
-      if (kind == IN_FRONT) insertInterval(low, high);
-#ifndef LEAN_SHADOW
-      if (kind == SEEN_PAST) addPastRecord(record, records);
-#endif
+      if (walk == SWEEP_STEPS) continue;
+      if (coverIsWhole() && !seeksHolder) return 0.0;
+      seekingHolders = coverIsWhole();
     }
-    if (coverIsWhole() && !seeksHolder) return 0.0;
-    seekingHolders = coverIsWhole();
-  }
-  if (coverIsWhole()) return 0.0;
-  float hidden = insideDisk ? 0.0 : coveredBetween(-1.0, 1.0);
-  // Loops of no trips where they do not apply: skipped as a whole, where a branch may run both sides.
-  seekingHolders = false;
-  for (int once = 0; once < (unionOverflowed && pastCount == 0 ? 1 : 0); once++) hidden = coveredBySweep();
+    if (walk == FIRST_WALK) {
+      if (coverIsWhole()) return 0.0;
+      seekingHolders = false;
+      if ((pastCount > 0 && pastFirst < 0) || !(unionOverflowed || pastCount > 0)) break;
+      walk = unionOverflowed ? SWEEP_STEPS : UNION_STEPS;
+      continue;
+    }
+    if (walk == UNION_STEPS) unionStep(x, reach, next);
+    if (reach > x) {
+      hidden += diskAreaBelow(reach) - diskAreaBelow(x);
+      x = reach;
+    } else {
 #ifndef LEAN_SHADOW
-  bool closedForm = pastCount > 0 && pastFirst >= 0 && (insideDisk || middleCount == 0);
-  entryIsFan = pastIsFan;
-  for (int once = 0; once < (closedForm ? 1 : 0); once++) hidden += hiddenBehind(pastFirst, pastLast, pastIsFan, !insideDisk, lowCover, highCover);
-  entryIsFan = false;
-  for (int once = 0; once < (pastCount > 0 && !closedForm ? 1 : 0); once++) hidden += hiddenPast();
+      entryIsFan = pastIsFan;
+      if (pastCount > 0) hidden += hiddenBehind(pastFirst, pastLast, pastIsFan, !insideDisk, x, next);
+      entryIsFan = false;
+#endif
+      x = next;
+    }
+    if (x >= 1.0) break;
+  }
+  if (walk == FIRST_WALK) {
+    hidden = insideDisk ? 0.0 : coveredBetween(-1.0, 1.0);
+#ifndef LEAN_SHADOW
+    for (int once = 0; once < (pastCount > 0 ? 1 : 0); once++) hidden += hiddenPast();
 #ifdef SHADOW_STATISTICS
-  sweptPixel = pastCount > 0 && !closedForm;
+    sweptPixel = pastCount > 0;
 #endif
 #endif
+  }
   return clamp(1.0 - hidden, 0.0, 1.0);
 }
 
