@@ -41,6 +41,10 @@
 // the records seen past (they hide nothing there), the closed form, the quadrature and the holder
 // pass, and is as exact as the general program.
 //
+// Built with CLOSED_SHADOW, the closed program: the general program without the quadrature, for
+// the tiles of a light whose records reaching into its (filed) disk are one record or one convex
+// hull's fan (LightTiles), so that no pixel sees several hulls past.
+//
 // Built with HELD_SHADOW, the held program: for an Illuminated light's pixels that lie in one
 // record's umbra unless inside a hull (its held tiles), 1 inside a hull of the bin and 0 elsewhere.
 //
@@ -439,7 +443,9 @@ bool sweptPixel = false;
 #endif
 
 #include "shadow-behind"
+#ifndef CLOSED_SHADOW
 #include "shadow-quadrature"
+#endif
 
 // The number of records seen past, and when they are one record or one convex hull's fan (else
 // pastFirst is -1), what hiddenBehind takes.
@@ -602,7 +608,9 @@ float visibleFraction(int shadowType, out bool holds) {
   if (walk == FIRST_WALK) {
     hidden = insideDisk ? 0.0 : coveredBetween(-1.0, 1.0);
 #ifndef LEAN_SHADOW
+#ifndef CLOSED_SHADOW
     for (int once = 0; once < (pastCount > 0 ? 1 : 0); once++) hidden += hiddenPast();
+#endif
 #ifdef SHADOW_STATISTICS
     sweptPixel = pastCount > 0;
 #endif

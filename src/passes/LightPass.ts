@@ -47,7 +47,8 @@ export class LightPass {
   /**
    * Per kind of light, its programs: for a light with no hull in range (its shape), and for one
    * with some: its lit and dark tiles (plain), its held tiles, its lean tiles (lean exact; a
-   * directional light's quad), its other tiles (general exact; an Occluded directional light's quad).
+   * directional light's quad), its other tiles (general exact, in closed form when no pixel can see
+   * several hulls past; an Occluded directional light's quad).
    */
   private readonly programs: Record<LightKind, LightPrograms>;
   private readonly programList: readonly LightProgram[];
@@ -87,7 +88,7 @@ export class LightPass {
       }, LIGHT_INTERFACE);
       const programsOf = (kind: LightKind): LightPrograms => ({
         unshadowed: made[`${kind} unshadowed`], plainTiles: made[`${kind} plain tiles`] ?? null, heldTiles: made[`${kind} held tiles`] ?? null, lean: made[`${kind} lean`],
-        shadowed: made[`${kind} shadowed`],
+        closed: made[`${kind} closed`] ?? null, shadowed: made[`${kind} shadowed`],
       });
       this.programs = { point: programsOf('point'), spot: programsOf('spot'), textured: programsOf('textured'), directional: programsOf('directional') };
     } catch (error) {
@@ -170,7 +171,7 @@ export class LightPass {
       }
       if (counts[TILE_CLASSES.held] > 0 && programs.heldTiles !== null) this.drawTiles(programs.heldTiles, draw, TILE_CLASSES.held, this.lightColor);
       if (counts[TILE_CLASSES.lean] > 0) this.drawTiles(programs.lean, draw, TILE_CLASSES.lean, this.lightColor);
-      if (counts[TILE_CLASSES.exact] > 0) this.drawTiles(programs.shadowed, draw, TILE_CLASSES.exact, this.lightColor);
+      if (counts[TILE_CLASSES.exact] > 0) this.drawTiles(draw.closedForm && programs.closed !== null ? programs.closed : programs.shadowed, draw, TILE_CLASSES.exact, this.lightColor);
     }
   }
 
@@ -267,10 +268,11 @@ interface LightPrograms {
   plainTiles: LightProgram | null;
   heldTiles: LightProgram | null;
   lean: LightProgram;
+  closed: LightProgram | null;
   shadowed: LightProgram;
 }
 
-/** The sources of a kind's programs, keyed `<kind> unshadowed`, `<kind> plain tiles` and `<kind> held tiles` (but for a directional light), `<kind> lean` and `<kind> shadowed`. */
+/** The sources of a kind's programs, keyed `<kind> unshadowed`, `<kind> plain tiles`, `<kind> held tiles` and `<kind> closed` (but for a directional light), `<kind> lean` and `<kind> shadowed`. */
 function sourcesOf(kind: LightKind, name: string, stages: LightStages): Record<string, ProgramSources> {
   if (kind === 'directional') {
     return {
@@ -284,6 +286,7 @@ function sourcesOf(kind: LightKind, name: string, stages: LightStages): Record<s
     [`${kind} plain tiles`]: [`${name}'s plain tiles`, stages.tiledVertex, stages.unshadowed],
     [`${kind} held tiles`]: [`${name}'s held tiles`, stages.tiledVertex, stages.held],
     [`${kind} lean`]: [`${name}'s lean exact tiles`, stages.tiledVertex, stages.lean],
+    [`${kind} closed`]: [`${name}'s general tiles in closed form`, stages.tiledVertex, stages.closed],
     [`${kind} shadowed`]: [`${name} with shadows`, stages.tiledVertex, stages.shadowed],
   };
 }

@@ -38,6 +38,8 @@ export interface LightStages {
   unshadowed: string;
   /** For a light with hulls in range (`SHADOWED`): the general exact program. */
   shadowed: string;
+  /** For the general tiles of a light whose records reaching into its disk are one convex hull's (`SHADOWED`, `CLOSED_SHADOW`): no quadrature. */
+  closed: string;
   /** For the tiles of a light with hulls whose records all lie in front of the disk (`SHADOWED`, `LEAN_SHADOW`). */
   lean: string;
   /** For an Illuminated light's tiles that are dark but inside hulls (`SHADOWED`, `HELD_SHADOW`). */
@@ -58,6 +60,7 @@ export function lightStages(fragment: string, normals: boolean): LightStages {
     tiledVertex: withDefines(lightVertex, { TILED: '' }),
     unshadowed: resolved,
     shadowed: withDefines(resolved, { SHADOWED: '', ...SHADOW_DEFINES }),
+    closed: withDefines(resolved, { SHADOWED: '', CLOSED_SHADOW: '', ...SHADOW_DEFINES }),
     lean: withDefines(resolved, { SHADOWED: '', LEAN_SHADOW: '', ...SHADOW_DEFINES }),
     held: withDefines(resolved, { SHADOWED: '', HELD_SHADOW: '', ...SHADOW_DEFINES }),
   };

@@ -1,5 +1,5 @@
-import { ROW_INDICES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_COLUMNS, TILE_ROWS } from './shadowLayout';
-import { RecordMarks } from './RecordMarks';
+import { ENTRY_MAX_RECORDS, ROW_INDICES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_COLUMNS, TILE_ROWS } from './shadowLayout';
+import { RecordMarks, SEVERAL_HULLS } from './RecordMarks';
 import type { FiledDisk } from './ShadowBins';
 import type { ShadowGeometry } from './ShadowGeometry';
 import { bitCount, FULL_ROW } from './tileMasks';
@@ -59,6 +59,12 @@ export class LightTiles {
   private keptInside = new Int32Array(TILE_ROWS);
   /** Per row, its tiles of each class. */
   private counts = new Int32Array(TILE_CLASS_COUNT);
+  /**
+   * Per row, the hulls that may be seen past (`RecordMarks.pastHulls`): from the still hulls (kept
+   * with the filing) and as shown now, with the moving ones; SEVERAL_HULLS when not looked at.
+   */
+  private keptPastHulls = new Int32Array(1);
+  private shownPastHulls = new Int32Array(1);
   /** What the records of the light being classified prove about its tiles. */
   private readonly marks = new RecordMarks();
   private readonly writer = new TileRectangles();
@@ -120,8 +126,10 @@ export class LightTiles {
       if (marks.boundsWithin(geometry.worldBounds, hull, marks.darkened, 0)) {
         if (!marks.solid) marks.markBox(geometry.worldBounds, hull);
         if (marks.illuminated()) for (let record = first; record < end; record++) marks.markInside(geometry.records, record);
+        marks.passHull(geometry.circles, hull);
         continue;
       }
+      marks.beginHull(isFan(geometry, hull));
       for (let record = first; record < end; record++) {
         const apart = marks.loadRecord(geometry.records, record);
         if (marks.illuminated()) marks.markInsideLoaded();
@@ -130,6 +138,7 @@ export class LightTiles {
         marks.markShadowRegion();
         marks.markUmbra();
       }
+      marks.endHull();
     }
   }
 
@@ -167,12 +176,14 @@ export class LightTiles {
       this.keptExact[at + j] = marks.shadowed[j] & ~dark & ~held & ~outside & ~inside;
       this.keptGeneral[at + j] = this.keptExact[at + j] & marks.generalMask(j);
     }
+    this.keptPastHulls[row] = this.shownPastHulls[row] = marks.pastHulls;
     this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, at, true);
   }
 
   /** Shows `row`'s kept classes (a light whose moving hulls left it). */
   restoreKept(row: number): void {
     this.ensureRow(row);
+    this.shownPastHulls[row] = this.keptPastHulls[row];
     this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, row * TILE_ROWS, false);
   }
 
@@ -188,6 +199,7 @@ export class LightTiles {
       this.keptDark[at + j] = this.keptHeld[at + j] = this.keptInside[at + j] = 0;
       this.keptExact[at + j] = this.keptGeneral[at + j] = FULL_ROW & ~this.shown.outside[at + j];
     }
+    this.keptPastHulls[row] = this.shownPastHulls[row] = SEVERAL_HULLS;
     this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, at, true);
   }
 
@@ -202,6 +214,7 @@ export class LightTiles {
       dark[j] = this.marks.solid ? this.keptDark[at + j] : 0;
       exact[j] = FULL_ROW & ~this.shown.outside[at + j] & ~dark[j] & ~this.keptInside[at + j];
     }
+    this.shownPastHulls[row] = SEVERAL_HULLS;
     this.show(row, dark, exact, exact, this.noTiles, 0, false);
   }
 
@@ -219,14 +232,18 @@ export class LightTiles {
       // Wholly in kept dark tiles, its shadow region lies in the still records' (as addStillHulls).
       if (marks.boundsWithin(geometry.worldBounds, hull, this.keptDark, row * TILE_ROWS)) {
         if (!marks.solid) marks.markBox(geometry.worldBounds, hull);
+        marks.passHull(geometry.circles, hull);
         continue;
       }
+      marks.beginHull(isFan(geometry, hull));
       for (let record = geometry.firstRecords[hull], end = record + geometry.recordCounts[hull]; record < end; record++) {
         const apart = marks.loadRecord(geometry.records, record);
         if (!marks.solid) marks.markRecordBox();
         if (apart) marks.markShadowRegion();
       }
+      marks.endHull();
     }
+    this.shownPastHulls[row] = this.keptPastHulls[row] + marks.pastHulls;
     const at = row * TILE_ROWS, dark = this.nextDark, exact = this.nextExact, general = this.nextGeneral, held = this.nextHeld;
     if (marks.diskHidden && marks.solid) {
       // A moving record holds a Solid light's disk: every tile within the reach is dark.
@@ -285,6 +302,15 @@ export class LightTiles {
     counts[c + TILE_CLASSES.lit] = TILE_COUNT - outside - darkCount - exactCount - heldCount;
   }
 
+  /**
+   * Whether no pixel of `row`'s light can see several hulls past, so its general tiles may take the
+   * closed program: the records reaching into its filed disk (which holds its disk) are one record
+   * or one convex hull's fan, counting the moving hulls shown, and the light is not Occluded.
+   */
+  closedFormSuffices(row: number): boolean {
+    return this.shownPastHulls[row] <= 1;
+  }
+
   /** Grows the per-row arrays (at least doubling) to hold filing row `row`. */
   private ensureRow(row: number): void {
     const needed = (row + 1) * TILE_ROWS;
@@ -309,9 +335,16 @@ export class LightTiles {
     this.usedIndices = used;
     this.dirtyRows = dirty;
     this.counts = grown(this.counts, rows * TILE_CLASS_COUNT);
+    this.keptPastHulls = grown(this.keptPastHulls, rows);
+    this.shownPastHulls = grown(this.shownPastHulls, rows);
     this.listFirst = grown(this.listFirst, rows * TILE_CLASS_COUNT);
     this.listCount = grown(this.listCount, rows * TILE_CLASS_COUNT);
   }
+}
+
+/** Whether hull `hull`'s records are one convex hull's fan, which the shader takes as one (an entry's fan, see `ShadowBins`). */
+function isFan(geometry: ShadowGeometry, hull: number): boolean {
+  return geometry.convex[hull] === 1 && geometry.recordCounts[hull] <= ENTRY_MAX_RECORDS;
 }
 
 /** `words` long, beginning with `from`. */

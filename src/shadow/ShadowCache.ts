@@ -128,6 +128,7 @@ export class ShadowCache {
     filing.writeTiles(draw.tileFrame);
     this.tiles.writeCounts(filing.row, draw.tileCounts);
     this.tiles.writeLists(filing.row, draw.tileLists);
+    draw.closedForm = this.tiles.closedFormSuffices(filing.row);
     if (filing.unclassified) this.unclassifiedCount++;
   }
 

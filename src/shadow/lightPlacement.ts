@@ -33,6 +33,12 @@ export class LightDraw {
   readonly tileFrame = new Float32Array(4);
   /** A shadowed point light's tiles of each class (indexed by TILE_CLASSES), when `hullCount > 0`. */
   readonly tileCounts = new Int32Array(TILE_CLASS_COUNT);
+  /**
+   * Whether a shadowed point light's general tiles may take the closed program, when `hullCount > 0`:
+   * its records reaching into its filed disk are one record or one convex hull's fan, and it is not
+   * Occluded (`LightTiles.closedFormSuffices`).
+   */
+  closedForm = false;
   /** Per class of its tiles, where its rectangles' indices start in the shadow cache's `tiles.rectangles` and how many (`LightTiles.writeLists`), when `hullCount > 0`. */
   readonly tileLists = new Int32Array(2 * TILE_CLASS_COUNT);
   /** A directional light's strips over the view (its bins). */
