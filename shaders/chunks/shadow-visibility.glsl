@@ -553,7 +553,12 @@ float visibleFraction(int shadowType, out bool holds) {
   int walk = FIRST_WALK;
   float x = -1.0, hidden = 0.0;
   for (;;) {
-    float reach = x, next = 1.0;
+    if (walk == SWEEP_STEPS) {
+      // A sweep step keeps the run's reach and the next interval's start in the union's covers,
+      // which the sweep no longer needs: no more values live through the walk.
+      lowCover = x;
+      highCover = 1.0;
+    }
     for (int i = 0; i < (walk == UNION_STEPS ? 0 : binCount); i++) {
       ivec2 records = recordsOfEntry(i);
       for (int record = records.x; record <= records.y; record++) {
@@ -565,8 +570,8 @@ float visibleFraction(int shadowType, out bool holds) {
         int kind = classifyRecord(low, high);
         if (walk == SWEEP_STEPS) {
           if (kind != IN_FRONT) continue;
-          if (low <= x) reach = max(reach, high);
-          else next = min(next, low);
+          if (low <= x) lowCover = max(lowCover, high);
+          else highCover = min(highCover, low);
           continue;
         }
         if (kind == HOLDS_PIXEL) {
@@ -591,7 +596,12 @@ float visibleFraction(int shadowType, out bool holds) {
       walk = unionOverflowed ? SWEEP_STEPS : UNION_STEPS;
       continue;
     }
+    float reach = x, next = 1.0;
     if (walk == UNION_STEPS) unionStep(x, reach, next);
+    else {
+      reach = lowCover;
+      next = highCover;
+    }
     if (reach > x) {
       hidden += diskAreaBelow(reach) - diskAreaBelow(x);
       x = reach;
