@@ -294,7 +294,7 @@ function recordsOf(geometry: ShadowGeometry, indices: Int32Array, count: number)
 }
 
 /**
- * Records classified into tiles per frame by default: about a millisecond of JavaScript on the
+ * Records classified into tiles per frame by default: one to two milliseconds of JavaScript on the
  * bench's machine (docs/performance.md), some twenty torches among walls a frame, and a level's
  * walking lamps every frame.
  */
