@@ -41,9 +41,10 @@
 // the records seen past (they hide nothing there), the closed form, the quadrature and the holder
 // pass, and is as exact as the general program.
 //
-// Built with CLOSED_SHADOW, the closed program: the general program without the quadrature, for
-// the tiles of a light whose records reaching into its (filed) disk are one record or one convex
-// hull's fan (LightTiles), so that no pixel sees several hulls past.
+// Built with CLOSED_SHADOW, the closed program: the general program without the quadrature and the
+// holder pass, for the tiles of a light that is not Occluded and whose records reaching into its
+// (filed) disk are one record or one convex hull's fan (LightTiles), so that no pixel sees several
+// hulls past.
 //
 // Built with HELD_SHADOW, the held program: for an Illuminated light's pixels that lie in one
 // record's umbra unless inside a hull (its held tiles), 1 inside a hull of the bin and 0 elsewhere.
@@ -184,7 +185,7 @@ bool seenFromHolders(int record) {
 // pixel); false when it hides nothing (see seenFromHolders).
 bool loadRecord(int record) {
   loadRecordPoints(record);
-#ifdef LEAN_SHADOW
+#if defined(LEAN_SHADOW) || defined(CLOSED_SHADOW)
   return true;
 #else
   return !held || seenFromHolders(record);
@@ -659,7 +660,7 @@ float shadowVisibility() {
   int shadowType = int(u_shadowType + 0.5);
   held = false;
   bool holds;
-#ifdef LEAN_SHADOW
+#if defined(LEAN_SHADOW) || defined(CLOSED_SHADOW)
   return visibleFraction(shadowType, holds);
 #else
   float visible = 1.0;
