@@ -1,5 +1,5 @@
-import { ENTRY_MAX_RECORDS, ROW_INDICES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_COLUMNS, TILE_ROWS } from './shadowLayout';
-import { RecordMarks, SEVERAL_HULLS } from './RecordMarks';
+import { ENTRY_MAX_RECORDS, ROW_INDICES, SHADOW_TYPE_CODES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_COLUMNS, TILE_ROWS } from './shadowLayout';
+import { RecordMarks } from './RecordMarks';
 import type { FiledDisk } from './ShadowBins';
 import type { ShadowGeometry } from './ShadowGeometry';
 import { bitCount, FULL_ROW } from './tileMasks';
@@ -60,8 +60,16 @@ export class LightTiles {
   /** Per row, its tiles of each class. */
   private counts = new Int32Array(TILE_CLASS_COUNT);
   /**
-   * Per row, the hulls that may be seen past (`RecordMarks.pastHulls`): from the still hulls (kept
-   * with the filing) and as shown now, with the moving ones; SEVERAL_HULLS when not looked at.
+   * How many hulls added since `beginLight` a pixel may see past (their records reach into the
+   * filed disk): a hull counts once when one of its records does or it is a fan (the shader takes a
+   * fan as one), SEVERAL_HULLS when several of its records do otherwise, and once when passed over
+   * in dark tiles with its circle meeting the disk; an Occluded light counts SEVERAL_HULLS from the
+   * start (its holder pass may see past hulls anywhere).
+   */
+  private pastHulls = 0;
+  /**
+   * Per row, the hulls that may be seen past: from the still hulls (kept with the filing) and as
+   * shown now, with the moving ones; SEVERAL_HULLS when not looked at.
    */
   private keptPastHulls = new Int32Array(1);
   private shownPastHulls = new Int32Array(1);
@@ -110,6 +118,7 @@ export class LightTiles {
    */
   beginLight(bounds: Float64Array, disk: FiledDisk, confined: boolean, shadowType: number): void {
     this.marks.begin(bounds, disk, confined, shadowType);
+    this.pastHulls = shadowType === SHADOW_TYPE_CODES.occluded ? SEVERAL_HULLS : 0;
   }
 
   /**
@@ -126,10 +135,10 @@ export class LightTiles {
       if (marks.boundsWithin(geometry.worldBounds, hull, marks.darkened, 0)) {
         if (!marks.solid) marks.markBox(geometry.worldBounds, hull);
         if (marks.illuminated()) for (let record = first; record < end; record++) marks.markInside(geometry.records, record);
-        marks.passHull(geometry.circles, hull);
+        if (marks.circleMeetsDisk(geometry.circles, hull)) this.pastHulls++;
         continue;
       }
-      marks.beginHull(isFan(geometry, hull));
+      const meetingBefore = marks.recordsMeetingDisk;
       for (let record = first; record < end; record++) {
         const apart = marks.loadRecord(geometry.records, record);
         if (marks.illuminated()) marks.markInsideLoaded();
@@ -138,7 +147,7 @@ export class LightTiles {
         marks.markShadowRegion();
         marks.markUmbra();
       }
-      marks.endHull();
+      this.countPastHull(marks.recordsMeetingDisk - meetingBefore, isFan(geometry, hull));
     }
   }
 
@@ -176,7 +185,7 @@ export class LightTiles {
       this.keptExact[at + j] = marks.shadowed[j] & ~dark & ~held & ~outside & ~inside;
       this.keptGeneral[at + j] = this.keptExact[at + j] & marks.generalMask(j);
     }
-    this.keptPastHulls[row] = this.shownPastHulls[row] = marks.pastHulls;
+    this.keptPastHulls[row] = this.shownPastHulls[row] = this.pastHulls;
     this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, at, true);
   }
 
@@ -232,18 +241,18 @@ export class LightTiles {
       // Wholly in kept dark tiles, its shadow region lies in the still records' (as addStillHulls).
       if (marks.boundsWithin(geometry.worldBounds, hull, this.keptDark, row * TILE_ROWS)) {
         if (!marks.solid) marks.markBox(geometry.worldBounds, hull);
-        marks.passHull(geometry.circles, hull);
+        if (marks.circleMeetsDisk(geometry.circles, hull)) this.pastHulls++;
         continue;
       }
-      marks.beginHull(isFan(geometry, hull));
+      const meetingBefore = marks.recordsMeetingDisk;
       for (let record = geometry.firstRecords[hull], end = record + geometry.recordCounts[hull]; record < end; record++) {
         const apart = marks.loadRecord(geometry.records, record);
         if (!marks.solid) marks.markRecordBox();
         if (apart) marks.markShadowRegion();
       }
-      marks.endHull();
+      this.countPastHull(marks.recordsMeetingDisk - meetingBefore, isFan(geometry, hull));
     }
-    this.shownPastHulls[row] = this.keptPastHulls[row] + marks.pastHulls;
+    this.shownPastHulls[row] = this.keptPastHulls[row] + this.pastHulls;
     const at = row * TILE_ROWS, dark = this.nextDark, exact = this.nextExact, general = this.nextGeneral, held = this.nextHeld;
     if (marks.diskHidden && marks.solid) {
       // A moving record holds a Solid light's disk: every tile within the reach is dark.
@@ -302,6 +311,11 @@ export class LightTiles {
     counts[c + TILE_CLASSES.lit] = TILE_COUNT - outside - darkCount - exactCount - heldCount;
   }
 
+  /** Counts a hull whose records were added, `meeting` of them reaching into the disk (`fan`: one convex hull's fan), in `pastHulls`. */
+  private countPastHull(meeting: number, fan: boolean): void {
+    if (meeting > 0) this.pastHulls += meeting > 1 && !fan ? SEVERAL_HULLS : 1;
+  }
+
   /**
    * Whether no pixel of `row`'s light can see several hulls past, so its general tiles may take the
    * closed program: the records reaching into its filed disk (which holds its disk) are one record
@@ -341,6 +355,9 @@ export class LightTiles {
     this.listCount = grown(this.listCount, rows * TILE_CLASS_COUNT);
   }
 }
+
+/** A count of hulls seen past (`LightTiles.pastHulls`) that the closed program does not take. */
+const SEVERAL_HULLS = 2;
 
 /** Whether hull `hull`'s records are one convex hull's fan, which the shader takes as one (an entry's fan, see `ShadowBins`). */
 function isFan(geometry: ShadowGeometry, hull: number): boolean {

@@ -8,9 +8,6 @@ import { FULL_ROW, markSpan } from './tileMasks';
  * the shader would shade it.
  */
 const RELATIVE_SLACK = 1e-5;
-/** A count of hulls seen past (`RecordMarks.pastHulls`) that the closed program does not take. */
-export const SEVERAL_HULLS = 2;
-
 /** The shader's radius for a hard light (shadow-visibility's MIN_RADIUS). */
 const MIN_RADIUS = 1e-3;
 /** Room for a convex polygon clipped by the half-planes of one record: the box's 4 corners, one more per half-plane. */
@@ -63,16 +60,8 @@ export class RecordMarks {
    * dark but where a hull may hold the pixel (see `loadRecord`).
    */
   diskHidden = false;
-  /**
-   * How many hulls added since `begin` a pixel may see past (their records reach into the disk): a
-   * hull counts once when one of its records does or it is a fan (the shader takes a fan as one),
-   * twice when several of its records do otherwise; an Occluded light counts as SEVERAL_HULLS from
-   * the start (its holder pass may see past hulls anywhere).
-   */
-  pastHulls = 0;
-  /** The hull whose records are being added (`beginHull`): whether it is a fan, how many of its records met the disk. */
-  private hullIsFan = false;
-  private hullRecordsMeeting = 0;
+  /** How many records loaded since `begin` reach into the disk. */
+  recordsMeetingDisk = 0;
   /**
    * The rasterization's x range per tile row (touched: ±Infinity between uses, `markTouched` puts
    * back what it wrote) and per tile row boundary (the polygon's chord there), in tile units.
@@ -142,7 +131,7 @@ export class RecordMarks {
     this.holderPass = shadowType === SHADOW_TYPE_CODES.occluded;
     this.diskMet = false;
     this.diskHidden = false;
-    this.pastHulls = this.holderPass ? SEVERAL_HULLS : 0;
+    this.recordsMeetingDisk = 0;
     this.shadowed.fill(0);
     this.darkened.fill(0);
     this.occupied.fill(0);
@@ -159,21 +148,10 @@ export class RecordMarks {
     return this.diskMet ? FULL_ROW : this.holderPass ? this.occupied[j] : 0;
   }
 
-  /** Starts adding the records of a hull (`fan`: one convex hull's fan), for `pastHulls`. */
-  beginHull(fan: boolean): void {
-    this.hullIsFan = fan;
-    this.hullRecordsMeeting = 0;
-  }
-
-  /** Ends adding the records of the hull begun with {@link RecordMarks.beginHull}. */
-  endHull(): void {
-    if (this.hullRecordsMeeting > 0) this.pastHulls += this.hullRecordsMeeting > 1 && !this.hullIsFan ? SEVERAL_HULLS : 1;
-  }
-
-  /** Counts hull `hull`, passed over without its records, in `pastHulls` when its circle (in `circles`: x, y, radius) meets the disk. */
-  passHull(circles: Float64Array, hull: number): void {
+  /** Whether hull `hull`'s circle (in `circles`: x, y, radius) meets the disk. */
+  circleMeetsDisk(circles: Float64Array, hull: number): boolean {
     const dx = circles[3 * hull] - this.centreX, dy = circles[3 * hull + 1] - this.centreY, reach = circles[3 * hull + 2] + this.radius;
-    if (dx * dx + dy * dy < reach * reach) this.pastHulls += 1;
+    return dx * dx + dy * dy < reach * reach;
   }
 
   /** Whether hull `hull`'s box in `bounds` lies wholly in tiles set in `masks` (rows from `from`), inside the grid. */
@@ -213,7 +191,7 @@ export class RecordMarks {
     if (this.diskMeetsRecord()) {
       this.shadowed.fill(FULL_ROW);
       this.diskMet = true;
-      this.hullRecordsMeeting++;
+      this.recordsMeetingDisk++;
       if (!this.holderPass && this.recordHoldsDisk()) {
         this.darkened.fill(FULL_ROW);
         this.diskHidden = true;
