@@ -62,9 +62,11 @@ export class LightTiles {
   /**
    * How many hulls added since `beginLight` a pixel may see past (their records reach into the
    * filed disk): a hull counts once when one of its records does or it is a fan (the shader takes a
-   * fan as one), SEVERAL_HULLS when several of its records do otherwise, and once when passed over
-   * in dark tiles with its circle meeting the disk; an Occluded light counts SEVERAL_HULLS from the
-   * start (its holder pass may see past hulls anywhere).
+   * fan as one), SEVERAL_HULLS when several of its records do otherwise; an Occluded light counts
+   * SEVERAL_HULLS from the start (its holder pass may see past hulls anywhere). A hull passed over in
+   * dark tiles needs no count: each of its points lies in a record R apart from the disk or in R's
+   * umbra, which meets the disk only inside R, so it does not reach into the disk; and when a record
+   * holds the whole disk, no tile is exact.
    */
   private pastHulls = 0;
   /**
@@ -135,7 +137,6 @@ export class LightTiles {
       if (marks.boundsWithin(geometry.worldBounds, hull, marks.darkened, 0)) {
         if (!marks.solid) marks.markBox(geometry.worldBounds, hull);
         if (marks.illuminated()) for (let record = first; record < end; record++) marks.markInside(geometry.records, record);
-        if (marks.circleMeetsDisk(geometry.circles, hull)) this.pastHulls++;
         continue;
       }
       const meetingBefore = marks.recordsMeetingDisk;
@@ -241,7 +242,6 @@ export class LightTiles {
       // Wholly in kept dark tiles, its shadow region lies in the still records' (as addStillHulls).
       if (marks.boundsWithin(geometry.worldBounds, hull, this.keptDark, row * TILE_ROWS)) {
         if (!marks.solid) marks.markBox(geometry.worldBounds, hull);
-        if (marks.circleMeetsDisk(geometry.circles, hull)) this.pastHulls++;
         continue;
       }
       const meetingBefore = marks.recordsMeetingDisk;

@@ -148,12 +148,6 @@ export class RecordMarks {
     return this.diskMet ? FULL_ROW : this.holderPass ? this.occupied[j] : 0;
   }
 
-  /** Whether hull `hull`'s circle (in `circles`: x, y, radius) meets the disk. */
-  circleMeetsDisk(circles: Float64Array, hull: number): boolean {
-    const dx = circles[3 * hull] - this.centreX, dy = circles[3 * hull + 1] - this.centreY, reach = circles[3 * hull + 2] + this.radius;
-    return dx * dx + dy * dy < reach * reach;
-  }
-
   /** Whether hull `hull`'s box in `bounds` lies wholly in tiles set in `masks` (rows from `from`), inside the grid. */
   boundsWithin(bounds: Float64Array, hull: number, masks: Int32Array, from: number): boolean {
     const tw = this.tileWidth, th = this.tileHeight;
