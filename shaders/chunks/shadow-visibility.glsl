@@ -346,6 +346,19 @@ void widenSilhouette(inout vec2 lowEnd, inout vec2 highEnd) {
   }
 }
 
+// SEEN_PAST, adding the silhouette's directions to those seen past, when the loaded record reaches
+// into the disk; else HIDES_NOTHING. The lean program leaves the test out: in its tiles no record
+// reaches into the (filed) disk.
+int recordSeenPast(vec2 lowEnd, vec2 highEnd) {
+#ifndef LEAN_SHADOW
+  if (recordMeetsDisk()) {
+    addPastSpan(lowEnd, highEnd);
+    return SEEN_PAST;
+  }
+#endif
+  return HIDES_NOTHING;
+}
+
 // Classifies the loaded record; sets low and high for IN_FRONT.
 int classifyRecord(out float low, out float high) {
   low = -1.0;
@@ -353,12 +366,9 @@ int classifyRecord(out float low, out float high) {
   if (pixelInsideRecord()) return HOLDS_PIXEL;
   vec2 lowEnd = vec2(xs.x, ys.x), highEnd = lowEnd;
   widenSilhouette(lowEnd, highEnd);
-  // From inside the disk, segments to the disk stay in it: only a record reaching into it hides.
-  if (insideDisk) {
-    if (!recordMeetsDisk()) return HIDES_NOTHING;
-    addPastSpan(lowEnd, highEnd);
-    return SEEN_PAST;
-  }
+  // From inside the disk, segments to the disk stay in it: only a record reaching into it hides
+  // (none does in the lean program's tiles).
+  if (insideDisk) return recordSeenPast(lowEnd, highEnd);
   // A silhouette direction 90° or more off the light was reached by turning from the other end:
   // clockwise past −90° for the low end, counter-clockwise past +90° for the high end. With both
   // ends there, the record lies behind the pixel (it spans less than 180°).
@@ -375,9 +385,7 @@ int classifyRecord(out float low, out float high) {
   // Some of the disk lies in the wedge before the record. A record apart from the disk then hides
   // nothing: from a pixel it hides any of the disk from, the disk lies wholly beyond it in its wedge
   // (docs/shadows.md, "lean"). So only records that reach into the disk are seen past.
-  if (!recordMeetsDisk()) return HIDES_NOTHING;
-  addPastSpan(lowEnd, highEnd);
-  return SEEN_PAST;
+  return recordSeenPast(lowEnd, highEnd);
 }
 
 // The union of the front records' intervals: [-1, lowCover] ∪ [highCover, 1] ∪ middles.
@@ -408,8 +416,10 @@ void insertInterval(float low, float high) {
     // Left out: the quadrature, should it run, sweeps its directions (chord height t lies at
     // asin(t / distance) off the axis).
     unionOverflowed = true;
+#ifndef LEAN_SHADOW
     pastFrom = min(pastFrom, asin(clamp(low / distanceInRadii, -1.0, 1.0)));
     pastTo = max(pastTo, asin(clamp(high / distanceInRadii, -1.0, 1.0)));
+#endif
   }
 }
 
@@ -597,12 +607,17 @@ float visibleFraction(int shadowType, out bool holds) {
       walk = unionOverflowed ? SWEEP_STEPS : UNION_STEPS;
       continue;
     }
+    // The lean program sees no record past: its only steps are the sweep's.
+#ifdef LEAN_SHADOW
+    float reach = lowCover, next = highCover;
+#else
     float reach = x, next = 1.0;
     if (walk == UNION_STEPS) unionStep(x, reach, next);
     else {
       reach = lowCover;
       next = highCover;
     }
+#endif
     if (reach > x) {
       hidden += diskAreaBelow(reach) - diskAreaBelow(x);
       x = reach;
