@@ -309,6 +309,24 @@ bool diskBeyond(vec2 a, vec2 b) {
   return !inside && segmentDistance2(c, vec2(0.0), a) >= r2 && segmentDistance2(c, vec2(0.0), b) >= r2 && segmentDistance2(c, a, b) >= r2;
 }
 
+#ifdef LEAN_SHADOW
+// diskBeyond for a record apart from the disk, seen from a pixel outside it (every record of the
+// lean program's tiles), along one ray: the ray at chord height t (inside the record's interval,
+// so it meets the disk and the segment a–b) meets the disk no nearer than that segment. A line
+// separates the record from the disk; a pixel on the record's side sees the disk wholly beyond
+// the record in its wedge (beyond a–b too, as the far side of the record lies beyond a–b), one on
+// the disk's side sees every ray meet the disk first (before a–b, as the near side of the
+// record lies before it). Either way every ray of the wedge that meets the disk, this one too,
+// tells which.
+bool diskBeyondAlongRay(vec2 a, vec2 b, float t) {
+  float sine = t / distanceInRadii, cosine = sqrt(max(1.0 - sine * sine, 0.0));
+  vec2 axis = toLight / distanceInRadii;
+  vec2 ray = cosine * axis + sine * vec2(-axis.y, axis.x);
+  float diskEntry = distanceToLight * cosine - radius * sqrt(max(1.0 - t * t, 0.0));
+  return diskEntry * cross2(ray, b - a) >= cross2(a, b);
+}
+#endif
+
 // Whether the loaded record reaches into the disk: the centre within a radius of one of its edges,
 // or inside it (left of every edge).
 bool recordMeetsDisk() {
@@ -381,7 +399,11 @@ int classifyRecord(out float low, out float high) {
   // The disk is at infinity: beyond every record.
   return IN_FRONT;
 #endif
+#ifdef LEAN_SHADOW
+  if (diskBeyondAlongRay(lowEnd, highEnd, 0.5 * (low + high))) return IN_FRONT;
+#else
   if (diskBeyond(lowEnd, highEnd)) return IN_FRONT;
+#endif
   // Some of the disk lies in the wedge before the record. A record apart from the disk then hides
   // nothing: from a pixel it hides any of the disk from, the disk lies wholly beyond it in its wedge
   // (docs/shadows.md, "lean"). So only records that reach into the disk are seen past.
