@@ -27,10 +27,14 @@ layout(location = 0) in vec2 a_corner; // unit quad, 0..1
 out vec2 v_fromLight;
 out vec2 v_uv;
 out vec2 v_world;
+#ifdef TILED
+out vec2 v_tile; // the point in tile units of the grid (the listed program's tile)
+#endif
 
 void main() {
 #ifdef TILED
   vec2 world = u_tiles.xy + a_corner * u_tiles.zw;
+  v_tile = a_corner;
   v_uv = inverse(mat2(u_quad[1], u_quad[2])) * (world - u_quad[0]);
 #else
   vec2 world = u_quad[0] + a_corner.x * u_quad[1] + a_corner.y * u_quad[2];

@@ -41,6 +41,11 @@
 // the records seen past (they hide nothing there), the closed form, the quadrature and the holder
 // pass, and is as exact as the general program.
 //
+// Built with LEAN_SHADOW and LISTED_TILES, the listed program: the lean program for the listed
+// tiles (src/shadow/TileRecordLists.ts), whose pixel reads its tile's mask of the light's listed
+// records (every record whose shadow region or box touches the tile or a neighbour, nearest first)
+// and walks those instead of its bin.
+//
 // Built with CLOSED_SHADOW, the closed program: the general program without the quadrature and the
 // holder pass, for the tiles of a light that is not Occluded and whose records reaching into its
 // (filed) disk are one record or one convex hull's fan (LightTiles), so that no pixel sees several
@@ -57,7 +62,7 @@ uniform highp sampler2D u_recordTags;
 uniform highp sampler2D u_entries;
 uniform highp sampler2D u_bins;
 
-uniform vec4 u_shadow; // position xy, disk radius, row of the light's shadow bins
+uniform vec4 u_shadow; // position xy, disk radius, row of the light's shadow bins (and of its tile records)
 uniform float u_shadowType; // how the light treats the inside of hulls: SHADOW_SOLID, … (src/shadow/shadowLayout.ts)
 // A light's bins were filed for a disk of radius u_binning.z ≥ r around u_binning.xy, which holds
 // the light's disk (a moving light keeps its filing while its disk stays inside, see ShadowCache): bins
@@ -198,6 +203,15 @@ bool pixelInsideRecord() {
   return all(greaterThanEqual(xs * nextYs - ys * nextXs, vec4(0.0)));
 }
 
+#ifdef LISTED_TILES
+uniform highp usampler2D u_tileRecords;
+uniform int u_listedRecords[LISTED_RECORDS]; // the light's listed records, nearest first
+in vec2 v_tile; // the pixel in tile units of the light's grid (light.vert.glsl)
+// The pixel's tile's mask of listed records, and what the current walk has left of it.
+uint tileMask;
+uint walkMask;
+#endif
+
 // The light's bin for this pixel: two lists, each ordered nearest first (the hulls that stood
 // still, then those that moved lately; see src/shadow/shadowLayout.ts), walked as one of binCount
 // entries: entry i < stillCount is the still list's i-th, from binFirst, and the others the moving
@@ -248,6 +262,13 @@ ivec2 recordsOf(vec4 entry) {
 // anything from the pixel. When it and all after it in its list are farther from the centre than the
 // pixel, moves `i` to the last entry of that list, so that a walk's next step leaves the list.
 ivec2 recordsOfEntry(inout int i) {
+#ifdef LISTED_TILES
+  // The listed program: entry i is the tile's i-th listed record, its lowest bit left in a walk.
+  if (i == 0) walkMask = tileMask;
+  uint lowest = walkMask & (0u - walkMask);
+  walkMask ^= lowest;
+  return ivec2(u_listedRecords[int(round(log2(float(lowest))))]);
+#else
   vec4 entry = entryAt(i);
   vec2 hull = entry.yz - pixel, toCentre = centre - pixel;
   float hullRadius = entry.w, bucketWidth = u_binning.w;
@@ -279,6 +300,7 @@ ivec2 recordsOfEntry(inout int i) {
   }
   ivec2 records = recordsOf(entry);
   return between ? records : ivec2(0, -1);
+#endif
 }
 
 // What a record does to the pixel's view of the disk.
@@ -540,11 +562,22 @@ void beginShadow() {
   distanceToBinOrigin = length(fromBinOrigin);
   int bin = min(int(pseudoAngle(fromBinOrigin) * (float(BIN_COUNT) / 4.0)), BIN_COUNT - 1);
 #endif
+#ifdef LISTED_TILES
+  // The walk's entries are the tile's listed records: as many as its mask has bits.
+  ivec2 tile = clamp(ivec2(floor(v_tile)), ivec2(0), ivec2(TILE_COLUMNS - 1, TILE_ROWS - 1));
+  int texel = int(u_shadow.w) * TILE_COUNT + tile.y * TILE_COLUMNS + tile.x;
+  uvec2 halves = texelFetch(u_tileRecords, ivec2(texel % TEXTURE_WIDTH, texel / TEXTURE_WIDTH), 0).rg;
+  tileMask = halves.x | (halves.y << 16);
+  binCount = 0;
+  for (uint rest = tileMask; rest != 0u; rest &= rest - 1u) binCount++;
+  stillCount = binCount;
+#else
   vec4 binEntries = texelFetch(u_bins, ivec2(bin, int(u_shadow.w)), 0);
   binFirst = int(binEntries.x);
   stillCount = int(binEntries.y);
   movingFirst = int(binEntries.z) - stillCount;
   binCount = stillCount + int(binEntries.w);
+#endif
 }
 
 // One step of a walk up the union's intervals from chord height x: the end of the interval that

@@ -261,7 +261,7 @@ export class FramePipeline {
     const cache = this.shadowCache, geometry = this.geometry, sizing = this.sizing, scene = this.scene;
     geometry.update(scene.hulls);
     cache.build(scene.lights, scene.hulls, geometry, sizing.viewProjection, sizing.lightmapWidth, sizing.lightmapHeight);
-    resources.shadows.upload(geometry, cache.bins);
+    resources.shadows.upload(geometry, cache.bins, cache.tiles.lists);
     resources.shapes.uploadTileRectangles(cache.tiles.dirtyRows, cache.tiles.rectangles, cache.tiles.usedIndices);
     if (this.normals) chooseSurface(this.surface, resources.scene, surfaces);
     resources.light.begin(scene.look.ambient, sizing.viewProjection, this.surface);

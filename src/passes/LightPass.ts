@@ -34,7 +34,8 @@ export interface Surface {
  * (see `LightTiles`): the lit tiles with the plain program, the dark ones with the plain program in
  * the colour its shadows keep (not at all when they keep none), the others with an exact program,
  * which computes the visible fraction from the shadow textures (see the chunk shadow-visibility):
- * the lean one where every record that hides anything lies in front of the disk, else the general
+ * the lean one where every record that hides anything lies in front of the disk (reading the
+ * tile's records instead of its bin where they are listed, `TileRecordLists`), else the general
  * one; an Illuminated light's dark tiles with hulls in them with the held program (lit inside
  * hulls). A directional light with hulls is drawn as its quad with an exact program: the lean one
  * (from a disk at infinity every record is in front) but for an Occluded light (the holder pass).
@@ -47,7 +48,7 @@ export class LightPass {
   /**
    * Per kind of light, its programs: for a light with no hull in range (its shape), and for one
    * with some: its lit and dark tiles (plain), its held tiles, its lean tiles (lean exact; a
-   * directional light's quad), its other tiles (general exact, in closed form when no pixel can see
+   * directional light's quad), its listed tiles (lean, reading their tile's records), its other tiles (general exact, in closed form when no pixel can see
    * several hulls past; an Occluded directional light's quad).
    */
   private readonly programs: Record<LightKind, LightPrograms>;
@@ -88,6 +89,7 @@ export class LightPass {
       }, LIGHT_INTERFACE);
       const programsOf = (kind: LightKind): LightPrograms => ({
         unshadowed: made[`${kind} unshadowed`], plainTiles: made[`${kind} plain tiles`] ?? null, heldTiles: made[`${kind} held tiles`] ?? null, lean: made[`${kind} lean`],
+        listed: made[`${kind} listed`] ?? null,
         closed: made[`${kind} closed`] ?? null, shadowed: made[`${kind} shadowed`],
       });
       this.programs = { point: programsOf('point'), spot: programsOf('spot'), textured: programsOf('textured'), directional: programsOf('directional') };
@@ -171,6 +173,11 @@ export class LightPass {
       }
       if (counts[TILE_CLASSES.held] > 0 && programs.heldTiles !== null) this.drawTiles(programs.heldTiles, draw, TILE_CLASSES.held, this.lightColor);
       if (counts[TILE_CLASSES.lean] > 0) this.drawTiles(programs.lean, draw, TILE_CLASSES.lean, this.lightColor);
+      if (counts[TILE_CLASSES.listed] > 0 && programs.listed !== null) {
+        gl.useProgram(programs.listed.handle);
+        gl.uniform1iv(programs.listed.uniforms.u_listedRecords, draw.listedRecords);
+        this.drawTiles(programs.listed, draw, TILE_CLASSES.listed, this.lightColor);
+      }
       if (counts[TILE_CLASSES.exact] > 0) this.drawTiles(draw.closedForm && programs.closed !== null ? programs.closed : programs.shadowed, draw, TILE_CLASSES.exact, this.lightColor);
     }
   }
@@ -268,11 +275,12 @@ interface LightPrograms {
   plainTiles: LightProgram | null;
   heldTiles: LightProgram | null;
   lean: LightProgram;
+  listed: LightProgram | null;
   closed: LightProgram | null;
   shadowed: LightProgram;
 }
 
-/** The sources of a kind's programs, keyed `<kind> unshadowed`, `<kind> plain tiles`, `<kind> held tiles` and `<kind> closed` (but for a directional light), `<kind> lean` and `<kind> shadowed`. */
+/** The sources of a kind's programs, keyed `<kind> unshadowed`, `<kind> plain tiles`, `<kind> held tiles`, `<kind> listed` and `<kind> closed` (but for a directional light), `<kind> lean` and `<kind> shadowed`. */
 function sourcesOf(kind: LightKind, name: string, stages: LightStages): Record<string, ProgramSources> {
   if (kind === 'directional') {
     return {
@@ -286,6 +294,7 @@ function sourcesOf(kind: LightKind, name: string, stages: LightStages): Record<s
     [`${kind} plain tiles`]: [`${name}'s plain tiles`, stages.tiledVertex, stages.unshadowed],
     [`${kind} held tiles`]: [`${name}'s held tiles`, stages.tiledVertex, stages.held],
     [`${kind} lean`]: [`${name}'s lean exact tiles`, stages.tiledVertex, stages.lean],
+    [`${kind} listed`]: [`${name}'s listed lean tiles`, stages.tiledVertex, stages.listed],
     [`${kind} closed`]: [`${name}'s general tiles in closed form`, stages.tiledVertex, stages.closed],
     [`${kind} shadowed`]: [`${name} with shadows`, stages.tiledVertex, stages.shadowed],
   };

@@ -1,5 +1,6 @@
 import type { Falloff } from '../scene/falloff';
 import type { UniformDeclaration } from '../gl/program';
+import { LISTED_RECORDS } from '../shadow/shadowLayout';
 
 /**
  * The light passes' codes for a light's distance falloff (see `Falloff`), which
@@ -68,6 +69,8 @@ export const LIGHT_UNIFORMS = {
    * light (xyz), w 1.
    */
   u_towardsLight: { type: 'vec4' },
+  /** The listed programs: the light's listed records, nearest first (LightDraw.listedRecords; see `TileRecordLists`). */
+  u_listedRecords: { type: `int[${LISTED_RECORDS}]` },
   /** Spotlights: the cone's axis, a unit vector. */
   u_direction: { type: 'vec2' },
   /** Spotlights: half the cone's angle. */

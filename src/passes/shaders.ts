@@ -42,6 +42,8 @@ export interface LightStages {
   closed: string;
   /** For the tiles of a light with hulls whose records all lie in front of the disk (`SHADOWED`, `LEAN_SHADOW`). */
   lean: string;
+  /** For the lean tiles whose records are listed per tile (`SHADOWED`, `LEAN_SHADOW`, `LISTED_TILES`). */
+  listed: string;
   /** For an Illuminated light's tiles that are dark but inside hulls (`SHADOWED`, `HELD_SHADOW`). */
   held: string;
 }
@@ -62,6 +64,7 @@ export function lightStages(fragment: string, normals: boolean): LightStages {
     shadowed: withDefines(resolved, { SHADOWED: '', ...SHADOW_DEFINES }),
     closed: withDefines(resolved, { SHADOWED: '', CLOSED_SHADOW: '', ...SHADOW_DEFINES }),
     lean: withDefines(resolved, { SHADOWED: '', LEAN_SHADOW: '', ...SHADOW_DEFINES }),
+    listed: withDefines(resolved, { SHADOWED: '', LEAN_SHADOW: '', LISTED_TILES: '', ...SHADOW_DEFINES }),
     held: withDefines(resolved, { SHADOWED: '', HELD_SHADOW: '', ...SHADOW_DEFINES }),
   };
 }

@@ -27,6 +27,8 @@ export const TEXTURE_UNITS = {
     u_entries: 3,
     /** The records' tags: programs with shadows. Bound with the records. */
     u_recordTags: 4,
+    /** The tiles' masks of listed records: the listed programs. Bound with the records. */
+    u_tileRecords: 7,
   },
   /** The light programs with normals: the surface, bound by `LightPass.begin` once a lightmap. */
   lightWithNormals: {
@@ -84,6 +86,7 @@ export const TEXTURE_UNITS = {
 export const SHADOW_TEXTURE_UNITS: ShadowTextureUnits = {
   records: TEXTURE_UNITS.light.u_records, bins: TEXTURE_UNITS.light.u_bins,
   entries: TEXTURE_UNITS.light.u_entries, recordTags: TEXTURE_UNITS.light.u_recordTags,
+  tileRecords: TEXTURE_UNITS.light.u_tileRecords,
 };
 
 /** How many units, from 0, the groups' samplers take: one past the highest unit. */

@@ -1,12 +1,10 @@
-import { ENTRY_MAX_RECORDS, ROW_INDICES, SHADOW_TYPE_CODES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_COLUMNS, TILE_ROWS } from './shadowLayout';
+import { ENTRY_MAX_RECORDS, ROW_INDICES, SHADOW_TYPE_CODES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_COLUMNS, TILE_COUNT, TILE_ROWS } from './shadowLayout';
 import { RecordMarks } from './RecordMarks';
 import type { FiledDisk } from './ShadowBins';
 import type { ShadowGeometry } from './ShadowGeometry';
 import { bitCount, FULL_ROW } from './tileMasks';
+import { TileRecordLists } from './TileRecordLists';
 import { type ShownClasses, TileRectangles } from './TileRectangles';
-
-/** Tiles per light. */
-const TILE_COUNT = TILE_COLUMNS * TILE_ROWS;
 /** Buckets of distance over the light's reach in which its still hulls are ordered, near first (see `addStillHulls`). */
 const NEAR_BUCKETS = 32;
 
@@ -51,12 +49,14 @@ export class LightTiles {
     held: new Int32Array(TILE_ROWS),
     exact: new Int32Array(TILE_ROWS),
     general: new Int32Array(TILE_ROWS),
+    listed: new Int32Array(TILE_ROWS),
   };
   private keptDark = new Int32Array(TILE_ROWS);
   private keptExact = new Int32Array(TILE_ROWS);
   private keptGeneral = new Int32Array(TILE_ROWS);
   private keptHeld = new Int32Array(TILE_ROWS);
   private keptInside = new Int32Array(TILE_ROWS);
+  private keptListed = new Int32Array(TILE_ROWS);
   /** Per row, its tiles of each class. */
   private counts = new Int32Array(TILE_CLASS_COUNT);
   /**
@@ -78,6 +78,8 @@ export class LightTiles {
   /** What the records of the light being classified prove about its tiles. */
   private readonly marks = new RecordMarks();
   private readonly writer = new TileRectangles();
+  /** The records the listed tiles read, and the tiles' masks of them. */
+  readonly lists = new TileRecordLists();
   /** Scratch of the near-first order of a light's still hulls: the order, each hull's bucket, where each bucket starts. */
   private order = new Int32Array(0);
   private bucketOfHull = new Uint8Array(0);
@@ -87,11 +89,13 @@ export class LightTiles {
   private readonly nextExact = new Int32Array(TILE_ROWS);
   private readonly nextGeneral = new Int32Array(TILE_ROWS);
   private readonly nextHeld = new Int32Array(TILE_ROWS);
+  private readonly nextListed = new Int32Array(TILE_ROWS);
   private readonly noTiles = new Int32Array(TILE_ROWS);
 
   /** Starts a frame: no row is dirty. */
   beginFrame(): void {
     this.dirtyRows.fill(0);
+    this.lists.beginFrame();
   }
 
   /** Writes the tiles of each class in `row` (the light pass skips a class it has none of) into `out`, indexed by class. */
@@ -120,6 +124,7 @@ export class LightTiles {
    */
   beginLight(bounds: Float64Array, disk: FiledDisk, confined: boolean, shadowType: number): void {
     this.marks.begin(bounds, disk, confined, shadowType);
+    this.lists.beginLight();
     this.pastHulls = shadowType === SHADOW_TYPE_CODES.occluded ? SEVERAL_HULLS : 0;
   }
 
@@ -147,6 +152,7 @@ export class LightTiles {
         if (!apart) continue;
         marks.markShadowRegion();
         marks.markUmbra();
+        this.lists.addRecord(record, marks);
       }
       this.countPastHull(marks.recordsMeetingDisk - meetingBefore, isFan(geometry, hull));
     }
@@ -185,16 +191,20 @@ export class LightTiles {
       this.keptInside[at + j] = inside;
       this.keptExact[at + j] = marks.shadowed[j] & ~dark & ~held & ~outside & ~inside;
       this.keptGeneral[at + j] = this.keptExact[at + j] & marks.generalMask(j);
+      // Lean, for the lists.
+      this.keptListed[at + j] = this.keptExact[at + j] & ~this.keptGeneral[at + j];
     }
+    this.lists.endLight(row, this.keptListed, at);
+    this.keptListed.set(this.lists.listed, at);
     this.keptPastHulls[row] = this.shownPastHulls[row] = this.pastHulls;
-    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, at, true);
+    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, this.keptListed, at, true);
   }
 
   /** Shows `row`'s kept classes (a light whose moving hulls left it). */
   restoreKept(row: number): void {
     this.ensureRow(row);
     this.shownPastHulls[row] = this.keptPastHulls[row];
-    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, row * TILE_ROWS, false);
+    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, this.keptListed, row * TILE_ROWS, false);
   }
 
   /**
@@ -206,11 +216,11 @@ export class LightTiles {
     const at = row * TILE_ROWS;
     for (let j = 0; j < TILE_ROWS; j++) {
       this.marks.writeOutside(this.shown.outside, at, j);
-      this.keptDark[at + j] = this.keptHeld[at + j] = this.keptInside[at + j] = 0;
+      this.keptDark[at + j] = this.keptHeld[at + j] = this.keptInside[at + j] = this.keptListed[at + j] = 0;
       this.keptExact[at + j] = this.keptGeneral[at + j] = FULL_ROW & ~this.shown.outside[at + j];
     }
     this.keptPastHulls[row] = this.shownPastHulls[row] = SEVERAL_HULLS;
-    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, at, true);
+    this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, this.keptListed, at, true);
   }
 
   /**
@@ -225,7 +235,7 @@ export class LightTiles {
       exact[j] = FULL_ROW & ~this.shown.outside[at + j] & ~dark[j] & ~this.keptInside[at + j];
     }
     this.shownPastHulls[row] = SEVERAL_HULLS;
-    this.show(row, dark, exact, exact, this.noTiles, 0, false);
+    this.show(row, dark, exact, exact, this.noTiles, this.noTiles, 0, false);
   }
 
   /**
@@ -253,11 +263,11 @@ export class LightTiles {
       this.countPastHull(marks.recordsMeetingDisk - meetingBefore, isFan(geometry, hull));
     }
     this.shownPastHulls[row] = this.keptPastHulls[row] + this.pastHulls;
-    const at = row * TILE_ROWS, dark = this.nextDark, exact = this.nextExact, general = this.nextGeneral, held = this.nextHeld;
+    const at = row * TILE_ROWS, dark = this.nextDark, exact = this.nextExact, general = this.nextGeneral, held = this.nextHeld, listed = this.nextListed;
     if (marks.diskHidden && marks.solid) {
       // A moving record holds a Solid light's disk: every tile within the reach is dark.
       for (let j = 0; j < TILE_ROWS; j++) dark[j] = FULL_ROW & ~this.shown.outside[at + j];
-      this.show(row, dark, this.noTiles, this.noTiles, this.noTiles, 0, false);
+      this.show(row, dark, this.noTiles, this.noTiles, this.noTiles, this.noTiles, 0, false);
       return;
     }
     const illuminated = marks.illuminated();
@@ -269,8 +279,10 @@ export class LightTiles {
       held[j] = keptHeld | (illuminated ? lost : 0);
       exact[j] = keptExact | (marks.shadowed[j] & lit) | (illuminated ? 0 : lost);
       general[j] = this.keptGeneral[at + j] | (exact[j] & marks.generalMask(j));
+      // The lists hold the still records: a tile a moving record touches walks its bin.
+      listed[j] = this.keptListed[at + j] & ~general[j] & ~marks.shadowed[j] & ~marks.occupied[j];
     }
-    this.show(row, dark, exact, general, held, 0, false);
+    this.show(row, dark, exact, general, held, listed, 0, false);
   }
 
   /**
@@ -278,34 +290,37 @@ export class LightTiles {
    * exact) and `held[from + j]`: when a tile row changed (or `force`, for a new filing), rewrites
    * the row's rectangles, recounts it and marks it dirty.
    */
-  private show(row: number, dark: Int32Array, exact: Int32Array, general: Int32Array, held: Int32Array, from: number, force: boolean): void {
+  private show(row: number, dark: Int32Array, exact: Int32Array, general: Int32Array, held: Int32Array, listed: Int32Array, from: number, force: boolean): void {
     const at = row * TILE_ROWS, shown = this.shown;
     let changed = false;
     for (let j = 0; j < TILE_ROWS; j++) {
-      const d = dark[from + j], e = exact[from + j], g = general[from + j], h = held[from + j];
-      if (!force && d === shown.dark[at + j] && e === shown.exact[at + j] && g === shown.general[at + j] && h === shown.held[at + j]) continue;
+      const d = dark[from + j], e = exact[from + j], g = general[from + j], h = held[from + j], l = listed[from + j];
+      if (!force && d === shown.dark[at + j] && e === shown.exact[at + j] && g === shown.general[at + j] && h === shown.held[at + j] && l === shown.listed[at + j]) continue;
       shown.dark[at + j] = d;
       shown.exact[at + j] = e;
       shown.general[at + j] = g;
       shown.held[at + j] = h;
+      shown.listed[at + j] = l;
       changed = true;
     }
     if (!changed) return;
     this.writer.write(shown, at);
     this.usedIndices[row] = this.writer.copyInto(this.rectangles, row * ROW_INDICES, this.listFirst, this.listCount, row * TILE_CLASS_COUNT);
     this.dirtyRows[row] = 1;
-    let outside = 0, darkCount = 0, exactCount = 0, generalCount = 0, heldCount = 0;
+    let outside = 0, darkCount = 0, exactCount = 0, generalCount = 0, heldCount = 0, listedCount = 0;
     for (let j = 0; j < TILE_ROWS; j++) {
       outside += bitCount(shown.outside[at + j]);
       darkCount += bitCount(shown.dark[at + j]);
       exactCount += bitCount(shown.exact[at + j]);
       generalCount += bitCount(shown.general[at + j]);
       heldCount += bitCount(shown.held[at + j]);
+      listedCount += bitCount(shown.listed[at + j]);
     }
     const counts = this.counts, c = row * TILE_CLASS_COUNT;
     counts[c + TILE_CLASSES.outside] = outside;
     counts[c + TILE_CLASSES.dark] = darkCount;
-    counts[c + TILE_CLASSES.lean] = exactCount - generalCount;
+    counts[c + TILE_CLASSES.lean] = exactCount - generalCount - listedCount;
+    counts[c + TILE_CLASSES.listed] = listedCount;
     counts[c + TILE_CLASSES.exact] = generalCount;
     counts[c + TILE_CLASSES.held] = heldCount;
     counts[c + TILE_CLASSES.lit] = TILE_COUNT - outside - darkCount - exactCount - heldCount;
@@ -340,6 +355,8 @@ export class LightTiles {
     shown.general = grown(shown.general, words);
     this.keptHeld = grown(this.keptHeld, words);
     this.keptInside = grown(this.keptInside, words);
+    this.keptListed = grown(this.keptListed, words);
+    shown.listed = grown(shown.listed, words);
     shown.held = grown(shown.held, words);
     const rectangles = new Uint16Array(rows * ROW_INDICES), used = new Int32Array(rows), dirty = new Uint8Array(rows);
     rectangles.set(this.rectangles);

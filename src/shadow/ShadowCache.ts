@@ -11,7 +11,7 @@ import { HullMotion, MOVING_FRAMES } from './HullMotion';
 import { LightTiles } from './LightTiles';
 import { type LightDraw, LightPlacement } from './lightPlacement';
 import { type FiledDisk, ShadowBins } from './ShadowBins';
-import { SHADOW_TYPE_CODES } from './shadowLayout';
+import { SHADOW_TYPE_CODES, TILE_CLASSES } from './shadowLayout';
 import type { ShadowGeometry } from './ShadowGeometry';
 
 export { LightDraw } from './lightPlacement';
@@ -128,6 +128,7 @@ export class ShadowCache {
     filing.writeTiles(draw.tileFrame);
     this.tiles.writeCounts(filing.row, draw.tileCounts);
     this.tiles.writeLists(filing.row, draw.tileLists);
+    if (draw.tileCounts[TILE_CLASSES.listed] > 0) this.tiles.lists.writeRecords(filing.row, draw.listedRecords);
     draw.closedForm = this.tiles.closedFormSuffices(filing.row);
     if (filing.unclassified) this.unclassifiedCount++;
   }

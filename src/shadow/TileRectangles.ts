@@ -2,11 +2,12 @@ import { ROW_INDICES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_COLUMNS, TILE_ROWS, t
 import { FULL_ROW, runFrom } from './tileMasks';
 
 /** The classes drawn, in the order their rectangles follow each other in a row's slot. */
-const DRAWN_CLASSES = [TILE_CLASSES.lit, TILE_CLASSES.dark, TILE_CLASSES.held, TILE_CLASSES.lean, TILE_CLASSES.exact] as const;
+const DRAWN_CLASSES = [TILE_CLASSES.lit, TILE_CLASSES.dark, TILE_CLASSES.held, TILE_CLASSES.lean, TILE_CLASSES.listed, TILE_CLASSES.exact] as const;
 
 /**
  * The classes a light's tiles are shown in, one int32 mask per tile row (see `tileMasks`):
- * outside, dark, held and exact are disjoint, general lies within exact; a tile in none is lit.
+ * outside, dark, held and exact are disjoint, general and listed lie within exact, apart; a tile in
+ * none is lit.
  */
 export interface ShownClasses {
   outside: Int32Array;
@@ -14,6 +15,7 @@ export interface ShownClasses {
   held: Int32Array;
   exact: Int32Array;
   general: Int32Array;
+  listed: Int32Array;
 }
 
 /**
@@ -71,7 +73,7 @@ export class TileRectangles {
 
   /**
    * Sets `rowClasses` to the masks of each class in tile row `word` of `shown`: outside before
-   * dark before held before exact (general or lean), the rest lit.
+   * dark before held before exact (general, listed or lean), the rest lit.
    */
   splitClasses(shown: ShownClasses, word: number): void {
     const masks = this.rowClasses, outside = shown.outside[word], dark = shown.dark[word] & ~outside;
@@ -80,7 +82,8 @@ export class TileRectangles {
     masks[TILE_CLASSES.dark] = dark;
     masks[TILE_CLASSES.held] = held;
     masks[TILE_CLASSES.exact] = exact & shown.general[word];
-    masks[TILE_CLASSES.lean] = exact & ~shown.general[word];
+    masks[TILE_CLASSES.listed] = exact & shown.listed[word];
+    masks[TILE_CLASSES.lean] = exact & ~shown.general[word] & ~shown.listed[word];
     masks[TILE_CLASSES.lit] = FULL_ROW & ~(outside | dark | held | exact);
   }
 

@@ -3,7 +3,7 @@ import { DirectionalLight } from '../scene/DirectionalLight';
 import type { Light } from '../scene/Light';
 import type { LightFiling } from './filings';
 import { DirectionalStrips } from './ShadowBins';
-import { TILE_CLASS_COUNT } from './shadowLayout';
+import { LISTED_RECORDS, TILE_CLASS_COUNT } from './shadowLayout';
 
 /**
  * What the passes need to draw one light, as the shadow cache leaves it: its quad, the hulls that shadow
@@ -39,6 +39,8 @@ export class LightDraw {
    * Occluded (`LightTiles.closedFormSuffices`).
    */
   closedForm = false;
+  /** A shadowed point light's listed records, when it has listed tiles (`TileRecordLists`; the light pass's `u_listedRecords`). */
+  readonly listedRecords = new Int32Array(LISTED_RECORDS);
   /** Per class of its tiles, where its rectangles' indices start in the shadow cache's `tiles.rectangles` and how many (`LightTiles.writeLists`), when `hullCount > 0`. */
   readonly tileLists = new Int32Array(2 * TILE_CLASS_COUNT);
   /** A directional light's strips over the view (its bins). */

@@ -100,6 +100,18 @@ export function tileCorner(i: number, j: number): number {
   return j * (TILE_COLUMNS + 1) + i;
 }
 
+/** Tiles per light. */
+export const TILE_COUNT = TILE_COLUMNS * TILE_ROWS;
+
+/**
+ * **Tile records** (RG16UI: a 32-bit word's low and high halves, {@link TEXTURE_WIDTH} texels a row, {@link TILE_COUNT} per light from
+ * texel `row × TILE_COUNT`, written by `TileRecordLists` when a light is classified): per tile
+ * (`j × TILE_COLUMNS + i`), a mask of the light's listed records, bit k for its k-th (the light
+ * pass's `u_listedRecords`, at most LISTED_RECORDS, nearest first), set when the record's shadow
+ * region or box touches the tile. What a pixel of a listed tile walks instead of its bin.
+ */
+export const LISTED_RECORDS = 32;
+
 /** Indices per light in the tile rectangles' index buffer: two triangles for each of its tiles, the most rectangles it can have. */
 export const ROW_INDICES = 6 * TILE_COLUMNS * TILE_ROWS;
 
@@ -110,14 +122,16 @@ export const ROW_INDICES = 6 * TILE_COLUMNS * TILE_ROWS;
  * inside a hull, dark elsewhere; HELD_SHADOW), the lean exact program (every record that hides
  * part of the disk from a pixel of the tile lies wholly in front of the disk, and none holds a
  * pixel of an Occluded light: LEAN_SHADOW; see the chunk shadow-visibility), or the general exact
- * program.
+ * program; a lean tile whose records are listed (see {@link LISTED_RECORDS}) is **listed**, drawn
+ * with the lean program that reads its tile's records instead of walking the bins (LISTED_TILES).
  */
-export const TILE_CLASSES = { outside: 0, lit: 1, dark: 2, lean: 3, exact: 4, held: 5 } as const;
+export const TILE_CLASSES = { outside: 0, lit: 1, dark: 2, lean: 3, exact: 4, held: 5, listed: 6 } as const;
 /** How many classes TILE_CLASSES has: the length of a light's tile counts. */
-export const TILE_CLASS_COUNT = 6;
+export const TILE_CLASS_COUNT = 7;
 
 /** The layout constants the shader reads, as `#define`s. */
 export const SHADOW_DEFINES: Readonly<Record<string, number>> = {
   RECORD_TEXELS, TEXTURE_WIDTH, RECORDS_PER_ROW, BIN_COUNT, ENTRY_MAX_RECORDS, TAG_EDGE_BITS,
+  TILE_COLUMNS, TILE_ROWS, TILE_COUNT, LISTED_RECORDS,
   SHADOW_SOLID: SHADOW_TYPE_CODES.solid, SHADOW_ILLUMINATED: SHADOW_TYPE_CODES.illuminated, SHADOW_OCCLUDED: SHADOW_TYPE_CODES.occluded,
 };

@@ -8,9 +8,9 @@ import { check, convexAround } from '../unit/lightTilesSupport';
 // scenes; the scenes made for each class are test/unit/lightTiles.test.ts.
 
 describe('LightTiles', () => {
-  it('never calls a tile lit, dark, held or lean wrongly in random scenes (disks of radius 0 to 30, walls, posts, overlapping disks)', () => {
+  it('never calls a tile lit, dark, held, lean or listed wrongly in random scenes (disks of radius 0 to 30, walls, posts, overlapping disks)', () => {
     const random = createRandom(7);
-    let lit = 0, dark = 0, lean = 0, held = 0;
+    let lit = 0, dark = 0, lean = 0, held = 0, listed = 0;
     for (let scene = 0; scene < 30; scene++) {
       const centre: Point = [200, 200];
       const radius = scene % 5 === 0 ? 0 : random() * 30;
@@ -24,13 +24,15 @@ describe('LightTiles', () => {
       expect(wrong.slice(0, 3), `scene ${scene}`).toEqual([]);
       lit += counts[TILE_CLASSES.lit];
       dark += counts[TILE_CLASSES.dark];
-      lean += counts[TILE_CLASSES.lean];
+      lean += counts[TILE_CLASSES.lean] + counts[TILE_CLASSES.listed];
+      listed += counts[TILE_CLASSES.listed];
       held += counts[TILE_CLASSES.held];
     }
     // Not everything exact: the classification must decide most of the light's area.
     expect(lit).toBeGreaterThan(30 * 300);
     expect(dark).toBeGreaterThan(30 * 5);
     expect(lean).toBeGreaterThan(30 * 20);
+    expect(listed).toBeGreaterThan(lean / 2);
     expect(held).toBeGreaterThan(0);
   });
 });

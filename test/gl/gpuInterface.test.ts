@@ -178,9 +178,9 @@ describe('the GPU interface of every program', () => {
         }
         const edgeAware = lightmapScale < 1;
         const build = `normals ${normals}, edge-aware ${edgeAware}`;
-        // Four light kinds, each unshadowed, lean and general, and but the directional one tiled plain, held and closed.
+        // Four light kinds, each unshadowed, lean and general, and but the directional one tiled plain, held, listed and closed.
         expect(countsOf(programs), build).toEqual({
-          light: 4 * 3 + 3 * 3, composite: 1, debug: 2, ...(normals ? {} : { blur: 1 }), ...(edgeAware ? { hullMask: 1 } : {}),
+          light: 4 * 3 + 3 * 4, composite: 1, debug: 2, ...(normals ? {} : { blur: 1 }), ...(edgeAware ? { hullMask: 1 } : {}),
         });
         problems.push(...problemsOf(gl, programs, textureUnits(normals, edgeAware), used).map((problem) => `${build}: ${problem}`));
         renderer.dispose();

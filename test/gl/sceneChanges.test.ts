@@ -208,14 +208,15 @@ describe('lights whose shadows did not change', () => {
     left.setPosition(14, 33);
     frame();
     expect(renderer.stats.lightsFiled).toBe(1);
-    // The left light's row of bins and its entries (a run of texture rows each), and its tile rectangles.
-    expect(uploads.count).toBe(3);
+    // The left light's row of bins and its entries (a run of texture rows each), its tile records and
+    // its tile rectangles.
+    expect(uploads.count).toBe(4);
     rightBox.position = [66, 35];
     uploads.count = 0;
     const changed = frame();
     expect(renderer.stats.lightsFiled).toBe(1);
-    // The box's records and tags, the right light's bins, entries and tile classes.
-    expect(uploads.count).toBe(5);
+    // The box's records and tags, the right light's bins, entries, tile records and tile classes.
+    expect(uploads.count).toBe(6);
     expect(maxDifference(still, changed)).toBeGreaterThan(0.1);
 
     const fresh = new PenumbraRenderer(gl, { ambientColor: [0, 0, 0] });

@@ -18,8 +18,9 @@ describe('LightTiles', () => {
     expect(counts[TILE_CLASSES.lit]).toBeGreaterThan(500);
     expect(counts[TILE_CLASSES.dark]).toBeGreaterThan(20);
     expect(counts[TILE_CLASSES.outside]).toBeGreaterThan(150);
-    // Its penumbra is lean: no record meets the disk.
-    expect(counts[TILE_CLASSES.lean]).toBeGreaterThan(20);
+    // Its penumbra is lean, its one record listed: no record meets the disk.
+    expect(counts[TILE_CLASSES.listed]).toBeGreaterThan(20);
+    expect(counts[TILE_CLASSES.lean]).toBe(0);
     expect(counts[TILE_CLASSES.exact]).toBe(0);
   });
 
@@ -27,7 +28,7 @@ describe('LightTiles', () => {
     const wall = box(104, 60, 20, 80);
     const torch = check({ hulls: [wall, box(150, 150, 10, 10)], centre: [100, 100], radius: 6, reach: 80, solid: true });
     expect(torch.wrong).toEqual([]);
-    expect(torch.counts[TILE_CLASSES.lean]).toBe(0);
+    expect(torch.counts[TILE_CLASSES.lean] + torch.counts[TILE_CLASSES.listed]).toBe(0);
     expect(torch.counts[TILE_CLASSES.exact]).toBeGreaterThan(0);
     const crate = box(140, 95, 10, 10);
     const occluded = check({ hulls: [crate], centre: [100, 100], radius: 4, reach: 80, solid: false, occluded: true });
@@ -36,7 +37,7 @@ describe('LightTiles', () => {
     expect(occluded.counts[TILE_CLASSES.exact]).toBeGreaterThan(0);
     expect(occluded.counts[TILE_CLASSES.held]).toBe(0);
     expect(illuminated.counts[TILE_CLASSES.exact]).toBe(0);
-    expect(illuminated.counts[TILE_CLASSES.lean]).toBeGreaterThan(0);
+    expect(illuminated.counts[TILE_CLASSES.listed]).toBeGreaterThan(0);
   });
 
   it('draws no exact tile for a disk wholly inside a hull but for an Occluded light: dark, and held where a hull is for an Illuminated one', () => {
@@ -47,7 +48,7 @@ describe('LightTiles', () => {
     expect(solid.counts[TILE_CLASSES.dark] + solid.counts[TILE_CLASSES.outside]).toBe(TILE_COLUMNS * TILE_ROWS);
     const illuminated = check({ hulls, centre: [110, 100], radius: 5, reach: 80, solid: false });
     expect(illuminated.wrong).toEqual([]);
-    expect(illuminated.counts[TILE_CLASSES.lean] + illuminated.counts[TILE_CLASSES.exact]).toBe(0);
+    expect(illuminated.counts[TILE_CLASSES.lean] + illuminated.counts[TILE_CLASSES.listed] + illuminated.counts[TILE_CLASSES.exact]).toBe(0);
     expect(illuminated.counts[TILE_CLASSES.held]).toBeGreaterThan(0);
     const occluded = check({ hulls, centre: [110, 100], radius: 5, reach: 80, solid: false, occluded: true });
     expect(occluded.wrong).toEqual([]);

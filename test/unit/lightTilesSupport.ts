@@ -1,5 +1,5 @@
 import { LightTiles } from '../../src/shadow/LightTiles';
-import { SHADOW_TYPE_CODES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_COLUMNS, TILE_ROWS } from '../../src/shadow/shadowLayout';
+import { LISTED_RECORDS, RECORD_FLOATS, RECORD_POINTS, SHADOW_TYPE_CODES, TILE_CLASS_COUNT, TILE_CLASSES, TILE_COLUMNS, TILE_ROWS } from '../../src/shadow/shadowLayout';
 import { ShadowGeometry } from '../../src/shadow/ShadowGeometry';
 import { Hull } from '../../src/index';
 import { diskSamples, shareOfSamplesSeen } from '../reference/softShadowReference';
@@ -10,7 +10,8 @@ import type { Point } from '../reference/scenes';
  * point of a lit tile (corners, edges and middles, 3×3 per tile) sees every disk sample, every point
  * of a dark tile outside the hulls sees none, and from every point of a lean tile outside the hulls
  * each hull that hides a sample hides every sample in its wedge (the disk lies wholly beyond it
- * there, what the lean program takes for granted). Samples: 512 per disk plus 256 on its rim (the
+ * there, what the lean program takes for granted), and a listed tile lists every record that hides a
+ * sample from one of its points or holds it (what the listed program walks). Samples: 512 per disk plus 256 on its rim (the
  * tangent points a lit tile's corner may graze); for the lean tiles 128 and 64.
  */
 const SAMPLES_PER_SIDE = 3;
@@ -26,8 +27,16 @@ export interface Case {
   occluded?: boolean;
 }
 
+/** What `classify` found: the tiles' classes, the filed bounds, and per listed tile the listed records' corners. */
+interface Classified {
+  classes: Uint8Array;
+  bounds: Float64Array;
+  /** Per tile, the corners of the records its mask lists (see TileRecordLists). */
+  listedOf: (tile: number) => Point[][];
+}
+
 /** LightTiles' classes of `c`'s tiles, and the light's filed bounds. */
-export function classify({ hulls, centre, radius, reach, solid, occluded }: Case): { classes: Uint8Array; bounds: Float64Array } {
+export function classify({ hulls, centre, radius, reach, solid, occluded }: Case): Classified {
   const geometry = new ShadowGeometry();
   const made = hulls.map((points) => new Hull(points));
   geometry.update(made);
@@ -39,7 +48,34 @@ export function classify({ hulls, centre, radius, reach, solid, occluded }: Case
   tiles.beginLight(bounds, Float64Array.of(centre[0], centre[1], radius, reach), true, shadowType);
   tiles.addStillHulls(geometry, indices, indices.length);
   tiles.endLight(0);
-  return { classes: Uint8Array.from({ length: TILE_COLUMNS * TILE_ROWS }, (_, tile) => tiles.tileClass(0, tile)), bounds };
+  const classes = Uint8Array.from({ length: TILE_COLUMNS * TILE_ROWS }, (_, tile) => tiles.tileClass(0, tile));
+  const recordCorners = (record: number): Point[] => Array.from({ length: RECORD_POINTS }, (_, k) => [geometry.records[record * RECORD_FLOATS + 2 * k], geometry.records[record * RECORD_FLOATS + 2 * k + 1]]);
+  const listedOf = (tile: number): Point[][] => {
+    const listed: Point[][] = [];
+    for (let k = 0; k < LISTED_RECORDS; k++) if (((tiles.lists.masks[tile] >>> k) & 1) === 1) listed.push(recordCorners(tiles.lists.records[k]));
+    return listed;
+  };
+  return { classes, bounds, listedOf };
+}
+
+/** All records of `hulls` as `classify` made them, each as its corners. */
+function recordsOf(hulls: Point[][]): Point[][] {
+  const geometry = new ShadowGeometry();
+  const made = hulls.map((points) => new Hull(points));
+  geometry.update(made);
+  const all: Point[][] = [];
+  for (let i = 0; i < made.length; i++) {
+    geometry.prepare(i);
+    for (let r = geometry.firstRecords[i]; r < geometry.firstRecords[i] + geometry.recordCounts[i]; r++) {
+      all.push(Array.from({ length: RECORD_POINTS }, (_, k) => [geometry.records[r * RECORD_FLOATS + 2 * k], geometry.records[r * RECORD_FLOATS + 2 * k + 1]]));
+    }
+  }
+  return all;
+}
+
+/** Whether the two records have the same corners. */
+function sameRecord(a: Point[], b: Point[]): boolean {
+  return a.every(([x, y], k) => x === b[k][0] && y === b[k][1]);
 }
 
 function samplesWithRim(centre: Point, radius: number, inner = 512, onRim = 256): Float64Array {
@@ -93,7 +129,8 @@ function seenPastFrom(hulls: Point[][], x: number, y: number, samples: Float64Ar
 
 /** Wrong tiles of `c`'s classification, and how many tiles of each class it has. */
 export function check(c: Case): { wrong: string[]; counts: number[] } {
-  const { classes, bounds } = classify(c);
+  const { classes, bounds, listedOf } = classify(c);
+  const records = recordsOf(c.hulls);
   const samples = samplesWithRim(c.centre, Math.max(c.radius, 1e-3));
   const fewSamples = samplesWithRim(c.centre, Math.max(c.radius, 1e-3), 128, 64);
   const edges = edgesOf(c.hulls);
@@ -108,7 +145,20 @@ export function check(c: Case): { wrong: string[]; counts: number[] } {
       for (let a = 0; a < SAMPLES_PER_SIDE; a++) {
         for (let b = 0; b < SAMPLES_PER_SIDE; b++) {
           const x = bounds[0] + (i + a / (SAMPLES_PER_SIDE - 1)) * tw, y = bounds[1] + (j + b / (SAMPLES_PER_SIDE - 1)) * th;
-          if (value === TILE_CLASSES.lean) {
+          if (value === TILE_CLASSES.listed) {
+            const hides = (record: Point[]) => {
+              const recordEdges = edgesOf([record]);
+              return insideAny([record], x, y) || shareOfSamplesSeen(x, y, fewSamples, recordEdges, recordEdges.length) < 1;
+            };
+            // The point's tile and, on a side, the tile across it, whose mask a pixel there may read.
+            for (const [ti, tj] of [[i, j], [i + a - 1, j], [i, j + b - 1], [i + a - 1, j + b - 1]]) {
+              if (ti < 0 || tj < 0 || ti >= TILE_COLUMNS || tj >= TILE_ROWS) continue;
+              const listed = listedOf(tj * TILE_COLUMNS + ti);
+              const missing = records.find((record) => !listed.some((other) => sameRecord(record, other)) && hides(record));
+              if (missing) wrong.push(`tile (${ti}, ${tj}) beside listed tile (${i}, ${j}) leaves out a record hiding part of the disk from (${x.toFixed(2)}, ${y.toFixed(2)}) or holding it`);
+            }
+          }
+          if (value === TILE_CLASSES.lean || value === TILE_CLASSES.listed) {
             if (c.occluded && insideAny(c.hulls, x, y)) wrong.push(`lean tile (${i}, ${j}) of an Occluded light holds (${x.toFixed(2)}, ${y.toFixed(2)}) inside a hull`);
             else if (seenPastFrom(c.hulls, x, y, fewSamples)) wrong.push(`lean tile (${i}, ${j}) at (${x.toFixed(2)}, ${y.toFixed(2)}) sees past a hull`);
             continue;
