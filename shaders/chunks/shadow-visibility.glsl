@@ -627,7 +627,13 @@ float visibleFraction(int shadowType, out bool holds) {
     }
     for (int i = 0; i < (walk == UNION_STEPS ? 0 : binCount); i++) {
       ivec2 records = recordsOfEntry(i);
+#ifdef LISTED_TILES
+      // One record an entry: no loop over the entry's records.
+      {
+        int record = records.x;
+#else
       for (int record = records.x; record <= records.y; record++) {
+#endif
 #ifdef SHADOW_STATISTICS
         if (walk == FIRST_WALK) visitedRecords++;
 #endif
