@@ -31,14 +31,14 @@ export interface FrameStats {
    * drawn, or the plain program in the colour the shadows keep), exact (an exact shadow program:
    * the lean one or the general one, or for an Illuminated light's dark tiles with hulls in them
    * the held one, lit inside hulls), and outside the light's reach (not drawn). Each such light
-   * has 1,024 tiles. This one: the lit tiles.
+   * has 2,048 tiles (32 × 64). This one: the lit tiles.
    */
   tilesLit: number;
   /** The dark tiles of the last lightmap (see {@link FrameStats.tilesLit}). */
   tilesDark: number;
   /** The tiles drawn with an exact shadow program (see {@link FrameStats.tilesLit}). */
   tilesExact: number;
-  /** Of the exact tiles, those drawn with the lean exact program: every record that hides part of the disk from a pixel lies in front of it (docs/shadows.md). */
+  /** Of the exact tiles, those drawn with the lean exact program: every record that hides part of the disk from a pixel lies in front of it (docs/shadows.md); listed tiles included. */
   tilesLean: number;
   /** Of the exact tiles, those drawn with the held program: dark but inside hulls (docs/shadows.md). */
   tilesHeld: number;

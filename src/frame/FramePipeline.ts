@@ -302,8 +302,9 @@ export class FramePipeline {
       const counts = draw.tileCounts;
       stats.tilesLit += counts[TILE_CLASSES.lit];
       stats.tilesDark += counts[TILE_CLASSES.dark];
-      stats.tilesExact += counts[TILE_CLASSES.lean] + counts[TILE_CLASSES.exact] + counts[TILE_CLASSES.held];
-      stats.tilesLean += counts[TILE_CLASSES.lean];
+      const lean = counts[TILE_CLASSES.lean] + counts[TILE_CLASSES.listed];
+      stats.tilesExact += lean + counts[TILE_CLASSES.exact] + counts[TILE_CLASSES.held];
+      stats.tilesLean += lean;
       stats.tilesHeld += counts[TILE_CLASSES.held];
       stats.tilesOutside += counts[TILE_CLASSES.outside];
     }

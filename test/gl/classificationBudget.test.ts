@@ -1,5 +1,6 @@
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
 import { Hull, PenumbraRenderer, PointLight } from '../../src/index';
+import { TILE_COLUMNS, TILE_ROWS } from '../../src/shadow/shadowLayout';
 import { createContext, destroyContext } from './context';
 import { renderLightmap, type Lightmap } from './lightmap';
 
@@ -56,6 +57,10 @@ describe('classification budget', () => {
     const reference = renderLightmap(gl, unlimited, W, H);
     expect(unlimited.stats.lightsUnclassified).toBe(0);
     expect(unlimited.stats.tilesLit).toBeGreaterThan(0);
+    // Every tile of the three lights in one class, the posts' penumbrae lean.
+    const { tilesLit, tilesDark, tilesExact, tilesOutside, tilesLean } = unlimited.stats;
+    expect(tilesLit + tilesDark + tilesExact + tilesOutside).toBe(3 * TILE_COLUMNS * TILE_ROWS);
+    expect(tilesLean).toBeGreaterThan(0);
     // Nothing fits a budget of 0: every tile within reach is exact.
     const exact = renderLightmap(gl, none, W, H);
     expect(none.stats.lightsUnclassified).toBe(3);
