@@ -24,6 +24,8 @@ export class TileRecordLists {
   masks = new Uint32Array(TILE_COUNT);
   /** The masks as 16-bit halves, low first (little-endian, as every platform WebGL runs on): the tile records texture's data. */
   maskHalves = new Uint16Array(this.masks.buffer);
+  /** Per filing row: 1 while its masks are all 0 (as they start). */
+  private clearRows = new Uint8Array(1).fill(1);
   /** Per row of the tile records texture (TILE_RECORD_ROWS a filing row): 1 when written since `beginFrame`. */
   dirtyTextureRows = new Uint8Array(TILE_RECORD_ROWS);
   /** The listed tiles of the light last ended, per tile row. */
@@ -69,6 +71,12 @@ export class TileRecordLists {
    */
   endLight(row: number, lean: Int32Array, at: number): void {
     this.ensureRow(row);
+    // A light with no lean tile lists nothing: its masks stay as they are when already clear.
+    if (!anyTile(lean, at) && this.clearRows[row] === 1) {
+      this.listed.fill(0);
+      return;
+    }
+    this.clearRows[row] = 0;
     this.findNear(lean, at);
     const spans = this.spans, masks = this.masks, near = this.near, unlisted = this.unlisted, tiles = row * TILE_COUNT;
     masks.fill(0, tiles, tiles + TILE_COUNT);
@@ -89,6 +97,7 @@ export class TileRecordLists {
       }
     }
     for (let j = 0; j < TILE_ROWS; j++) this.listed[j] = lean[at + j] & ~unlisted[j];
+    if (count === 0) this.clearRows[row] = 1;
     this.dirtyTextureRows.fill(1, row * TILE_RECORD_ROWS, (row + 1) * TILE_RECORD_ROWS);
   }
 
@@ -115,11 +124,20 @@ export class TileRecordLists {
     records.set(this.records);
     masks.set(this.masks);
     dirty.set(this.dirtyTextureRows);
+    const clearRows = new Uint8Array(rows).fill(1);
+    clearRows.set(this.clearRows);
+    this.clearRows = clearRows;
     this.records = records;
     this.masks = masks;
     this.maskHalves = new Uint16Array(masks.buffer);
     this.dirtyTextureRows = dirty;
   }
+}
+
+/** Whether a tile row `tiles[at + j]` has a tile. */
+function anyTile(tiles: Int32Array, at: number): boolean {
+  for (let j = 0; j < TILE_ROWS; j++) if (tiles[at + j] !== 0) return true;
+  return false;
 }
 
 /** Whether the record's rows `spans[from + j]`, `first ≤ j ≤ last`, touch a tile of `lean[at + j]`. */
