@@ -13,7 +13,7 @@ uniform mat4 u_viewProjection;
 
 vec2 pointOf(int record, int point) {
   int texel = record * RECORD_TEXELS + point / 2;
-  vec4 two = texelFetch(u_records, ivec2(texel % TEXTURE_WIDTH, texel / TEXTURE_WIDTH), 0);
+  vec4 two = texelFetch(u_records, ivec2(texel & (TEXTURE_WIDTH - 1), texel >> TEXTURE_WIDTH_BITS), 0);
   return point % 2 == 0 ? two.xy : two.zw;
 }
 

@@ -103,8 +103,13 @@ float diskAreaBelow(float t) {
   return 0.5 + t * (0.63451936 + t2 * (-0.07441131 + t2 * (-0.14561180 + t2 * (0.19324319 + t2 * -0.10773944))));
 }
 
+// Texel `index` (≥ 0) of a texture TEXTURE_WIDTH wide, row by row (see shadowLayout for why shifts).
+ivec2 texelOf(int index) {
+  return ivec2(index & (TEXTURE_WIDTH - 1), index >> TEXTURE_WIDTH_BITS);
+}
+
 vec4 texelAt(sampler2D source, int index) {
-  return texelFetch(source, ivec2(index % TEXTURE_WIDTH, index / TEXTURE_WIDTH), 0);
+  return texelFetch(source, texelOf(index), 0);
 }
 
 // The pixel and light, set by shadowVisibility().
@@ -135,7 +140,7 @@ void loadRecordPoints(int record) {
 // The record's tag (src/shadow/shadowLayout.ts, recordTag): its hull's first record and its
 // outline edges.
 int tagOf(int record) {
-  return int(texelFetch(u_recordTags, ivec2(record % RECORDS_PER_ROW, record / RECORDS_PER_ROW), 0).x);
+  return int(texelFetch(u_recordTags, ivec2(record & (RECORDS_PER_ROW - 1), record >> RECORDS_PER_ROW_BITS), 0).x);
 }
 
 // A box around the segment a–b (offsets from the pixel) is what the segment hides: at least 2^-10
@@ -252,10 +257,10 @@ void leaveList(inout int i) {
 // The first and last record of `entry`; sets entryIsFan.
 ivec2 recordsOf(vec4 entry) {
   int code = int(entry.x);
-  entryIsFan = code % 2 == 1;
-  int records = code / 2;
-  int first = records / ENTRY_MAX_RECORDS;
-  return ivec2(first, first + records % ENTRY_MAX_RECORDS);
+  entryIsFan = (code & 1) == 1;
+  int records = code >> 1;
+  int first = records >> ENTRY_RECORD_BITS;
+  return ivec2(first, first + (records & (ENTRY_MAX_RECORDS - 1)));
 }
 
 // The records of entry `i` of the pixel's bin, first and last, or (0, -1) when this hull cannot hide
@@ -566,7 +571,7 @@ void beginShadow() {
   // The walk's entries are the tile's listed records: as many as its mask has bits.
   ivec2 tile = clamp(ivec2(floor(v_tile)), ivec2(0), ivec2(TILE_COLUMNS - 1, TILE_ROWS - 1));
   int texel = int(u_shadow.w) * TILE_COUNT + tile.y * TILE_COLUMNS + tile.x;
-  uvec2 halves = texelFetch(u_tileRecords, ivec2(texel % TEXTURE_WIDTH, texel / TEXTURE_WIDTH), 0).rg;
+  uvec2 halves = texelFetch(u_tileRecords, texelOf(texel), 0).rg;
   tileMask = halves.x | (halves.y << 16);
   binCount = 0;
   for (uint rest = tileMask; rest != 0u; rest &= rest - 1u) binCount++;

@@ -40,14 +40,25 @@ export const RECORD_POINTS = 4;
 const RECORD_TEXELS = RECORD_POINTS / 2;
 /** Floats per record. */
 export const RECORD_FLOATS = RECORD_POINTS * 2;
-/** Width in texels of the records and entries textures. */
-export const TEXTURE_WIDTH = 1024;
+/**
+ * log2 of the width in texels of the records, entries and tile records textures. The widths, the
+ * records per row and ENTRY_MAX_RECORDS are powers of two, so that the shaders address texels and
+ * decode entries with shifts and masks: integer division and remainder are many instructions on
+ * GPUs (and scalar code on SwiftShader), even by a constant.
+ */
+const TEXTURE_WIDTH_BITS = 10;
+/** Width in texels of the records, entries and tile records textures. */
+export const TEXTURE_WIDTH = 1 << TEXTURE_WIDTH_BITS;
+/** log2 of RECORDS_PER_ROW (RECORD_TEXELS is 2). */
+const RECORDS_PER_ROW_BITS = TEXTURE_WIDTH_BITS - 1;
 /** Records per row of the records texture. */
-export const RECORDS_PER_ROW = TEXTURE_WIDTH / RECORD_TEXELS;
+export const RECORDS_PER_ROW = 1 << RECORDS_PER_ROW_BITS;
 /** Floats per entry: one texel. */
 export const ENTRY_FLOATS = 4;
+/** log2 of ENTRY_MAX_RECORDS. */
+const ENTRY_RECORD_BITS = 5;
 /** The most records one entry covers. */
-export const ENTRY_MAX_RECORDS = 32;
+export const ENTRY_MAX_RECORDS = 1 << ENTRY_RECORD_BITS;
 /**
  * An entry's first record, record count and whether they are a whole convex hull's fan (the shader
  * then takes the hull's outline as the records' edges less the fan's inner diagonals), in one float:
@@ -131,7 +142,7 @@ export const TILE_CLASS_COUNT = 7;
 
 /** The layout constants the shader reads, as `#define`s. */
 export const SHADOW_DEFINES: Readonly<Record<string, number>> = {
-  RECORD_TEXELS, TEXTURE_WIDTH, RECORDS_PER_ROW, BIN_COUNT, ENTRY_MAX_RECORDS, TAG_EDGE_BITS,
+  RECORD_TEXELS, TEXTURE_WIDTH, TEXTURE_WIDTH_BITS, RECORDS_PER_ROW, RECORDS_PER_ROW_BITS, BIN_COUNT, ENTRY_MAX_RECORDS, ENTRY_RECORD_BITS, TAG_EDGE_BITS,
   TILE_COLUMNS, TILE_ROWS, TILE_COUNT, LISTED_RECORDS,
   SHADOW_SOLID: SHADOW_TYPE_CODES.solid, SHADOW_ILLUMINATED: SHADOW_TYPE_CODES.illuminated, SHADOW_OCCLUDED: SHADOW_TYPE_CODES.occluded,
 };
