@@ -218,7 +218,9 @@ export class PenumbraRenderer {
   }
 
   /**
-   * Adds a light (no-op if already added).
+   * Adds a light (no-op if already added). The first light of a kind (point, spot, textured,
+   * directional) compiles that kind's programs here, so that no frame waits for them: a renderer
+   * compiles only the kinds of light it is given.
    * @throws TypeError for a {@link TexturedLight} whose texture is not a texture of this renderer's
    *   context (another context's, deleted, or never bound), checked with `gl.isTexture` (unless the
    *   context is lost). A texture assigned later is checked likewise by the next frame, before it
@@ -230,6 +232,7 @@ export class PenumbraRenderer {
     if (!(light instanceof Light)) throw new TypeError(`penumbra: addLight expects a Light, got ${String(light)}`);
     this.pipeline.refuseIfDisposed('addLight');
     if (light instanceof TexturedLight) this.pipeline.checkCookie(light, 'PenumbraRenderer.addLight: the TexturedLight\'s texture');
+    this.pipeline.prepareLight(light.kind);
     if (!this._lights.includes(light)) this._lights.push(light);
     return light;
   }

@@ -1,10 +1,10 @@
 import type { FrameStats } from '../FrameStats';
 import type { CompositeLook } from '../passes/CompositePass';
-import type { Surface } from '../passes/LightPass';
+import type { LightPass, Surface } from '../passes/LightPass';
 import { SceneAttachments, type SurfaceTextures } from '../passes/surfaceLayout';
 import type { Hull } from '../scene/Hull';
 import { DirectionalLight } from '../scene/DirectionalLight';
-import type { Light } from '../scene/Light';
+import type { Light, LightKind } from '../scene/Light';
 import type { TexturedLight } from '../scene/TexturedLight';
 import type { Dithering, ToneMapping } from '../scene/look';
 import { ShadowCache } from '../shadow/ShadowCache';
@@ -118,6 +118,17 @@ export class FramePipeline {
   /** Throws naming `method` of the renderer after {@link FramePipeline.dispose}. */
   refuseIfDisposed(method: string): void {
     if (this.disposed) throw new Error(`penumbra: PenumbraRenderer.${method}: the renderer was disposed; make a new one`);
+  }
+
+  /**
+   * Makes the programs of a kind of light not drawn yet, so that the frame that first draws one does
+   * not compile them; left to that frame while the context is lost. Throws when a program cannot be
+   * made on a context that is not lost.
+   */
+  prepareLight(kind: LightKind): void {
+    const resources = this.resources;
+    if (resources === null || this.loss.isLost || resources.light.prepared(kind)) return;
+    this.host.run(() => prepareKind(this.gl, resources.light, kind));
   }
 
   /** Throws naming `name` when the light's cookie is not a texture of the context; skipped while the context is lost. */
@@ -264,6 +275,7 @@ export class FramePipeline {
     resources.shadows.upload(geometry, cache.bins, cache.tiles.lists);
     resources.shapes.uploadTileRectangles(cache.tiles.dirtyRows, cache.tiles.rectangles, cache.tiles.usedIndices);
     if (this.normals) chooseSurface(this.surface, resources.scene, surfaces);
+    for (let i = 0; i < cache.drawCount; i++) prepareKind(this.gl, resources.light, cache.draws[i].light.kind);
     resources.light.begin(scene.look.ambient, sizing.viewProjection, this.surface);
     for (let i = 0; i < cache.drawCount; i++) {
       if ((cache.draws[i].light.litLayers & layers) !== 0) resources.light.render(cache.draws[i]);
@@ -308,5 +320,18 @@ export class FramePipeline {
       stats.tilesHeld += counts[TILE_CLASSES.held];
       stats.tilesOutside += counts[TILE_CLASSES.outside];
     }
+  }
+}
+
+/**
+ * Makes the programs of `kind` unless made; when that fails because the context was lost meanwhile
+ * (the frame then draws no light of the kind), goes on without them.
+ */
+function prepareKind(gl: WebGL2RenderingContext, light: LightPass, kind: LightKind): void {
+  if (light.prepared(kind)) return;
+  try {
+    light.prepare(kind);
+  } catch (error) {
+    if (!gl.isContextLost()) throw error;
   }
 }

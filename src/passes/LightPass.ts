@@ -42,6 +42,9 @@ export interface Surface {
  *
  * With normals the lightmap has a second attachment for the highlights, and the programs weight
  * each light by the surface's normal and material (docs/normal-maps.md); without, neither exists.
+ *
+ * A kind of light's programs are made when a light of that kind is first prepared
+ * ({@link LightPass.prepare}): a renderer of point lights compiles none of the others.
  */
 export class LightPass {
   readonly lightmap: RenderTarget;
@@ -51,8 +54,9 @@ export class LightPass {
    * directional light's quad), its listed tiles (lean, reading their tile's records), its other tiles (general exact, in closed form when no pixel can see
    * several hulls past; an Occluded directional light's quad).
    */
-  private readonly programs: Record<LightKind, LightPrograms>;
-  private readonly programList: readonly LightProgram[];
+  private readonly programs: Partial<Record<LightKind, LightPrograms>> = {};
+  /** Every program made so far: the frame's uniforms and `dispose` go through it. */
+  private readonly programList: LightProgram[] = [];
   private readonly clearValue = new Float32Array(4);
   // Uniform values go through reused typed arrays: doubles passed to a GL call one by one are boxed
   // on the heap. (One array per uniform: headless-gl lacks the srcOffset/srcLength overloads.)
@@ -71,33 +75,35 @@ export class LightPass {
   private readonly clearZero = new Float32Array(4);
 
   /**
-   * Frees what it made before throwing when a program or the lightmap cannot be made.
+   * Throws when the lightmap cannot be made.
    * @param normals - whether to light through a surface's normals (programs and lightmap of a renderer with normals).
    */
   constructor(
     private readonly gl: WebGL2RenderingContext, private readonly shapes: LightShapes, format: TargetFormat, width: number, height: number,
     private readonly normals: boolean,
   ) {
-    // Made first: it frees itself when it fails, and nothing else is made yet.
     this.lightmap = new RenderTarget(gl, { format, linear: true, colorAttachments: normals ? 2 : 1 }, width, height);
-    try {
-      const made = createPrograms(gl, {
-        ...sourcesOf('point', 'point light', lightStages(shaderSources.lightPointFragment, normals)),
-        ...sourcesOf('spot', 'spotlight', lightStages(shaderSources.lightSpotFragment, normals)),
-        ...sourcesOf('textured', 'textured light', lightStages(shaderSources.lightTexturedFragment, normals)),
-        ...sourcesOf('directional', 'directional light', lightStages(shaderSources.lightDirectionalFragment, normals)),
-      }, LIGHT_INTERFACE);
-      const programsOf = (kind: LightKind): LightPrograms => ({
-        unshadowed: made[`${kind} unshadowed`], plainTiles: made[`${kind} plain tiles`] ?? null, heldTiles: made[`${kind} held tiles`] ?? null, lean: made[`${kind} lean`],
-        listed: made[`${kind} listed`] ?? null,
-        closed: made[`${kind} closed`] ?? null, shadowed: made[`${kind} shadowed`],
-      });
-      this.programs = { point: programsOf('point'), spot: programsOf('spot'), textured: programsOf('textured'), directional: programsOf('directional') };
-    } catch (error) {
-      this.lightmap.dispose();
-      throw error;
-    }
-    this.programList = Object.values(this.programs).flatMap((programs) => Object.values(programs).filter((program): program is LightProgram => program !== null));
+  }
+
+  /** Whether the programs of `kind` are made. */
+  prepared(kind: LightKind): boolean {
+    return this.programs[kind] !== undefined;
+  }
+
+  /**
+   * Makes the programs of `kind` unless they are made; before {@link LightPass.begin} in a frame
+   * (which sets the frame's uniforms on every program made). Changes the bound program.
+   * @throws Error, having freed what it made, when a program cannot be made (or the context is lost).
+   */
+  prepare(kind: LightKind): void {
+    if (this.programs[kind] !== undefined) return;
+    const [name, fragment] = KIND_SOURCES[kind];
+    const made = createPrograms(this.gl, sourcesOf(kind, name, lightStages(shaderSources[fragment], this.normals)), LIGHT_INTERFACE);
+    this.programs[kind] = {
+      unshadowed: made[`${kind} unshadowed`], plainTiles: made[`${kind} plain tiles`] ?? null, heldTiles: made[`${kind} held tiles`] ?? null,
+      lean: made[`${kind} lean`], listed: made[`${kind} listed`] ?? null, closed: made[`${kind} closed`] ?? null, shadowed: made[`${kind} shadowed`],
+    };
+    this.programList.push(...Object.values(made));
   }
 
   resize(width: number, height: number): void {
@@ -152,6 +158,8 @@ export class LightPass {
     const gl = this.gl;
     const light = draw.light;
     const programs = this.programs[light.kind];
+    // Unprepared only when making its programs failed this frame (the context was lost meanwhile).
+    if (programs === undefined) return;
     this.writeLightUniforms(draw);
     if (light instanceof TexturedLight) {
       gl.activeTexture(gl.TEXTURE0 + TEXTURE_UNITS.light.u_cookie);
@@ -268,6 +276,14 @@ export class LightPass {
     this.lightmap.dispose();
   }
 }
+
+/** Per kind of light, the name its programs' errors give and its fragment stage in `shaderSources`. */
+const KIND_SOURCES: Readonly<Record<LightKind, readonly [string, 'lightPointFragment' | 'lightSpotFragment' | 'lightTexturedFragment' | 'lightDirectionalFragment']>> = {
+  point: ['point light', 'lightPointFragment'],
+  spot: ['spotlight', 'lightSpotFragment'],
+  textured: ['textured light', 'lightTexturedFragment'],
+  directional: ['directional light', 'lightDirectionalFragment'],
+};
 
 /** A kind of light's programs (see `LightPass.programs`); a directional light has no tiles. */
 interface LightPrograms {

@@ -1,7 +1,7 @@
 import { afterEach, describe, expect, it } from 'vitest';
 import type { ProgramInterface } from '../../src/gl/program';
 import { textureUnits } from '../../src/frame/FrameResources';
-import { Hull, PenumbraRenderer, PointLight, Spotlight } from '../../src/index';
+import { DirectionalLight, Hull, PenumbraRenderer, PointLight, Spotlight, TexturedLight } from '../../src/index';
 import { BLUR_INTERFACE } from '../../src/passes/BlurPass';
 import { COMPOSITE_INTERFACE } from '../../src/passes/CompositePass';
 import { DEBUG_INTERFACE } from '../../src/passes/DebugPass';
@@ -161,18 +161,46 @@ describe('the GPU interface of every program', () => {
     gl = null;
   });
 
+  it('links a kind of light\'s programs when the first light of the kind is added, and no other kind\'s', () => {
+    gl = createContext(16, 16);
+    const { context, programs } = recordingContext(gl);
+    const renderer = new PenumbraRenderer(context);
+    const lightPrograms = () => countsOf(programs).light ?? 0;
+    expect(lightPrograms()).toBe(0);
+    // A point light's: unshadowed, plain tiles, held, lean, listed, closed and general.
+    renderer.addLight(new PointLight({ position: [4, 8], range: 12, radius: 1 }));
+    expect(lightPrograms()).toBe(7);
+    renderer.addLight(new PointLight({ position: [12, 8], range: 12, radius: 1 }));
+    renderer.addHull(new Hull([[7, 6], [9, 6], [9, 10], [7, 10]]));
+    renderer.renderLightmap();
+    expect(lightPrograms()).toBe(7);
+    // A directional light's: unshadowed, lean and general.
+    renderer.addLight(new DirectionalLight({ intensity: 0.2 }));
+    expect(lightPrograms()).toBe(10);
+    renderer.renderLightmap();
+    expect(lightPrograms()).toBe(10);
+    renderer.dispose();
+  });
+
   it('has every uniform in its pass\'s table and every sampler on its own unit from the texture-unit table', () => {
     gl = createContext(16, 16);
     const used = new Map(Object.keys(INTERFACES).map((key) => [key, new Set<string>()]));
+    const cookie = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, cookie);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array([255, 255, 255, 255]));
+    gl.bindTexture(gl.TEXTURE_2D, null);
     const problems: string[] = [];
     for (const normals of [false, true]) {
       for (const lightmapScale of [1, 0.5]) {
         const { context, programs } = recordingContext(gl);
         const renderer = new PenumbraRenderer(context, { normals, lightmapScale, lightmapBlur: 2 });
-        // The blur links its program on the first frame it runs; headless-gl cannot draw with normals.
+        // A kind of light's programs are linked when the first light of the kind is added; the blur
+        // links its program on the first frame it runs (headless-gl cannot draw with normals).
+        renderer.addLight(new PointLight({ position: [4, 8], range: 12, radius: 1 }));
+        renderer.addLight(new Spotlight({ position: [12, 8], range: 12, radius: 1 }));
+        renderer.addLight(new TexturedLight({ position: [8, 4], range: 12, texture: cookie }));
+        renderer.addLight(new DirectionalLight({ intensity: 0.2 }));
         if (!normals) {
-          renderer.addLight(new PointLight({ position: [4, 8], range: 12, radius: 1 }));
-          renderer.addLight(new Spotlight({ position: [12, 8], range: 12, radius: 1 }));
           renderer.addHull(new Hull([[7, 6], [9, 6], [9, 10], [7, 10]]));
           renderer.renderLightmap();
         }

@@ -255,28 +255,60 @@ describe('sizes beyond the context', () => {
   });
 });
 
-describe('a constructor that fails part-way', () => {
-  it('frees every GL object it made and leaves no GL error, wherever it fails', () => {
-    const objects = countGLObjects(gl);
+describe('a constructor, or the first light of a kind, that fails part-way', () => {
+  /** Counts the shaders `gl` is asked for; with `failAfter(k)` the (k+1)-th fails, as a lost or exhausted context answers null. */
+  function failingShaders(): { asked: () => number; failAfter: (k: number) => void } {
     const createShader = gl.createShader.bind(gl);
-    let shadersAsked = 0;
-    let shadersLeft = Infinity;
-    // A lost or exhausted context answers null: with `shadersLeft` = k the (k+1)-th shader fails.
+    let asked = 0;
+    let left = Infinity;
     gl.createShader = (type: number) => {
-      shadersAsked++;
-      return shadersLeft-- > 0 ? createShader(type) : null;
+      asked++;
+      return left-- > 0 ? createShader(type) : null;
     };
+    return { asked: () => asked, failAfter: (k) => { left = k; } };
+  }
+
+  it('frees every GL object the constructor made and leaves no GL error, wherever it fails', () => {
+    const objects = countGLObjects(gl);
+    const shaders = failingShaders();
     new PenumbraRenderer(gl).dispose();
-    const shaders = shadersAsked;
-    expect(shaders).toBeGreaterThan(10);
+    const count = shaders.asked();
+    expect(count).toBeGreaterThan(4);
     const failures: string[] = [];
-    for (let failAt = 0; failAt < shaders; failAt++) {
-      shadersLeft = failAt;
+    for (let failAt = 0; failAt < count; failAt++) {
+      shaders.failAfter(failAt);
       expect(() => new PenumbraRenderer(gl)).toThrow(/could not create a shader/);
       if (objects.live() > 0) failures.push(`shader ${failAt + 1} failing left ${JSON.stringify(objects.byKind())}`);
       const error = gl.getError();
       if (error !== 0) failures.push(`shader ${failAt + 1} failing left GL error 0x${error.toString(16)}`);
     }
     expect(failures).toEqual([]);
+  });
+
+  it('frees every program the first light of a kind made, adds no light, and draws on, wherever it fails', () => {
+    const objects = countGLObjects(gl);
+    const shaders = failingShaders();
+    const renderer = new PenumbraRenderer(gl);
+    const made = objects.live(), before = shaders.asked();
+    renderer.addLight(new PointLight({ position: [8, 8], range: 10 }));
+    const count = shaders.asked() - before;
+    expect(count).toBeGreaterThan(10);
+    renderer.dispose();
+    const failures: string[] = [];
+    for (let failAt = 0; failAt < count; failAt++) {
+      const failing = new PenumbraRenderer(gl);
+      shaders.failAfter(failAt);
+      expect(() => failing.addLight(new PointLight({ position: [8, 8], range: 10 }))).toThrow(/could not create a shader/);
+      if (objects.live() !== made) failures.push(`shader ${failAt + 1} failing left ${JSON.stringify(objects.byKind())}`);
+      if (failing.lights.length !== 0) failures.push(`shader ${failAt + 1} failing added the light`);
+      shaders.failAfter(Infinity);
+      failing.addLight(new PointLight({ position: [8, 8], range: 10 }));
+      failing.renderLightmap();
+      const error = gl.getError();
+      if (error !== 0) failures.push(`shader ${failAt + 1} failing left GL error 0x${error.toString(16)}`);
+      failing.dispose();
+    }
+    expect(failures).toEqual([]);
+    expect(objects.live()).toBe(0);
   });
 });
