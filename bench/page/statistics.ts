@@ -38,9 +38,10 @@ export function measureShadowStatistics(gl: WebGL2RenderingContext, options: Ben
   if (!gl.getExtension('EXT_float_blend') || !gl.getExtension('EXT_color_buffer_float')) throw new Error('bench statistics: need EXT_float_blend and EXT_color_buffer_float');
   let lightStages = 0;
   const renderer = new CURRENT.PenumbraRenderer(statisticsContext(gl, () => lightStages++), { ...options, ambientColor: [0, 0, 0], lightmapScale: 1 });
-  if (lightStages === 0) throw new Error('bench statistics: no light stage was compiled with SHADOW_STATISTICS');
   try {
+    // A kind of light's stages are compiled when its first light is added.
     for (const light of lights) renderer.addLight(light);
+    if (lightStages === 0) throw new Error('bench statistics: no light stage was compiled with SHADOW_STATISTICS');
     for (const hull of hulls) renderer.addHull(hull);
     // As the measured renderer has them after its first frames: every light classified (a new
     // renderer classifies as many records a frame as its budget allows, the rest drawn exact).
