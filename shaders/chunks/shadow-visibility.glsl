@@ -78,13 +78,10 @@ vec2 travel;
 #endif
 
 const float PI = 3.14159265;
-#ifdef LEAN_SHADOW
-// The lean program keeps one middle: a pixel whose records hide more disjoint intervals (rare) sums
-// them by the sweep, as exactly.
+// One middle: a pixel whose records in front hide more disjoint intervals (rare) sums them by the
+// sweep, as exactly (or, with several hulls seen past, leaves their directions to the quadrature).
+// More middles cost every pixel registers and code for the few that need them.
 const int MAX_MIDDLES = 1;
-#else
-const int MAX_MIDDLES = 4;
-#endif
 // A radius of 0 (hard shadows) is taken as this, a thousandth of a world unit: chord heights stay
 // finite and the visible fraction is 0 or 1 but within that distance of a hull's edge.
 const float MIN_RADIUS = 1e-3;
