@@ -75,6 +75,8 @@ export class LightTiles {
    */
   private keptPastHulls = new Int32Array(1);
   private shownPastHulls = new Int32Array(1);
+  /** Per filing row: 1 while it shows its kept classes (see {@link LightTiles.restoreKept}). */
+  private showsKept = new Int32Array(1);
   /** What the records of the light being classified prove about its tiles. */
   private readonly marks = new RecordMarks();
   private readonly writer = new TileRectangles();
@@ -198,29 +200,52 @@ export class LightTiles {
     this.keptListed.set(this.lists.listed, at);
     this.keptPastHulls[row] = this.shownPastHulls[row] = this.pastHulls;
     this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, this.keptListed, at, true);
+    this.showsKept[row] = 1;
   }
 
   /** Shows `row`'s kept classes (a light whose moving hulls left it). */
   restoreKept(row: number): void {
     this.ensureRow(row);
+    if (this.showsKept[row] === 1) return;
     this.shownPastHulls[row] = this.keptPastHulls[row];
     this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, this.keptListed, row * TILE_ROWS, false);
+    this.showsKept[row] = 1;
   }
 
   /**
    * Ends the classification of `row` (a new filing, begun with {@link LightTiles.beginLight}) with
-   * every tile within the reach exact: the classes of a light left unclassified.
+   * every tile within the reach exact: the classes of a light left unclassified. Lean when no
+   * record of its `count` still hulls at `indices` (prepared) may reach into the filed disk and
+   * the light is not Occluded (what a classification would find of its exact tiles), general
+   * otherwise.
    */
-  endUnclassified(row: number): void {
+  endUnclassified(row: number, geometry: ShadowGeometry, indices: Int32Array, count: number): void {
     this.ensureRow(row);
-    const at = row * TILE_ROWS;
+    const at = row * TILE_ROWS, general = this.needsGeneral(geometry, indices, count);
     for (let j = 0; j < TILE_ROWS; j++) {
       this.marks.writeOutside(this.shown.outside, at, j);
       this.keptDark[at + j] = this.keptHeld[at + j] = this.keptInside[at + j] = this.keptListed[at + j] = 0;
-      this.keptExact[at + j] = this.keptGeneral[at + j] = FULL_ROW & ~this.shown.outside[at + j];
+      this.keptExact[at + j] = FULL_ROW & ~this.shown.outside[at + j];
+      this.keptGeneral[at + j] = general ? this.keptExact[at + j] : 0;
     }
-    this.keptPastHulls[row] = this.shownPastHulls[row] = SEVERAL_HULLS;
+    this.keptPastHulls[row] = this.shownPastHulls[row] = general ? SEVERAL_HULLS : 0;
     this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, this.keptListed, at, true);
+    this.showsKept[row] = 1;
+  }
+
+  /**
+   * Shows `row`, a light left unclassified (see {@link LightTiles.endUnclassified}), with the
+   * `count` moving hulls at `indices` (prepared): its kept classes, or every tile general when one
+   * of them may reach into the filed disk (as set by {@link LightTiles.beginLight}).
+   */
+  addUnclassifiedMovingHulls(row: number, geometry: ShadowGeometry, indices: Int32Array, count: number): void {
+    if (this.needsGeneral(geometry, indices, count)) this.addUnknownHulls(row);
+    else this.restoreKept(row);
+  }
+
+  /** Whether the exact pixels of the light begun take the general program with the `count` hulls at `indices`, unclassified. */
+  private needsGeneral(geometry: ShadowGeometry, indices: Int32Array, count: number): boolean {
+    return this.marks.occluded() || this.marks.anyHullMayMeetDisk(geometry.circles, indices, count);
   }
 
   /**
@@ -236,6 +261,7 @@ export class LightTiles {
     }
     this.shownPastHulls[row] = SEVERAL_HULLS;
     this.show(row, dark, exact, exact, this.noTiles, this.noTiles, 0, false);
+    this.showsKept[row] = 0;
   }
 
   /**
@@ -247,6 +273,7 @@ export class LightTiles {
    */
   addMovingHulls(row: number, geometry: ShadowGeometry, indices: Int32Array, count: number): void {
     const marks = this.marks;
+    this.showsKept[row] = 0;
     for (let i = 0; i < count; i++) {
       const hull = indices[i];
       // Wholly in kept dark tiles, its shadow region lies in the still records' (as addStillHulls).
@@ -368,6 +395,7 @@ export class LightTiles {
     this.counts = grown(this.counts, rows * TILE_CLASS_COUNT);
     this.keptPastHulls = grown(this.keptPastHulls, rows);
     this.shownPastHulls = grown(this.shownPastHulls, rows);
+    this.showsKept = grown(this.showsKept, rows);
     this.listFirst = grown(this.listFirst, rows * TILE_CLASS_COUNT);
     this.listCount = grown(this.listCount, rows * TILE_CLASS_COUNT);
   }

@@ -129,6 +129,26 @@ export class RecordMarks {
     this.inside.fill(0);
   }
 
+  /**
+   * Whether a record of the `count` hulls at `indices` may reach into the filed disk: whether one's
+   * circle in `circles` (ShadowGeometry's, which holds its points) meets the disk widened by the
+   * slack. When none does, no record meets the disk, which the lean program needs (see
+   * {@link RecordMarks.generalMask}), and the light's pixels see no record past.
+   */
+  anyHullMayMeetDisk(circles: Float64Array, indices: Int32Array, count: number): boolean {
+    for (let i = 0; i < count; i++) {
+      const hull = indices[i], dx = circles[3 * hull] - this.centreX, dy = circles[3 * hull + 1] - this.centreY;
+      const reach = circles[3 * hull + 2] + this.radius + this.slack;
+      if (dx * dx + dy * dy <= reach * reach) return true;
+    }
+    return false;
+  }
+
+  /** Whether the light sees the inside of hulls past their holders (Occluded): its exact pixels then take the general program. */
+  occluded(): boolean {
+    return this.holderPass;
+  }
+
   /** Whether the light lights the inside of hulls from anywhere (Illuminated): its dark tiles with a record in them are then held. */
   illuminated(): boolean {
     return !this.solid && !this.holderPass;

@@ -196,7 +196,7 @@ export class ShadowCache {
     const records = recordsOf(geometry, this.grid.found, count);
     filing.stillRecords = records;
     filing.unclassified = records > this.budgetLeft;
-    if (filing.unclassified) this.tiles.endUnclassified(filing.row);
+    if (filing.unclassified) this.tiles.endUnclassified(filing.row, geometry, this.grid.found, count);
     else this.classifyStillHulls(filing, geometry, count);
   }
 
@@ -244,11 +244,19 @@ export class ShadowCache {
     filing.movingCount = count;
   }
 
-  /** Adds the `count` moving hulls the moving grid found to a classified light's tiles, when they fit the budget (see {@link ShadowCache.classificationBudget}). */
+  /**
+   * Adds the `count` moving hulls the moving grid found to a classified light's tiles, when they fit
+   * the budget (see {@link ShadowCache.classificationBudget}); to an unclassified light's, whether
+   * they make its exact tiles general.
+   */
   private classifyMovingHulls(filing: LightFiling, geometry: ShadowGeometry, count: number): void {
-    if (filing.unclassified) return;
-    const found = this.movingGrid.found, records = recordsOf(geometry, found, count);
+    const found = this.movingGrid.found;
     this.beginTiles(filing);
+    if (filing.unclassified) {
+      this.tiles.addUnclassifiedMovingHulls(filing.row, geometry, found, count);
+      return;
+    }
+    const records = recordsOf(geometry, found, count);
     if (records > this.budgetLeft) {
       this.tiles.addUnknownHulls(filing.row);
       return;

@@ -102,6 +102,38 @@ describe('classification budget', () => {
     expect(fewerLit).toBeGreaterThan(5);
   });
 
+  it('draws an unclassified light\'s tiles lean unless a hull, still or moving, may reach into its disk, and lights as without a budget', () => {
+    // Two lights among posts, apart from them; a crate that walks into the second light's disk and
+    // out again. With no budget both stay unclassified.
+    const build = (renderer: PenumbraRenderer) => {
+      posts(renderer, 20, 6, 8, 16);
+      renderer.addLight(new PointLight({ position: [20, 20], range: 100, radius: 3 }));
+      renderer.addLight(new PointLight({ position: [70, 44], range: 100, radius: 4 }));
+      return renderer.addHull(new Hull([[-2, -2], [2, -2], [2, 2], [-2, 2]], { position: [84, 44.3] }));
+    };
+    const none = create(0), unlimited = create(Infinity);
+    const crates = [build(none), build(unlimited)];
+    const leanShares: number[] = [];
+    for (let frame = 0; frame < 8; frame++) {
+      // Frames 2–5: the crate's corner within the disk (radius 4 around x = 70): x from 84 down to 73.
+      const x = [84, 80, 74, 73, 73, 74, 80, 84][frame];
+      for (const crate of crates) crate.position = [x, 44.3];
+      const lightmap = renderLightmap(gl, none, W, H), reference = renderLightmap(gl, unlimited, W, H);
+      expect(none.stats.lightsUnclassified).toBe(2);
+      leanShares.push(none.stats.tilesLean / none.stats.tilesExact);
+      expect(maxDifference(lightmap, reference), `frame ${frame}`).toBeLessThan(1e-3);
+    }
+    // Both lights lean but while the crate reaches into the second one's disk (general there).
+    expect(leanShares.map((share) => share === 1)).toEqual([true, true, false, false, false, false, true, true]);
+    // A hull still in the disk keeps its light's tiles general.
+    const still = create(0);
+    posts(still, 20, 6, 8, 16);
+    still.addHull(new Hull([[-2, -2], [2, -2], [2, 2], [-2, 2]], { position: [73, 44.3] }));
+    still.addLight(new PointLight({ position: [70, 44], range: 100, radius: 4 }));
+    renderLightmap(gl, still, W, H);
+    expect(still.stats.tilesLean).toBe(0);
+  });
+
   it('rejects a budget that is not a non-negative integer, naming it', () => {
     for (const bad of [-1, 0.5, Number.NaN, '8' as unknown as number]) {
       expect(() => new PenumbraRenderer(gl, { classificationBudget: bad })).toThrow(/classificationBudget must be a non-negative integer or Infinity, got/);
