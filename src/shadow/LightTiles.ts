@@ -217,18 +217,18 @@ export class LightTiles {
    * every tile within the reach exact: the classes of a light left unclassified. Lean when no
    * record of its `count` still hulls at `indices` (prepared) may reach into the filed disk and
    * the light is not Occluded (what a classification would find of its exact tiles), general
-   * otherwise.
+   * otherwise (in closed form when that is one hull's record or one convex hull's fan).
    */
   endUnclassified(row: number, geometry: ShadowGeometry, indices: Int32Array, count: number): void {
     this.ensureRow(row);
-    const at = row * TILE_ROWS, general = this.needsGeneral(geometry, indices, count);
+    const at = row * TILE_ROWS, pastHulls = this.hullsMayBeSeenPast(geometry, indices, count), general = pastHulls > 0;
     for (let j = 0; j < TILE_ROWS; j++) {
       this.marks.writeOutside(this.shown.outside, at, j);
       this.keptDark[at + j] = this.keptHeld[at + j] = this.keptInside[at + j] = this.keptListed[at + j] = 0;
       this.keptExact[at + j] = FULL_ROW & ~this.shown.outside[at + j];
       this.keptGeneral[at + j] = general ? this.keptExact[at + j] : 0;
     }
-    this.keptPastHulls[row] = this.shownPastHulls[row] = general ? SEVERAL_HULLS : 0;
+    this.keptPastHulls[row] = this.shownPastHulls[row] = pastHulls;
     this.show(row, this.keptDark, this.keptExact, this.keptGeneral, this.keptHeld, this.keptListed, at, true);
     this.showsKept[row] = 1;
   }
@@ -239,13 +239,29 @@ export class LightTiles {
    * of them may reach into the filed disk (as set by {@link LightTiles.beginLight}).
    */
   addUnclassifiedMovingHulls(row: number, geometry: ShadowGeometry, indices: Int32Array, count: number): void {
-    if (this.needsGeneral(geometry, indices, count)) this.addUnknownHulls(row);
-    else this.restoreKept(row);
+    const pastHulls = this.hullsMayBeSeenPast(geometry, indices, count);
+    if (pastHulls === 0) {
+      this.restoreKept(row);
+      return;
+    }
+    this.addUnknownHulls(row);
+    this.shownPastHulls[row] = this.keptPastHulls[row] + pastHulls;
   }
 
-  /** Whether the exact pixels of the light begun take the general program with the `count` hulls at `indices`, unclassified. */
-  private needsGeneral(geometry: ShadowGeometry, indices: Int32Array, count: number): boolean {
-    return this.marks.occluded() || this.marks.anyHullMayMeetDisk(geometry.circles, indices, count);
+  /**
+   * For a light left unclassified, the `count` hulls at `indices` that its pixels may see past,
+   * counted as `pastHulls` is (so that one convex hull's fan or one record still takes the closed
+   * program): those whose circle meets the filed disk; every hull for an Occluded light.
+   */
+  private hullsMayBeSeenPast(geometry: ShadowGeometry, indices: Int32Array, count: number): number {
+    const marks = this.marks;
+    if (marks.occluded()) return SEVERAL_HULLS;
+    let pastHulls = 0;
+    for (let i = 0; i < count && pastHulls < SEVERAL_HULLS; i++) {
+      const hull = indices[i];
+      if (marks.hullMayMeetDisk(geometry.circles, hull)) pastHulls += geometry.recordCounts[hull] > 1 && !isFan(geometry, hull) ? SEVERAL_HULLS : 1;
+    }
+    return pastHulls;
   }
 
   /**

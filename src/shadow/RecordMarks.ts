@@ -130,18 +130,14 @@ export class RecordMarks {
   }
 
   /**
-   * Whether a record of the `count` hulls at `indices` may reach into the filed disk: whether one's
-   * circle in `circles` (ShadowGeometry's, which holds its points) meets the disk widened by the
-   * slack. When none does, no record meets the disk, which the lean program needs (see
-   * {@link RecordMarks.generalMask}), and the light's pixels see no record past.
+   * Whether a record of hull `hull` may reach into the filed disk: whether its circle in `circles`
+   * (ShadowGeometry's, which holds its points) meets the disk widened by the slack. When no hull's
+   * does, no record meets the disk, which the lean program needs (see {@link RecordMarks.generalMask}).
    */
-  anyHullMayMeetDisk(circles: Float64Array, indices: Int32Array, count: number): boolean {
-    for (let i = 0; i < count; i++) {
-      const hull = indices[i], dx = circles[3 * hull] - this.centreX, dy = circles[3 * hull + 1] - this.centreY;
-      const reach = circles[3 * hull + 2] + this.radius + this.slack;
-      if (dx * dx + dy * dy <= reach * reach) return true;
-    }
-    return false;
+  hullMayMeetDisk(circles: Float64Array, hull: number): boolean {
+    const dx = circles[3 * hull] - this.centreX, dy = circles[3 * hull + 1] - this.centreY;
+    const reach = circles[3 * hull + 2] + this.radius + this.slack;
+    return dx * dx + dy * dy <= reach * reach;
   }
 
   /** Whether the light sees the inside of hulls past their holders (Occluded): its exact pixels then take the general program. */

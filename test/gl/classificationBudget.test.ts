@@ -125,13 +125,19 @@ describe('classification budget', () => {
     }
     // Both lights lean but while the crate reaches into the second one's disk (general there).
     expect(leanShares.map((share) => share === 1)).toEqual([true, true, false, false, false, false, true, true]);
-    // A hull still in the disk keeps its light's tiles general.
-    const still = create(0);
-    posts(still, 20, 6, 8, 16);
-    still.addHull(new Hull([[-2, -2], [2, -2], [2, 2], [-2, 2]], { position: [73, 44.3] }));
-    still.addLight(new PointLight({ position: [70, 44], range: 100, radius: 4 }));
-    renderLightmap(gl, still, W, H);
-    expect(still.stats.tilesLean).toBe(0);
+    // Hulls still in the disk keep its light's tiles general: one box (the closed program), two
+    // boxes (the general one, as each may be seen past).
+    for (const inDisk of [[[73, 44.3]], [[73, 44.3], [66.7, 43.1]]]) {
+      const [still, stillReference] = [create(0), create(Infinity)];
+      for (const renderer of [still, stillReference]) {
+        posts(renderer, 20, 6, 8, 16);
+        for (const position of inDisk) renderer.addHull(new Hull([[-2, -2], [2, -2], [2, 2], [-2, 2]], { position: position as [number, number] }));
+        renderer.addLight(new PointLight({ position: [70, 44], range: 100, radius: 4 }));
+      }
+      const lightmap = renderLightmap(gl, still, W, H);
+      expect(still.stats.tilesLean).toBe(0);
+      expect(maxDifference(lightmap, renderLightmap(gl, stillReference, W, H)), `${inDisk.length} in the disk`).toBeLessThan(1e-3);
+    }
   });
 
   it('rejects a budget that is not a non-negative integer, naming it', () => {
