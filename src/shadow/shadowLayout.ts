@@ -44,7 +44,7 @@ export const RECORD_FLOATS = RECORD_POINTS * 2;
  * log2 of the width in texels of the records, entries and tile records textures. The widths, the
  * records per row and ENTRY_MAX_RECORDS are powers of two, so that the shaders address texels and
  * decode entries with shifts and masks: integer division and remainder are many instructions on
- * GPUs (and scalar code on SwiftShader), even by a constant.
+ * GPUs and on CPU rasterizers, even by a constant.
  */
 const TEXTURE_WIDTH_BITS = 10;
 /** Width in texels of the records, entries and tile records textures. */
