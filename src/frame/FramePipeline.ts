@@ -1,6 +1,6 @@
 import type { FrameStats } from '../FrameStats';
 import type { CompositeLook } from '../passes/CompositePass';
-import type { LightPass, Surface } from '../passes/LightPass';
+import type { Surface } from '../passes/LightPass';
 import { SceneAttachments, type SurfaceTextures } from '../passes/surfaceLayout';
 import type { Hull } from '../scene/Hull';
 import { DirectionalLight } from '../scene/DirectionalLight';
@@ -121,14 +121,21 @@ export class FramePipeline {
   }
 
   /**
-   * Makes the programs of a kind of light not drawn yet, so that the frame that first draws one does
-   * not compile them; left to that frame while the context is lost. Throws when a program cannot be
-   * made on a context that is not lost.
+   * Makes the programs of a kind of light not drawn yet, so that no frame compiles them; left to
+   * the rebuild while the context is lost. Throws when a program cannot be made on a context that
+   * is not lost.
    */
   prepareLight(kind: LightKind): void {
     const resources = this.resources;
     if (resources === null || this.loss.isLost || resources.light.prepared(kind)) return;
-    this.host.run(() => prepareKind(this.gl, resources.light, kind));
+    this.host.run(() => {
+      try {
+        resources.light.prepare(kind);
+      } catch (error) {
+        // Lost meanwhile: the rebuild after the restore makes them.
+        if (!this.gl.isContextLost()) throw error;
+      }
+    });
   }
 
   /** Throws naming `name` when the light's cookie is not a texture of the context; skipped while the context is lost. */
@@ -243,7 +250,7 @@ export class FramePipeline {
   }
 
   private build(): void {
-    this.resources = this.builder.build();
+    this.resources = this.builder.build(this.scene.lights);
     this.geometry.invalidate();
   }
 
@@ -275,7 +282,6 @@ export class FramePipeline {
     resources.shadows.upload(geometry, cache.bins, cache.tiles.lists);
     resources.shapes.uploadTileRectangles(cache.tiles.dirtyRows, cache.tiles.rectangles, cache.tiles.usedIndices);
     if (this.normals) chooseSurface(this.surface, resources.scene, surfaces);
-    for (let i = 0; i < cache.drawCount; i++) prepareKind(this.gl, resources.light, cache.draws[i].light.kind);
     resources.light.begin(scene.look.ambient, sizing.viewProjection, this.surface);
     for (let i = 0; i < cache.drawCount; i++) {
       if ((cache.draws[i].light.litLayers & layers) !== 0) resources.light.render(cache.draws[i]);
@@ -320,18 +326,5 @@ export class FramePipeline {
       stats.tilesHeld += counts[TILE_CLASSES.held];
       stats.tilesOutside += counts[TILE_CLASSES.outside];
     }
-  }
-}
-
-/**
- * Makes the programs of `kind` unless made; when that fails because the context was lost meanwhile
- * (the frame then draws no light of the kind), goes on without them.
- */
-function prepareKind(gl: WebGL2RenderingContext, light: LightPass, kind: LightKind): void {
-  if (light.prepared(kind)) return;
-  try {
-    light.prepare(kind);
-  } catch (error) {
-    if (!gl.isContextLost()) throw error;
   }
 }

@@ -7,6 +7,7 @@ import { HullMaskPass } from '../passes/HullMaskPass';
 import { LightPass } from '../passes/LightPass';
 import { LightShapes } from '../passes/LightShapes';
 import { SHADOW_TEXTURE_UNITS, TEXTURE_UNITS, unitsSpanned } from '../passes/textureUnits';
+import type { Light } from '../scene/Light';
 import { ShadowTextures } from '../shadow/ShadowTextures';
 import type { HostFrame } from './HostFrame';
 import type { Sizing } from './Sizing';
@@ -53,10 +54,11 @@ export class ResourceBuilder {
   ) {}
 
   /**
-   * Builds the GL objects. If one fails, those already made are freed before the error goes on (a
-   * pass that fails part-way frees its own).
+   * Builds the GL objects, the light programs of the kinds of `lights` among them (lights added
+   * while the context was lost, or before a restore). If one fails, those already made are freed
+   * before the error goes on (a pass that fails part-way frees its own).
    */
-  build(): FrameResources {
+  build(lights: readonly Light[]): FrameResources {
     const gl = this.gl, sizing = this.sizing;
     this.chooseLightmapFormat();
     const made: { dispose(): void }[] = [];
@@ -68,11 +70,12 @@ export class ResourceBuilder {
       return this.host.run(() => {
         const shapes = keep(new LightShapes(gl));
         const { width, height, lightmapWidth, lightmapHeight, edgeAware } = sizing;
+        const shadows = keep(new ShadowTextures(gl, SHADOW_TEXTURE_UNITS));
+        const scene = keep(new RenderTarget(gl, { format: 'rgba8', depthStencil: true, colorAttachments: this.normals ? 3 : 1 }, width, height));
+        const light = keep(new LightPass(gl, shapes, this.lightmapFormat, lightmapWidth, lightmapHeight, this.normals));
+        for (const { kind } of lights) light.prepare(kind);
         return {
-          shapes,
-          shadows: keep(new ShadowTextures(gl, SHADOW_TEXTURE_UNITS)),
-          scene: keep(new RenderTarget(gl, { format: 'rgba8', depthStencil: true, colorAttachments: this.normals ? 3 : 1 }, width, height)),
-          light: keep(new LightPass(gl, shapes, this.lightmapFormat, lightmapWidth, lightmapHeight, this.normals)),
+          shapes, shadows, scene, light,
           composite: keep(new CompositePass(gl, this.normals, edgeAware)),
           hullMask: edgeAware ? keep(new HullMaskPass(gl, width, height, lightmapWidth, lightmapHeight)) : null,
           blur: keep(new BlurPass(gl, this.lightmapFormat)),

@@ -91,8 +91,9 @@ export class LightPass {
   }
 
   /**
-   * Makes the programs of `kind` unless they are made; before {@link LightPass.begin} in a frame
-   * (which sets the frame's uniforms on every program made). Changes the bound program.
+   * Makes the programs of `kind` unless they are made (when the pass is built, for the scene's
+   * lights, and when a light of a new kind is added); {@link LightPass.begin} sets each frame's
+   * uniforms on every program made. Changes the bound program.
    * @throws Error, having freed what it made, when a program cannot be made (or the context is lost).
    */
   prepare(kind: LightKind): void {
@@ -158,7 +159,8 @@ export class LightPass {
     const gl = this.gl;
     const light = draw.light;
     const programs = this.programs[light.kind];
-    // Unprepared only when making its programs failed this frame (the context was lost meanwhile).
+    // Unprepared only for a light that reached the scene without addLight (or as the context was
+    // being lost, until the rebuild): not drawn rather than a frame that throws.
     if (programs === undefined) return;
     this.writeLightUniforms(draw);
     if (light instanceof TexturedLight) {

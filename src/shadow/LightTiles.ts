@@ -244,8 +244,7 @@ export class LightTiles {
       this.restoreKept(row);
       return;
     }
-    this.addUnknownHulls(row);
-    this.shownPastHulls[row] = this.keptPastHulls[row] + pastHulls;
+    this.addUnknownHulls(row, this.keptPastHulls[row] + pastHulls);
   }
 
   /**
@@ -267,15 +266,16 @@ export class LightTiles {
   /**
    * Shows `row`'s kept classes as they may be with moving hulls not looked at: every lit tile
    * exact (general), and, unless the light is Solid (as set by {@link LightTiles.beginLight}),
-   * every dark one.
+   * every dark one; `pastHulls`: the hulls its pixels may see past, as `pastHulls` counts them
+   * (several when unknown).
    */
-  addUnknownHulls(row: number): void {
+  addUnknownHulls(row: number, pastHulls = SEVERAL_HULLS): void {
     const at = row * TILE_ROWS, dark = this.nextDark, exact = this.nextExact;
     for (let j = 0; j < TILE_ROWS; j++) {
       dark[j] = this.marks.solid ? this.keptDark[at + j] : 0;
       exact[j] = FULL_ROW & ~this.shown.outside[at + j] & ~dark[j] & ~this.keptInside[at + j];
     }
-    this.shownPastHulls[row] = SEVERAL_HULLS;
+    this.shownPastHulls[row] = pastHulls;
     this.show(row, dark, exact, exact, this.noTiles, this.noTiles, 0, false);
     this.showsKept[row] = 0;
   }
